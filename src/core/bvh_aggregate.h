@@ -1,0 +1,28 @@
+/// \file
+/// The top level of the two-level BVH: a BVH over instances (chapter 3).
+#pragma once
+
+#include "core/aggregate.h"
+#include "core/bvh.h"
+
+namespace rb {
+
+/// A BVH over instances' world bounds; each instance then uses its shape's own structure.
+class BVHAggregate final : public Aggregate {
+public:
+    explicit BVHAggregate(const std::vector<Instance>& instances);
+    bool intersect(const Ray& ray, double tMax, Hit& hit) const override;
+    bool occluded(const Ray& ray, double tMax) const override;
+    /// Nodes and bytes of both levels, and bytes per triangle of the meshes.
+    std::string statistics() const override;
+    const BVH& bvh() const { return bvh_; }
+
+private:
+    std::vector<const Instance*> ordered_;  ///< Instances in BVH leaf order.
+    BVH bvh_;
+};
+
+/// An AggregateBuilder for BVHAggregate.
+std::unique_ptr<Aggregate> buildBVHAggregate(const std::vector<Instance>& instances);
+
+}  // namespace rb

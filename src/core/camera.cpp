@@ -1,0 +1,38 @@
+#include "core/camera.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include "core/error.h"
+
+namespace rb {
+
+// [camera-basis]
+PinholeCamera::PinholeCamera(const CameraSpec& spec, int width, int height)
+    : eye_(spec.eye), width_(width), height_(height) {
+    if (!(glm::length(spec.view) > 0.0)) throw InputError("gr.render: view direction is zero");
+    if (!(spec.fovyDegrees > 0.0 && spec.fovyDegrees < 180.0))
+        throw InputError("gr.render: fovy must be between 0 and 180 degrees");
+    // Build an orthonormal frame: w along the view, u to the right, v up (Gram–Schmidt on up).
+    w_ = glm::normalize(spec.view);
+    const Vec3 right = glm::cross(w_, spec.up);
+    if (!(glm::length(right) > 1e-12 * glm::length(spec.up)))
+        throw InputError("gr.render: up vector is zero or parallel to the view direction");
+    u_ = glm::normalize(right);
+    v_ = glm::cross(u_, w_);
+    // The image plane sits at distance 1; fovy spans its height.
+    halfHeight_ = std::tan(0.5 * glm::radians(spec.fovyDegrees));
+    halfWidth_ = halfHeight_ * static_cast<double>(width) / static_cast<double>(height);
+}
+// [camera-basis]
+
+// [camera-ray]
+Ray PinholeCamera::generateRay(double x, double y) const {
+    // Map pixel coordinates to [-1, 1] on the image plane, with +y up.
+    const double sx = 2.0 * x / width_ - 1.0;
+    const double sy = 1.0 - 2.0 * y / height_;
+    const Vec3 d = w_ + sx * halfWidth_ * u_ + sy * halfHeight_ * v_;
+    return Ray{eye_, glm::normalize(d)};
+}
+// [camera-ray]
+
+}  // namespace rb

@@ -1,0 +1,20 @@
+// Chapter 1 plugs in: the A4 scene calls, headlight shading and brute-force intersection.
+#include "core/chapter_features.h"
+#include "core/integrator.h"
+#include "core/lua_scene.h"
+
+namespace rb {
+
+namespace {
+void installChapter01(Pipeline& p) {
+    p.surface = shadeHeadlight;
+    p.buildAggregate = buildLinearAggregate;
+}
+}  // namespace
+
+Feature chapter01Feature() {
+    return {"raycast", 1, "rays, pinhole camera, spheres and boxes, images, OpenMP", false,
+            bindA4, installChapter01};
+}
+
+}  // namespace rb

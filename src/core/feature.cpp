@@ -1,0 +1,89 @@
+#include "core/feature.h"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace rb {
+
+FeatureSet::FeatureSet(const std::vector<Feature>& built, const std::string& spec) : built_(built) {
+    std::set<std::string> on;
+    for (const Feature& f : built)
+        if (!f.switchable) on.insert(f.name);
+    // Read the comma-separated list left to right: "all", "name" or "-name".
+    std::stringstream list(spec);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        if (item.empty()) continue;
+        const bool off = item[0] == '-';
+        const std::string name = off ? item.substr(1) : item;
+        if (name == "all") {
+            for (const Feature& f : built)
+                if (off && f.switchable) on.erase(f.name);
+                else if (!off) on.insert(f.name);
+            continue;
+        }
+        auto it = std::find_if(built.begin(), built.end(),
+                               [&](const Feature& f) { return name == f.name; });
+        if (it == built.end()) {
+            std::string known;
+            for (const Feature& f : built) known += std::string(known.empty() ? "" : ", ") + f.name;
+            std::string title;
+            const int chapter = chapterProviding(name, title);
+            throw InputError("--features: '" + name + "' is not in this build" +
+                             (chapter ? " (it is chapter " + std::to_string(chapter) +
+                                            "; build it with make chapter" +
+                                            std::to_string(chapter) + ")"
+                                      : "") +
+                             "; built features: " + known);
+        }
+        if (off && !it->switchable)
+            throw InputError("--features: '" + name + "' is part of the core (chapter " +
+                             std::to_string(it->chapter) + ") and cannot be switched off");
+        if (off) on.erase(name);
+        else on.insert(name);
+    }
+    for (const Feature& f : built)
+        if (on.count(f.name)) on_.push_back(f);
+}
+
+bool FeatureSet::enabled(const std::string& name) const {
+    return std::any_of(on_.begin(), on_.end(), [&](const Feature& f) { return name == f.name; });
+}
+
+namespace {
+/// Lua calls and feature names of chapters that may be missing from a build.
+struct LaterCall {
+    const char* name;
+    int chapter;
+    const char* module;
+};
+constexpr LaterCall kLaterCalls[] = {
+    {"mesh", 3, "meshes and the BVH"},       {"obj_mesh", 3, "meshes and the BVH"},
+    {"bvh", 3, "meshes and the BVH"},        {"reflection", 4, "reflection"},
+    {"phongMat", 4, "reflection"},           {"fancy_material", 4, "reflection"},
+    {"refraction", 5, "refraction"},         {"transMat", 5, "refraction"},
+    {"soft_shadows", 6, "soft_shadows"},     {"ball_light", 6, "soft_shadows"},
+    {"area_light", 6, "soft_shadows"},       {"glossy", 7, "glossy"},
+    {"adaptive_aa", 8, "adaptive_aa"},       {"smooth_mesh", 9, "smooth_mesh"},
+    {"texture", 10, "texture"},              {"bump", 11, "bump"},
+    {"tone_map", 12, "tone_map"},            {"dof", 13, "dof"},
+    {"csg", 14, "csg"},                      {"quadrics", 15, "quadrics"},
+    {"cone", 15, "quadrics"},                {"cylinder", 15, "quadrics"},
+    {"cyllinder", 15, "quadrics"},           {"photon_map", 16, "photon_map"},
+    {"media", 17, "media"},
+};
+}  // namespace
+
+int chapterProviding(const std::string& name, std::string& title) {
+    for (const LaterCall& c : kLaterCalls)
+        if (name == c.name) {
+            title = c.module;
+            return c.chapter;
+        }
+    return 0;
+}
+
+}  // namespace rb

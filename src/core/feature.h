@@ -1,0 +1,51 @@
+/// \file
+/// Features: each chapter registers itself here, and `--features` switches them on and off.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rb {
+
+struct Pipeline;
+class LuaBindings;
+
+/// One chapter's module as the core sees it.
+struct Feature {
+    const char* name;    ///< Switch name, e.g. "reflection".
+    int chapter;         ///< Chapter number.
+    const char* title;   ///< One line for --list-features.
+    bool switchable;     ///< False for the core chapters 1–3.
+    /// Add the chapter's Lua calls (always, when the chapter is built). May be null.
+    void (*bindLua)(LuaBindings& lua);
+    /// Plug the chapter into a render (only when the feature is on). May be null.
+    void (*install)(Pipeline& pipeline);
+};
+
+/// The features compiled into this binary, in chapter order. Each chapter binary defines
+/// its own list (see CMakeLists.txt), so chapter N's binary holds no code of chapter N+1.
+std::vector<Feature> builtFeatures();
+
+/// Which built features are on.
+class FeatureSet {
+public:
+    /// Parse a --features list ("all", "reflection,refraction", "all,-glossy") against the
+    /// built features. Throws InputError for an unknown name or an attempt to switch off core.
+    FeatureSet(const std::vector<Feature>& built, const std::string& spec);
+    /// True when the named feature is built and on.
+    bool enabled(const std::string& name) const;
+    /// The features that are on, in chapter order.
+    const std::vector<Feature>& on() const { return on_; }
+    /// Every built feature.
+    const std::vector<Feature>& built() const { return built_; }
+
+private:
+    std::vector<Feature> built_;
+    std::vector<Feature> on_;
+};
+
+/// The chapter that provides a call or feature this binary lacks, for error messages; 0 if
+/// the name is unknown. `title` receives the chapter's module name.
+int chapterProviding(const std::string& luaCall, std::string& title);
+
+}  // namespace rb

@@ -1,0 +1,72 @@
+#include "core/image.h"
+
+#include <stb_image_write.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "core/error.h"
+
+namespace rb {
+
+void checkImageSize(long long width, long long height, const std::string& where) {
+    if (width <= 0 || height <= 0)
+        throw InputError(where + "image size " + std::to_string(width) + "x" +
+                         std::to_string(height) + " is not positive");
+    if (width > kMaxDimension || height > kMaxDimension || width * height > kMaxPixels)
+        throw InputError(where + "image size " + std::to_string(width) + "x" +
+                         std::to_string(height) + " is too large (at most " +
+                         std::to_string(kMaxDimension) + " per side and " +
+                         std::to_string(kMaxPixels) + " pixels)");
+}
+
+Image::Image(int width, int height) : width_(width), height_(height) {
+    checkImageSize(width, height, "");
+    rgb_.assign(static_cast<size_t>(width) * height * 3, 0.0f);
+}
+
+Colour Image::get(int x, int y) const {
+    const size_t i = (static_cast<size_t>(y) * width_ + x) * 3;
+    return {rgb_[i], rgb_[i + 1], rgb_[i + 2]};
+}
+
+void Image::set(int x, int y, const Colour& c) {
+    const size_t i = (static_cast<size_t>(y) * width_ + x) * 3;
+    rgb_[i] = static_cast<float>(c.r);
+    rgb_[i + 1] = static_cast<float>(c.g);
+    rgb_[i + 2] = static_cast<float>(c.b);
+}
+
+std::vector<unsigned char> toBytes(const Image& image) {
+    std::vector<unsigned char> bytes(image.data().size());
+    for (size_t i = 0; i < bytes.size(); ++i) {
+        float c = image.data()[i];
+        if (!std::isfinite(c)) c = 0.0f;
+        c = std::clamp(c, 0.0f, 1.0f);
+        bytes[i] = static_cast<unsigned char>(255.0f * c);  // truncation, as the course does
+    }
+    return bytes;
+}
+
+// [write-png]
+void writePng(const Image& image, const std::string& path) {
+    // Write to a temporary name in the same folder, so the rename below is atomic.
+    const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+    const std::vector<unsigned char> bytes = toBytes(image);
+    const int ok = stbi_write_png(tmp.c_str(), image.width(), image.height(), 3, bytes.data(),
+                                  image.width() * 3);
+    if (!ok) {
+        std::remove(tmp.c_str());
+        throw InputError(path + ": cannot write the PNG file");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const std::string why = std::strerror(errno);
+        std::remove(tmp.c_str());
+        throw InputError(path + ": cannot write the PNG file (" + why + ")");
+    }
+}
+// [write-png]
+
+}  // namespace rb

@@ -1,0 +1,47 @@
+/// \file
+/// Image: a float RGB film, and PNG output written atomically.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/vec.h"
+
+namespace rb {
+
+/// The largest image raybook agrees to render: 2^27 pixels (1.5 GiB of float RGB).
+inline constexpr long long kMaxPixels = 1LL << 27;
+/// The largest width or height.
+inline constexpr int kMaxDimension = 1 << 16;
+
+/// Throw InputError unless width × height is a sane image size; `where` prefixes the message.
+void checkImageSize(long long width, long long height, const std::string& where);
+
+/// A width × height image of linear RGB, row 0 at the top.
+class Image {
+public:
+    Image(int width, int height);
+    int width() const { return width_; }
+    int height() const { return height_; }
+    /// The colour of pixel (x, y).
+    Colour get(int x, int y) const;
+    /// Set pixel (x, y).
+    void set(int x, int y, const Colour& c);
+    /// Raw float RGB data, row-major.
+    const std::vector<float>& data() const { return rgb_; }
+    std::vector<float>& data() { return rgb_; }
+
+private:
+    int width_, height_;
+    std::vector<float> rgb_;
+};
+
+/// Encode as 8-bit RGB the way the CS488 framework does: clamp each channel to [0,1], then
+/// truncate 255·c. Non-finite values become 0.
+std::vector<unsigned char> toBytes(const Image& image);
+
+/// Write a PNG atomically: to a temporary file beside `path`, then rename. Throws InputError
+/// naming the path if it cannot be written, and leaves no partial file behind.
+void writePng(const Image& image, const std::string& path);
+
+}  // namespace rb

@@ -1,0 +1,46 @@
+/// \file
+/// Instance: one shape placed in the world by the product of the transforms above it.
+#pragma once
+
+#include <string>
+
+#include "core/hit.h"
+#include "core/material.h"
+#include "core/shape.h"
+
+namespace rb {
+
+/// A shape under a world transform, with its material: one leaf of the flattened scene graph.
+/// The same shape may appear in many instances (A4 instancing).
+struct Instance {
+    const Shape* shape = nullptr;
+    const Material* material = nullptr;
+    Mat4 objectToWorld{1.0};
+    Mat4 worldToObject{1.0};
+    Mat3 normalToWorld{1.0};  ///< Inverse transpose of objectToWorld's linear part.
+    AABB worldBounds;
+    std::string name;
+
+    /// Set the transform and everything derived from it.
+    void setTransform(const Mat4& m);
+
+    // [instance-intersect]
+    /// Closest hit with t in (0, tMax): the ray goes into object space unnormalised, so the
+    /// object-space t is the world-space t.
+    bool intersect(const Ray& worldRay, double tMax, ObjectHit& hit) const {
+        const Ray objectRay{transformPoint(worldToObject, worldRay.o),
+                            transformVector(worldToObject, worldRay.d)};
+        return shape->intersect(objectRay, tMax, hit);
+    }
+    // [instance-intersect]
+    /// Any hit with t in (0, tMax).
+    bool occluded(const Ray& worldRay, double tMax) const {
+        const Ray objectRay{transformPoint(worldToObject, worldRay.o),
+                            transformVector(worldToObject, worldRay.d)};
+        return shape->occluded(objectRay, tMax);
+    }
+    /// Turn an object-space hit into a world-space Hit.
+    Hit toWorld(const Ray& worldRay, const ObjectHit& oh) const;
+};
+
+}  // namespace rb

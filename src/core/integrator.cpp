@@ -1,0 +1,32 @@
+#include "core/integrator.h"
+
+namespace rb {
+
+// [trace]
+Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters,
+                         int depth) const {
+    Hit hit;
+    if (!scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit))
+        return scene_.background;
+    // Local shading, then each chapter's secondary term.
+    const ShadeContext ctx{scene_, *this, sampler, counters, depth};
+    Colour colour = pipeline_.surface(ctx, ray, hit);
+    for (const auto& term : pipeline_.terms) colour += term->shade(ctx, ray, hit);
+    return colour;
+}
+// [trace]
+
+bool Integrator::occluded(const Ray& ray, double tMax, RayCounters& counters) const {
+    counters.add(RayKind::Shadow);
+    return scene_.aggregate->occluded(ray, tMax);
+}
+
+// [headlight]
+Colour shadeHeadlight(const ShadeContext&, const Ray& ray, const Hit& hit) {
+    const Colour kd = hit.material ? hit.material->kd : Colour(0.5);
+    const double cosTheta = std::abs(glm::dot(hit.ng, glm::normalize(ray.d)));
+    return kd * cosTheta;
+}
+// [headlight]
+
+}  // namespace rb

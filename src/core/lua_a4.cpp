@@ -1,0 +1,303 @@
+// The CS488 A4 scene language: gr.node, gr.joint, gr.sphere, gr.cube, gr.nh_sphere, gr.nh_box,
+// gr.material, gr.light, gr.render and the node methods. gr.mesh comes with chapter 3.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/error.h"
+#include "core/image.h"
+#include "core/lua_scene.h"
+
+namespace rb {
+
+namespace {
+
+/// A new node named by argument 1.
+std::shared_ptr<SceneNode> newNode(lua_State* L, const char* call) {
+    auto node = std::make_shared<SceneNode>();
+    node->name = checkString(L, 1, call, "name");
+    return node;
+}
+
+// [lua-primitives]
+int grNode(lua_State* L) {
+    checkArgCount(L, "gr.node", 1, 1, "(name)");
+    pushNode(L, newNode(L, "gr.node"));
+    return 1;
+}
+
+int grJoint(lua_State* L) {
+    // A4 draws joints as plain transform nodes; the ranges matter only to A3's puppet UI.
+    checkArgCount(L, "gr.joint", 3, 3, "(name, {xmin,xinit,xmax}, {ymin,yinit,ymax})");
+    auto node = newNode(L, "gr.joint");
+    checkTuple(L, 2, 3, "gr.joint", "x range");
+    checkTuple(L, 3, 3, "gr.joint", "y range");
+    pushNode(L, node);
+    return 1;
+}
+
+int grSphere(lua_State* L) {
+    checkArgCount(L, "gr.sphere", 1, 1, "(name)");
+    auto node = newNode(L, "gr.sphere");
+    node->shape = sceneBuilder(L).unitSphere;
+    pushNode(L, node);
+    return 1;
+}
+
+int grCube(lua_State* L) {
+    checkArgCount(L, "gr.cube", 1, 1, "(name)");
+    auto node = newNode(L, "gr.cube");
+    node->shape = sceneBuilder(L).unitCube;
+    pushNode(L, node);
+    return 1;
+}
+
+int grNhSphere(lua_State* L) {
+    // A non-hierarchical sphere is the unit sphere scaled by r and moved to the centre.
+    checkArgCount(L, "gr.nh_sphere", 3, 3, "(name, {x,y,z}, radius)");
+    auto node = newNode(L, "gr.nh_sphere");
+    const Vec3 centre = checkVec3(L, 2, "gr.nh_sphere", "centre");
+    const double radius = checkNumber(L, 3, "gr.nh_sphere", "radius");
+    if (!(radius > 0.0)) throw InputError("gr.nh_sphere: argument 3 (radius) must be positive");
+    node->shape = sceneBuilder(L).unitSphere;
+    node->transform = glm::scale(glm::translate(Mat4(1.0), centre), Vec3(radius));
+    pushNode(L, node);
+    return 1;
+}
+
+int grNhBox(lua_State* L) {
+    // The tuple is the box's minimum corner, as in the course framework.
+    checkArgCount(L, "gr.nh_box", 3, 3, "(name, {x,y,z}, size)");
+    auto node = newNode(L, "gr.nh_box");
+    const Vec3 corner = checkVec3(L, 2, "gr.nh_box", "minimum corner");
+    const double size = checkNumber(L, 3, "gr.nh_box", "size");
+    if (!(size > 0.0)) throw InputError("gr.nh_box: argument 3 (size) must be positive");
+    node->shape = sceneBuilder(L).unitCube;
+    node->transform = glm::scale(glm::translate(Mat4(1.0), corner), Vec3(size));
+    pushNode(L, node);
+    return 1;
+}
+// [lua-primitives]
+
+int grMaterial(lua_State* L) {
+    if (lua_gettop(L) > 3)
+        throw InputError(
+            "gr.material: more than 3 arguments is seed 000's dialect (\"reflect\", "
+            "\"refract\", \"glossy\"), which needs chapter 4 (reflection) or later");
+    checkArgCount(L, "gr.material", 3, 3, "(kd, ks, shininess)");
+    auto m = std::make_shared<Material>();
+    m->kd = checkVec3(L, 1, "gr.material", "kd");
+    m->ks = checkVec3(L, 2, "gr.material", "ks");
+    m->shininess = checkNumber(L, 3, "gr.material", "shininess");
+    pushMaterial(L, m);
+    return 1;
+}
+
+// ---- Lights -------------------------------------------------------------------------------
+
+constexpr const char* kLightType = "rb.light";
+
+int collectLight(lua_State* L) {
+    static_cast<PointLight*>(lua_touserdata(L, 1))->~PointLight();
+    return 0;
+}
+
+int grLight(lua_State* L) {
+    if (lua_gettop(L) == 6)
+        throw InputError(
+            "gr.light: 6 arguments is seed 001's rectangular area light, which needs chapter 6 "
+            "(soft_shadows)");
+    checkArgCount(L, "gr.light", 3, 3, "(position, colour, {c0,c1,c2})");
+    PointLight light;
+    light.position = checkVec3(L, 1, "gr.light", "position");
+    light.colour = checkVec3(L, 2, "gr.light", "colour");
+    light.falloff = checkVec3(L, 3, "gr.light", "falloff");
+    if (light.falloff.x < 0 || light.falloff.y < 0 || light.falloff.z < 0 ||
+        !(light.falloff.x + light.falloff.y + light.falloff.z > 0))
+        throw InputError("gr.light: argument 3 (falloff) must be non-negative and not all zero");
+    pushLight(L, light);
+    return 1;
+}
+
+// ---- Node methods -------------------------------------------------------------------------
+
+// [lua-transforms]
+/// Apply a local transform: pre-multiplied (calls apply in the order written) in A4, and
+/// post-multiplied for legacy (pre-2015) scenes, which list their transforms in reverse.
+void applyTransform(lua_State* L, SceneNode& node, const Mat4& m) {
+    node.transform = sceneBuilder(L).options.legacy ? node.transform * m : m * node.transform;
+}
+
+int nodeScale(lua_State* L) {
+    checkArgCount(L, "node:scale", 4, 4, "(x, y, z)");
+    auto node = checkNode(L, 1, "node:scale", "self");
+    const Vec3 s(checkNumber(L, 2, "node:scale", "x"), checkNumber(L, 3, "node:scale", "y"),
+                 checkNumber(L, 4, "node:scale", "z"));
+    if (s.x == 0.0 || s.y == 0.0 || s.z == 0.0)
+        throw InputError("node:scale: scale factors must be non-zero");
+    applyTransform(L, *node, glm::scale(Mat4(1.0), s));
+    return 0;
+}
+
+int nodeTranslate(lua_State* L) {
+    checkArgCount(L, "node:translate", 4, 4, "(x, y, z)");
+    auto node = checkNode(L, 1, "node:translate", "self");
+    const Vec3 t(checkNumber(L, 2, "node:translate", "x"),
+                 checkNumber(L, 3, "node:translate", "y"),
+                 checkNumber(L, 4, "node:translate", "z"));
+    applyTransform(L, *node, glm::translate(Mat4(1.0), t));
+    return 0;
+}
+
+int nodeRotate(lua_State* L) {
+    checkArgCount(L, "node:rotate", 3, 3, "(axis, degrees)");
+    auto node = checkNode(L, 1, "node:rotate", "self");
+    const std::string axisName = checkString(L, 2, "node:rotate", "axis");
+    const double degrees = checkNumber(L, 3, "node:rotate", "degrees");
+    Vec3 axis(0.0);
+    if (axisName == "x" || axisName == "X") axis.x = 1.0;
+    else if (axisName == "y" || axisName == "Y") axis.y = 1.0;
+    else if (axisName == "z" || axisName == "Z") axis.z = 1.0;
+    else
+        throw InputError("node:rotate: the axis must be 'x', 'y' or 'z', got '" +
+                         axisName + "'");
+    applyTransform(L, *node, glm::rotate(Mat4(1.0), glm::radians(degrees), axis));
+    return 0;
+}
+// [lua-transforms]
+
+int nodeAddChild(lua_State* L) {
+    checkArgCount(L, "node:add_child", 2, 2, "(child)");
+    auto parent = checkNode(L, 1, "node:add_child", "self");
+    auto child = checkNode(L, 2, "node:add_child", "child");
+    // Instancing makes the graph a DAG; a cycle would make it infinite.
+    if (reaches(*child, parent.get()))
+        throw InputError("node:add_child: adding '" + child->name + "' under '" + parent->name +
+                         "' would make a cycle in the scene graph");
+    parent->children.push_back(child);
+    return 0;
+}
+
+int nodeSetMaterial(lua_State* L) {
+    checkArgCount(L, "node:set_material", 2, 2, "(material)");
+    auto node = checkNode(L, 1, "node:set_material", "self");
+    node->material = checkMaterial(L, 2, "node:set_material", "material");
+    return 0;
+}
+
+// ---- gr.render ----------------------------------------------------------------------------
+
+/// Copy the graph under root, keeping shared children shared, so later edits by the script
+/// do not change a render that was already requested.
+std::shared_ptr<SceneNode> snapshot(const std::shared_ptr<SceneNode>& node,
+                                    std::map<const SceneNode*, std::shared_ptr<SceneNode>>& done) {
+    auto it = done.find(node.get());
+    if (it != done.end()) return it->second;
+    auto copy = std::make_shared<SceneNode>(*node);
+    for (auto& child : copy->children) child = snapshot(child, done);
+    done[node.get()] = copy;
+    return copy;
+}
+
+int integerArg(lua_State* L, int arg, const char* name) {
+    const double v = checkNumber(L, arg, "gr.render", name);
+    if (v != std::floor(v) || std::abs(v) > 1e9)
+        throw InputError(std::string("gr.render: argument ") + std::to_string(arg) + " (" + name +
+                         ") must be a whole number");
+    return static_cast<int>(v);
+}
+
+// [lua-render]
+int grRender(lua_State* L) {
+    checkArgCount(L, "gr.render", 10, 14,
+                  "(root, file, width, height, eye, view, up, fovy, ambient, lights"
+                  " [, aa, ss, dist, {aperture, focal, dof}])");
+    LoadedRender r;
+    RenderJob& job = r.job;
+    lua_Debug ar;
+    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar))
+        job.where = std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
+    auto root = checkNode(L, 1, "gr.render", "root");
+    job.output = checkString(L, 2, "gr.render", "file");
+    job.width = integerArg(L, 3, "width");
+    job.height = integerArg(L, 4, "height");
+    checkImageSize(job.width, job.height, "gr.render: ");
+    job.camera.eye = checkVec3(L, 5, "gr.render", "eye");
+    job.camera.view = checkVec3(L, 6, "gr.render", "view");
+    job.camera.up = checkVec3(L, 7, "gr.render", "up");
+    job.camera.fovyDegrees = checkNumber(L, 8, "gr.render", "fovy");
+    (void)PinholeCamera(job.camera, job.width, job.height);  // validates view, up and fovy
+    job.ambient = checkVec3(L, 9, "gr.render", "ambient");
+    job.lights = checkLights(L, 10);
+    // Seed 001's extra arguments; their chapters (adaptive AA, soft shadows, glossy, DOF)
+    // read them.
+    if (lua_gettop(L) >= 11) job.options["aa"] = checkNumber(L, 11, "gr.render", "aa");
+    if (lua_gettop(L) >= 12) job.options["ss"] = checkNumber(L, 12, "gr.render", "ss");
+    if (lua_gettop(L) >= 13) job.options["dist"] = checkNumber(L, 13, "gr.render", "dist");
+    if (lua_gettop(L) >= 14) {
+        const auto dof = checkTuple(L, 14, 3, "gr.render", "{aperture, focalLength, dof}");
+        job.options["aperture"] = dof[0];
+        job.options["focal_length"] = dof[1];
+        job.options["dof"] = dof[2];
+    }
+    // Freeze the graph as it is now and flatten it, so errors point at this line.
+    std::map<const SceneNode*, std::shared_ptr<SceneNode>> copies;
+    auto frozen = snapshot(root, copies);
+    r.snapshot = frozen;
+    r.instances = flatten(*frozen, &sceneBuilder(L).defaultMaterial);
+    job.root = frozen;
+    sceneBuilder(L).renders.push_back(std::move(r));
+    return 0;
+}
+// [lua-render]
+
+}  // namespace
+
+void pushLight(lua_State* L, const PointLight& light) {
+    void* mem = lua_newuserdatauv(L, sizeof(PointLight), 0);
+    new (mem) PointLight(light);
+    luaL_setmetatable(L, kLightType);
+}
+
+std::vector<PointLight> checkLights(lua_State* L, int arg) {
+    if (lua_type(L, arg) != LUA_TTABLE)
+        throw InputError("gr.render: argument " + std::to_string(arg) +
+                         " (lights) must be a table of lights");
+    const lua_Unsigned n = lua_rawlen(L, arg);
+    if (n == 0)
+        throw InputError("gr.render: argument " + std::to_string(arg) +
+                         " (lights) is empty; a scene needs at least one light");
+    std::vector<PointLight> lights;
+    for (lua_Unsigned i = 1; i <= n; ++i) {
+        lua_rawgeti(L, arg, static_cast<lua_Integer>(i));
+        void* p = luaL_testudata(L, -1, kLightType);
+        lua_pop(L, 1);
+        if (!p)
+            throw InputError("gr.render: argument " + std::to_string(arg) + " (lights): element " +
+                             std::to_string(i) + " is not a light made by gr.light");
+        lights.push_back(*static_cast<PointLight*>(p));
+    }
+    return lights;
+}
+
+void bindA4(LuaBindings& lua) {
+    lua_State* L = lua.state();
+    luaL_newmetatable(L, kLightType);
+    lua_pushcfunction(L, collectLight);
+    lua_setfield(L, -2, "__gc");
+    lua_pop(L, 1);
+    lua.function("node", luaGuard<grNode>);
+    lua.function("joint", luaGuard<grJoint>);
+    lua.function("sphere", luaGuard<grSphere>);
+    lua.function("cube", luaGuard<grCube>);
+    lua.function("nh_sphere", luaGuard<grNhSphere>);
+    lua.function("nh_box", luaGuard<grNhBox>);
+    lua.function("material", luaGuard<grMaterial>);
+    lua.function("light", luaGuard<grLight>);
+    lua.function("render", luaGuard<grRender>);
+    lua.nodeMethod("add_child", luaGuard<nodeAddChild>);
+    lua.nodeMethod("set_material", luaGuard<nodeSetMaterial>);
+    lua.nodeMethod("scale", luaGuard<nodeScale>);
+    lua.nodeMethod("translate", luaGuard<nodeTranslate>);
+    lua.nodeMethod("rotate", luaGuard<nodeRotate>);
+}
+
+}  // namespace rb

@@ -1,0 +1,108 @@
+// Chapter 3's Lua calls: gr.mesh(name, 'file.obj') and the legacy table form
+// gr.mesh(name, {{x,y,z}...}, {{i,j,k,...}...}) with 0-based indices; seed 002's gr.obj_mesh.
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/lua_scene.h"
+#include "core/mesh.h"
+
+namespace rb {
+
+namespace {
+
+/// The mesh in `file`, loaded once per scene and shared by every node that names it.
+std::shared_ptr<const Shape> meshFromFile(lua_State* L, const std::string& file) {
+    SceneBuilder& builder = sceneBuilder(L);
+    const std::string path = resolveScenePath(builder, file);
+    std::error_code ec;
+    const std::string key = std::filesystem::weakly_canonical(path, ec).string();
+    auto it = builder.meshCache.find(key);
+    if (it != builder.meshCache.end()) return it->second;
+    auto mesh = std::make_shared<Mesh>(loadObj(path), path);
+    builder.meshCache[key] = mesh;
+    return mesh;
+}
+
+/// Legacy meshes: vertices and 0-based polygons as Lua tables.
+std::shared_ptr<const Shape> meshFromTables(lua_State* L, const char* call) {
+    ObjData data;
+    if (lua_type(L, 3) != LUA_TTABLE)
+        throw InputError(std::string(call) + ": argument 3 (faces) must be a table of index lists");
+    const lua_Unsigned nv = lua_rawlen(L, 2);
+    for (lua_Unsigned i = 1; i <= nv; ++i) {
+        lua_rawgeti(L, 2, static_cast<lua_Integer>(i));
+        const int top = lua_gettop(L);
+        try {
+            data.positions.push_back(checkVec3(L, top, call, "vertex"));
+        } catch (const InputError& e) {
+            lua_pop(L, 1);
+            throw InputError(std::string(e.what()) + " (vertex " + std::to_string(i) + ")");
+        }
+        lua_pop(L, 1);
+    }
+    const lua_Unsigned nf = lua_rawlen(L, 3);
+    for (lua_Unsigned f = 1; f <= nf; ++f) {
+        lua_rawgeti(L, 3, static_cast<lua_Integer>(f));
+        const int top = lua_gettop(L);
+        const lua_Unsigned n = lua_type(L, top) == LUA_TTABLE ? lua_rawlen(L, top) : 0;
+        std::vector<int> idx;
+        for (lua_Unsigned k = 1; k <= n; ++k) {
+            lua_rawgeti(L, top, static_cast<lua_Integer>(k));
+            const double v = lua_tonumber(L, -1);
+            const bool isNumber = lua_type(L, -1) == LUA_TNUMBER;
+            lua_pop(L, 1);
+            if (!isNumber || v != std::floor(v) || v < 0 || v >= static_cast<double>(nv)) {
+                lua_pop(L, 1);
+                throw InputError(std::string(call) + ": face " + std::to_string(f) +
+                                 " has an index that is not a vertex (0-based, below " +
+                                 std::to_string(nv) + ")");
+            }
+            idx.push_back(static_cast<int>(v));
+        }
+        lua_pop(L, 1);
+        if (idx.size() < 3)
+            throw InputError(std::string(call) + ": face " + std::to_string(f) +
+                             " needs at least 3 indices");
+        // Fan-triangulate the polygon.
+        for (size_t k = 1; k + 1 < idx.size(); ++k)
+            data.triangles.push_back(
+                {ObjCorner{idx[0]}, ObjCorner{idx[k]}, ObjCorner{idx[k + 1]}});
+    }
+    return std::make_shared<Mesh>(data, sceneBuilder(L).scenePath);
+}
+
+// [lua-mesh]
+int grMesh(lua_State* L) {
+    checkArgCount(L, "gr.mesh", 2, 3, "(name, 'file.obj') or (name, vertices, faces)");
+    auto node = std::make_shared<SceneNode>();
+    node->name = checkString(L, 1, "gr.mesh", "name");
+    if (lua_type(L, 2) == LUA_TTABLE) node->shape = meshFromTables(L, "gr.mesh");
+    else if (lua_gettop(L) == 2)
+        node->shape = meshFromFile(L, checkString(L, 2, "gr.mesh", "file"));
+    else
+        throw InputError("gr.mesh: with 3 arguments, argument 2 (vertices) must be a table");
+    pushNode(L, node);
+    return 1;
+}
+// [lua-mesh]
+
+int grObjMesh(lua_State* L) {
+    // Seed 002 documents both gr.obj_mesh(file) and gr.obj_mesh(name, file).
+    checkArgCount(L, "gr.obj_mesh", 1, 2, "(name, 'file.obj')");
+    auto node = std::make_shared<SceneNode>();
+    const int fileArg = lua_gettop(L);
+    node->name = checkString(L, 1, "gr.obj_mesh", "name");
+    node->shape = meshFromFile(L, checkString(L, fileArg, "gr.obj_mesh", "file"));
+    pushNode(L, node);
+    return 1;
+}
+
+}  // namespace
+
+/// Chapter 3's Lua calls.
+void bindMeshes(LuaBindings& lua) {
+    lua.function("mesh", luaGuard<grMesh>);
+    lua.function("obj_mesh", luaGuard<grObjMesh>);
+}
+
+}  // namespace rb

@@ -1,0 +1,356 @@
+#include "core/lua_scene.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+#include "core/box.h"
+#include "core/error.h"
+#include "core/sphere.h"
+
+namespace rb {
+
+namespace fs = std::filesystem;
+
+// ---- Userdata types -----------------------------------------------------------------------
+
+namespace {
+constexpr const char* kNodeType = "rb.node";
+constexpr const char* kMaterialType = "rb.material";
+
+/// Place a shared_ptr in a new userdata whose metatable is `type` (destroyed by __gc).
+template <class T>
+void pushShared(lua_State* L, std::shared_ptr<T> p, const char* type) {
+    void* mem = lua_newuserdatauv(L, sizeof(std::shared_ptr<T>), 0);
+    new (mem) std::shared_ptr<T>(std::move(p));
+    luaL_setmetatable(L, type);
+}
+
+template <class T>
+int collectShared(lua_State* L) {
+    // __gc runs once per userdata; reset the pointer it holds.
+    static_cast<std::shared_ptr<T>*>(lua_touserdata(L, 1))->~shared_ptr<T>();
+    return 0;
+}
+
+const char* typeName(lua_State* L, int arg) {
+    if (luaL_testudata(L, arg, kNodeType)) return "a scene node";
+    if (luaL_testudata(L, arg, kMaterialType)) return "a material";
+    return lua_typename(L, lua_type(L, arg));
+}
+}  // namespace
+
+void pushNode(lua_State* L, std::shared_ptr<SceneNode> node) {
+    pushShared(L, std::move(node), kNodeType);
+}
+void pushMaterial(lua_State* L, std::shared_ptr<Material> material) {
+    pushShared(L, std::move(material), kMaterialType);
+}
+
+// ---- Argument checks ----------------------------------------------------------------------
+
+SceneBuilder& sceneBuilder(lua_State* L) { return **static_cast<SceneBuilder**>(lua_getextraspace(L)); }
+
+void checkArgCount(lua_State* L, const char* call, int min, int max, const char* signature) {
+    const int n = lua_gettop(L);
+    if (n < min || n > max)
+        throw InputError(std::string(call) + " expects " +
+                         (min == max ? std::to_string(min) : std::to_string(min) + " to " +
+                                                                 std::to_string(max)) +
+                         " argument" + (max == 1 ? "" : "s") + " " + signature + ", got " +
+                         std::to_string(n));
+}
+
+double checkNumber(lua_State* L, int arg, const char* call, const char* argName) {
+    if (lua_type(L, arg) != LUA_TNUMBER)
+        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
+                         ") must be a number, got " + typeName(L, arg));
+    const double v = lua_tonumber(L, arg);
+    if (!std::isfinite(v))
+        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
+                         ") must be finite, got " + (std::isnan(v) ? "nan" : "inf"));
+    return v;
+}
+
+std::string checkString(lua_State* L, int arg, const char* call, const char* argName) {
+    if (lua_type(L, arg) != LUA_TSTRING)
+        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
+                         ") must be a string, got " + typeName(L, arg));
+    size_t len = 0;
+    const char* s = lua_tolstring(L, arg, &len);
+    return std::string(s, len);
+}
+
+std::vector<double> checkTuple(lua_State* L, int arg, int n, const char* call,
+                               const char* argName) {
+    const std::string what = std::string(call) + ": argument " + std::to_string(arg) + " (" +
+                             argName + ") must be a table of " + std::to_string(n) + " numbers";
+    if (lua_type(L, arg) != LUA_TTABLE) throw InputError(what + ", got " + typeName(L, arg));
+    const lua_Unsigned len = lua_rawlen(L, arg);
+    if (len != static_cast<lua_Unsigned>(n))
+        throw InputError(what + ", got a table of " + std::to_string(len));
+    std::vector<double> values(n);
+    for (int i = 1; i <= n; ++i) {
+        const int type = lua_rawgeti(L, arg, i);
+        const double v = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+        if (type != LUA_TNUMBER)
+            throw InputError(what + ", but element " + std::to_string(i) + " is a " +
+                             lua_typename(L, type));
+        if (!std::isfinite(v))
+            throw InputError(what + ", but element " + std::to_string(i) + " is " +
+                             (std::isnan(v) ? "nan" : "inf"));
+        values[i - 1] = v;
+    }
+    return values;
+}
+
+Vec3 checkVec3(lua_State* L, int arg, const char* call, const char* argName) {
+    const std::vector<double> v = checkTuple(L, arg, 3, call, argName);
+    return {v[0], v[1], v[2]};
+}
+
+std::shared_ptr<SceneNode> checkNode(lua_State* L, int arg, const char* call,
+                                     const char* argName) {
+    void* p = luaL_testudata(L, arg, kNodeType);
+    if (!p)
+        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
+                         ") must be a scene node, got " + typeName(L, arg) +
+                         (arg == 1 ? " (call methods with a colon: node:method(...))" : ""));
+    return *static_cast<std::shared_ptr<SceneNode>*>(p);
+}
+
+std::shared_ptr<Material> checkMaterial(lua_State* L, int arg, const char* call,
+                                        const char* argName) {
+    void* p = luaL_testudata(L, arg, kMaterialType);
+    if (!p)
+        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
+                         ") must be a material, got " + typeName(L, arg));
+    return *static_cast<std::shared_ptr<Material>*>(p);
+}
+
+std::string resolveScenePath(const SceneBuilder& builder, const std::string& name) {
+    std::error_code ec;
+    if (fs::exists(name, ec) || fs::path(name).is_absolute()) return name;
+    const fs::path besideScene = fs::path(builder.sceneDir) / name;
+    if (fs::exists(besideScene, ec)) return besideScene.string();
+    return name;
+}
+
+// ---- Bindings registry --------------------------------------------------------------------
+
+void LuaBindings::function(const char* name, lua_CFunction f) {
+    lua_getglobal(L_, "gr");
+    lua_pushcfunction(L_, f);
+    lua_setfield(L_, -2, name);
+    lua_pop(L_, 1);
+}
+
+void LuaBindings::nodeMethod(const char* name, lua_CFunction f) {
+    luaL_getmetatable(L_, kNodeType);
+    lua_getfield(L_, -1, "__index");
+    lua_pushcfunction(L_, f);
+    lua_setfield(L_, -2, name);
+    lua_pop(L_, 2);
+}
+
+void LuaBindings::materialMethod(const char* name, lua_CFunction f) {
+    luaL_getmetatable(L_, kMaterialType);
+    lua_getfield(L_, -1, "__index");
+    lua_pushcfunction(L_, f);
+    lua_setfield(L_, -2, name);
+    lua_pop(L_, 2);
+}
+
+// ---- The sandbox --------------------------------------------------------------------------
+
+namespace {
+
+/// Lua's allocator, with a cap on the bytes in use.
+void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize) {
+    auto* builder = static_cast<SceneBuilder*>(ud);
+    const size_t old = ptr ? oldSize : 0;
+    if (newSize == 0) {
+        builder->bytesInUse -= old;
+        std::free(ptr);
+        return nullptr;
+    }
+    if (newSize > old && builder->bytesInUse + (newSize - old) > builder->options.memoryLimit)
+        return nullptr;  // Lua raises "not enough memory"
+    void* p = std::realloc(ptr, newSize);
+    if (p) builder->bytesInUse = builder->bytesInUse - old + newSize;
+    return p;
+}
+
+/// The count hook: stop a script that runs too long (an endless loop).
+constexpr int kHookInterval = 10000;
+void instructionHook(lua_State* L, lua_Debug*) {
+    SceneBuilder& builder = sceneBuilder(L);
+    builder.instructions += kHookInterval;
+    if (builder.instructions > builder.options.instructionLimit)
+        luaL_error(L, "the scene script ran more than %I Lua instructions (an endless loop?)",
+                   static_cast<lua_Integer>(builder.options.instructionLimit));
+}
+
+/// require(name) limited to name.lua in the scene's own folder (dots become slashes).
+int sandboxRequire(lua_State* L) {
+    const char* raw = luaL_checkstring(L, 1);
+    std::string name = raw;
+    for (char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-'))
+            return luaL_error(L, "require: module name '%s' may use only letters, digits, _ . -",
+                              raw);
+    if (name.find("..") != std::string::npos || name.front() == '.')
+        return luaL_error(L, "require: module name '%s' may not leave the scene's folder", raw);
+    // Return the cached module if it was loaded before.
+    lua_getfield(L, LUA_REGISTRYINDEX, "rb.loaded");
+    lua_getfield(L, -1, raw);
+    if (!lua_isnil(L, -1)) return 1;
+    lua_pop(L, 1);
+    for (char& c : name)
+        if (c == '.') c = '/';
+    const SceneBuilder& builder = sceneBuilder(L);
+    const std::string file = (fs::path(builder.sceneDir) / (name + ".lua")).string();
+    // Text chunks only: precompiled bytecode can crash the VM.
+    if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) return lua_error(L);
+    lua_pushstring(L, raw);
+    lua_call(L, 1, 1);
+    if (lua_isnil(L, -1)) {
+        lua_pop(L, 1);
+        lua_pushboolean(L, 1);
+    }
+    lua_pushvalue(L, -1);
+    lua_setfield(L, -3, raw);
+    return 1;
+}
+
+/// load() restricted to text chunks.
+int sandboxLoad(lua_State* L) {
+    size_t len = 0;
+    const char* chunk = lua_tolstring(L, 1, &len);
+    if (!chunk) return luaL_error(L, "load: only strings can be loaded in the sandbox");
+    const char* name = luaL_optstring(L, 2, "=(load)");
+    if (luaL_loadbufferx(L, chunk, len, name, "t") != LUA_OK) {
+        lua_pushnil(L);
+        lua_insert(L, -2);
+        return 2;
+    }
+    if (!lua_isnone(L, 4)) {
+        lua_pushvalue(L, 4);
+        if (!lua_setupvalue(L, -2, 1)) lua_pop(L, 1);
+    }
+    return 1;
+}
+
+/// gr.<name> for a name nobody defined: say which chapter provides it.
+int unknownGrCall(lua_State* L) {
+    const char* name = lua_tostring(L, 2);
+    if (!name) return luaL_error(L, "gr: index must be a string");
+    std::string title;
+    const int chapter = chapterProviding(name, title);
+    if (chapter)
+        return luaL_error(L,
+                          "gr.%s needs chapter %d (%s), which this build does not have; build "
+                          "it with make chapter%d or later",
+                          name, chapter, title.c_str(), chapter);
+    return luaL_error(L, "gr.%s is not a raybook call (see --help and the reference page)",
+                      name);
+}
+
+/// Open only base, math, string and table (all libraries with --unsafe-lua).
+void openSandbox(lua_State* L, const SceneBuilder& builder) {
+    if (builder.options.unsafeLua) {
+        luaL_openlibs(L);
+    } else {
+        luaL_requiref(L, LUA_GNAME, luaopen_base, 1);
+        luaL_requiref(L, LUA_MATHLIBNAME, luaopen_math, 1);
+        luaL_requiref(L, LUA_STRLIBNAME, luaopen_string, 1);
+        luaL_requiref(L, LUA_TABLIBNAME, luaopen_table, 1);
+        lua_pop(L, 4);
+        // Remove what reads files or loads bytecode; keep a text-only load.
+        for (const char* name : {"dofile", "loadfile"}) {
+            lua_pushnil(L);
+            lua_setglobal(L, name);
+        }
+        lua_pushcfunction(L, sandboxLoad);
+        lua_setglobal(L, "load");
+    }
+    lua_newtable(L);
+    lua_setfield(L, LUA_REGISTRYINDEX, "rb.loaded");
+    lua_pushcfunction(L, sandboxRequire);
+    lua_setglobal(L, "require");
+    // Lua 5.1 names that legacy course scenes use: unpack and string.gfind.
+    lua_getglobal(L, "table");
+    lua_getfield(L, -1, "unpack");
+    lua_setglobal(L, "unpack");
+    lua_pop(L, 1);
+    lua_getglobal(L, "string");
+    lua_getfield(L, -1, "gmatch");
+    lua_setfield(L, -2, "gfind");
+    lua_pop(L, 1);
+}
+
+/// Create the gr table and the node and material metatables.
+void createTypes(lua_State* L) {
+    lua_newtable(L);  // gr
+    lua_newtable(L);  // its metatable: unknown calls name their chapter
+    lua_pushcfunction(L, unknownGrCall);
+    lua_setfield(L, -2, "__index");
+    lua_setmetatable(L, -2);
+    lua_setglobal(L, "gr");
+    for (const char* type : {kNodeType, kMaterialType}) {
+        luaL_newmetatable(L, type);
+        lua_newtable(L);
+        lua_setfield(L, -2, "__index");
+        lua_pushcfunction(L, std::strcmp(type, kNodeType) == 0 ? collectShared<SceneNode>
+                                                               : collectShared<Material>);
+        lua_setfield(L, -2, "__gc");
+        lua_pop(L, 1);
+    }
+}
+
+struct LuaStateCloser {
+    void operator()(lua_State* L) const { lua_close(L); }
+};
+
+}  // namespace
+
+// [load-scene]
+std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& features,
+                                    const SceneLoadOptions& options) {
+    SceneBuilder builder;
+    builder.scenePath = path;
+    builder.sceneDir = fs::path(path).parent_path().string();
+    builder.options = options;
+    builder.unitSphere = std::make_shared<Sphere>();
+    builder.unitCube = std::make_shared<Box>();
+
+    // A fresh state with a capped allocator; the builder is reachable from the state itself.
+    std::unique_ptr<lua_State, LuaStateCloser> state(lua_newstate(limitedAlloc, &builder));
+    if (!state) throw InputError(path + ": cannot create a Lua state");
+    lua_State* L = state.get();
+    *static_cast<SceneBuilder**>(lua_getextraspace(L)) = &builder;
+    openSandbox(L, builder);
+    createTypes(L);
+    LuaBindings bindings(L);
+    for (const Feature& f : features.built())
+        if (f.bindLua) f.bindLua(bindings);
+    lua_sethook(L, instructionHook, LUA_MASKCOUNT, kHookInterval);
+
+    // Load as text only, then run it. Errors already carry "file:line:".
+    int status = luaL_loadfilex(L, path.c_str(), "t");
+    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
+    if (status != LUA_OK) {
+        std::string message = lua_tostring(L, -1) ? lua_tostring(L, -1) : "unknown Lua error";
+        if (status == LUA_ERRMEM)
+            message = path + ": the scene script exceeded the memory limit of " +
+                      std::to_string(options.memoryLimit >> 20) + " MiB";
+        throw InputError(message);
+    }
+    if (builder.renders.empty()) throw InputError(path + ": the scene never calls gr.render");
+    return std::move(builder.renders);
+}
+// [load-scene]
+
+}  // namespace rb

@@ -1,0 +1,123 @@
+/// \file
+/// The Lua scene loader: a sandboxed Lua 5.4 that runs a scene script and collects its
+/// gr.render calls, plus the helpers chapter modules use to add their own Lua calls.
+#pragma once
+
+#include <lua.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/feature.h"
+#include "core/scene_graph.h"
+
+namespace rb {
+
+/// How to run a scene script.
+struct SceneLoadOptions {
+    bool legacy = false;       ///< Course framework before 2015: transforms post-multiply.
+    bool unsafeLua = false;    ///< Allow os and io.
+    long long instructionLimit = 2'000'000'000;  ///< Lua VM instructions before we give up.
+    size_t memoryLimit = size_t(2) << 30;        ///< Bytes the script may allocate.
+};
+
+/// A render request after the script ran: the job plus the world it renders.
+struct LoadedRender {
+    RenderJob job;
+    std::shared_ptr<const SceneNode> snapshot;  ///< The graph as it was at gr.render.
+    std::vector<Instance> instances;            ///< Flattened from the snapshot.
+};
+
+/// What the Lua calls build while the script runs. One per load; reached through the
+/// lua_State, so no global state is needed.
+struct SceneBuilder {
+    std::string scenePath;       ///< As given on the command line.
+    std::string sceneDir;        ///< Folder of the scene ("" for the working directory).
+    SceneLoadOptions options;
+    std::vector<LoadedRender> renders;
+    std::map<std::string, std::shared_ptr<const Shape>> meshCache;  ///< One load per file.
+    std::shared_ptr<const Shape> unitSphere, unitCube;              ///< Shared by all nodes.
+    Material defaultMaterial{Colour(0.5), Colour(0.0), 1.0, {}};  ///< For nodes without one.
+    long long instructions = 0;
+    size_t bytesInUse = 0;
+};
+
+/// Registers Lua calls. Chapter modules receive one in Feature::bindLua.
+class LuaBindings {
+public:
+    explicit LuaBindings(lua_State* L) : L_(L) {}
+    /// Define or replace gr.<name>.
+    void function(const char* name, lua_CFunction f);
+    /// Define or replace a method of scene nodes (n:<name>(...)).
+    void nodeMethod(const char* name, lua_CFunction f);
+    /// Define or replace a method of materials (m:<name>(...)).
+    void materialMethod(const char* name, lua_CFunction f);
+    lua_State* state() const { return L_; }
+
+private:
+    lua_State* L_;
+};
+
+/// Run the scene script and return its render requests in call order. Binds the Lua calls of
+/// every built feature. Throws InputError ("file:line: what was expected") for bad input.
+std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& features,
+                                    const SceneLoadOptions& options);
+
+// ---- Helpers for writing Lua calls --------------------------------------------------------
+// A call written with RB_LUA_CALL may throw InputError with a message that names the call and
+// argument; the wrapper adds "file:line:" and raises it as a Lua error. Never call lua_error or
+// luaL_error* inside such a body: they would jump over C++ destructors.
+
+/// Wrap a C++ body `int body(lua_State*)` that may throw into a lua_CFunction.
+template <int (*Body)(lua_State*)>
+int luaGuard(lua_State* L) {
+    {
+        std::string message;
+        try {
+            return Body(L);
+        } catch (const std::exception& e) {
+            message = e.what();
+        }
+        luaL_where(L, 1);
+        lua_pushlstring(L, message.data(), message.size());
+        lua_concat(L, 2);
+    }
+    return lua_error(L);
+}
+
+/// The SceneBuilder of the running script.
+SceneBuilder& sceneBuilder(lua_State* L);
+/// Throw unless the call received between min and max arguments.
+void checkArgCount(lua_State* L, const char* call, int min, int max, const char* signature);
+/// A finite number argument.
+double checkNumber(lua_State* L, int arg, const char* call, const char* argName);
+/// A string argument.
+std::string checkString(lua_State* L, int arg, const char* call, const char* argName);
+/// A table of exactly n finite numbers.
+std::vector<double> checkTuple(lua_State* L, int arg, int n, const char* call, const char* argName);
+/// A table of exactly 3 finite numbers.
+Vec3 checkVec3(lua_State* L, int arg, const char* call, const char* argName);
+/// A scene node argument.
+std::shared_ptr<SceneNode> checkNode(lua_State* L, int arg, const char* call, const char* argName);
+/// A material argument.
+std::shared_ptr<Material> checkMaterial(lua_State* L, int arg, const char* call,
+                                        const char* argName);
+/// Push a new scene node userdata.
+void pushNode(lua_State* L, std::shared_ptr<SceneNode> node);
+/// Push a new material userdata.
+void pushMaterial(lua_State* L, std::shared_ptr<Material> material);
+/// Resolve a file named by the scene: relative to the working directory, then to the
+/// scene's folder. Returns the path that exists, or the name unchanged.
+std::string resolveScenePath(const SceneBuilder& builder, const std::string& name);
+
+/// Push a light userdata (gr.light's result).
+void pushLight(lua_State* L, const PointLight& light);
+/// The table of lights at argument arg: at least one, each made by gr.light.
+std::vector<PointLight> checkLights(lua_State* L, int arg);
+
+/// Chapter 1's Lua calls: the A4 language except gr.mesh.
+void bindA4(LuaBindings& lua);
+
+}  // namespace rb

@@ -1,0 +1,145 @@
+// ./rt: run a scene script, then render each gr.render call it made.
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "core/error.h"
+#include "core/lua_scene.h"
+#include "core/options.h"
+#include "core/render.h"
+
+namespace rb {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// Peak resident set size in MiB.
+double peakMemoryMiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0;  // Linux reports KiB
+}
+
+/// The output path of render number `index` (of `count`) after --output.
+std::string outputPath(const CommandLine& cl, const RenderJob& job, size_t index, size_t count) {
+    if (cl.output.empty()) return job.output;
+    if (count == 1 || index == 0) return cl.output;
+    const auto dot = cl.output.rfind('.');
+    const std::string stem = dot == std::string::npos ? cl.output : cl.output.substr(0, dot);
+    const std::string ext = dot == std::string::npos ? ".png" : cl.output.substr(dot);
+    return stem + "-" + std::to_string(index + 1) + ext;
+}
+
+void printFeatures(const FeatureSet& set) {
+    for (const Feature& f : set.built())
+        std::printf("%2d  %-14s %-4s %s%s\n", f.chapter, f.name, set.enabled(f.name) ? "on" : "off",
+                    f.title, f.switchable ? "" : " (core)");
+}
+
+int run(int argc, char** argv) {
+    const CommandLine cl = parseCommandLine(argc, argv);
+    if (cl.help) {
+        std::cout << usage();
+        return 0;
+    }
+    if (cl.version) {
+        std::cout << "raybook rt, chapters 1-" << builtFeatures().back().chapter << "\n";
+        return 0;
+    }
+    const FeatureSet features(builtFeatures(), cl.features);
+    if (cl.listFeatures) {
+        printFeatures(features);
+        return 0;
+    }
+
+    // Run the script. Rendering starts only after it finished, so the command line can
+    // override what it asked for.
+    auto t0 = Clock::now();
+    SceneLoadOptions loadOptions;
+    loadOptions.legacy = cl.legacy;
+    loadOptions.unsafeLua = cl.unsafeLua;
+    std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions);
+    const double luaSeconds = since(t0);
+
+    Pipeline pipeline;
+    for (const Feature& f : features.on())
+        if (f.install) f.install(pipeline);
+
+    for (size_t k = 0; k < renders.size(); ++k) {
+        LoadedRender& r = renders[k];
+        RenderJob& job = r.job;
+        if (cl.width > 0) {
+            job.width = cl.width;
+            job.height = cl.height;
+        }
+        checkImageSize(job.width, job.height, job.where + ": ");
+        const std::string output = outputPath(cl, job, k, renders.size());
+
+        // Build the world: instances, the aggregate over them, and the lights.
+        t0 = Clock::now();
+        Scene scene;
+        scene.instances = std::move(r.instances);
+        scene.aggregate = pipeline.buildAggregate(scene.instances);
+        scene.lights = job.lights;
+        scene.ambient = job.ambient;
+        if (cl.maxDepth >= 0) scene.maxDepth = cl.maxDepth;
+        const double buildSeconds = since(t0);
+
+        const PinholeCamera camera(job.camera, job.width, job.height);
+        RenderSettings settings;
+        settings.threads = cl.threads;
+        settings.seed = cl.seed;
+        settings.samplesPerPixel = cl.samplesPerPixel > 0 ? cl.samplesPerPixel : 1;
+        settings.progress = !cl.quiet && isatty(STDERR_FILENO);
+        RayCounters counters;
+        t0 = Clock::now();
+        const Image image = render(scene, pipeline, camera, job.width, job.height, settings,
+                                   counters);
+        const double renderSeconds = since(t0);
+
+        t0 = Clock::now();
+        writePng(image, output);
+        const double writeSeconds = since(t0);
+        if (!cl.quiet) std::fprintf(stderr, "wrote %s (%dx%d)\n", output.c_str(), job.width, job.height);
+
+        if (cl.stats) {
+            std::fprintf(stderr, "stats for %s\n", output.c_str());
+            std::fprintf(stderr, "  rays      ");
+            for (size_t i = 0; i < counters.count.size(); ++i)
+                if (counters.count[i])
+                    std::fprintf(stderr, " %s %llu", kRayKindNames[i],
+                                 static_cast<unsigned long long>(counters.count[i]));
+            std::fprintf(stderr, " (total %llu)\n", static_cast<unsigned long long>(counters.total()));
+            std::fprintf(stderr,
+                         "  time       lua+load %.3f s, build %.3f s, render %.3f s, write %.3f s\n",
+                         k == 0 ? luaSeconds : 0.0, buildSeconds, renderSeconds, writeSeconds);
+            std::fprintf(stderr, "  speed      %.2f Mrays/s\n",
+                         counters.total() / std::max(renderSeconds, 1e-9) / 1e6);
+            std::fprintf(stderr, "  instances  %zu\n", scene.instances.size());
+            const std::string structure = scene.aggregate->statistics();
+            if (!structure.empty()) std::fprintf(stderr, "  bvh        %s\n", structure.c_str());
+            std::fprintf(stderr, "  memory     peak %.1f MiB\n", peakMemoryMiB());
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+}  // namespace rb
+
+int main(int argc, char** argv) {
+    try {
+        return rb::run(argc, argv);
+    } catch (const rb::InputError& e) {
+        std::fprintf(stderr, "rt: error: %s\n", e.what());
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "rt: error: out of memory\n");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "rt: error: %s\n", e.what());
+    }
+    return 1;
+}

@@ -1,0 +1,27 @@
+/// \file
+/// Material: the A4 Phong parameters plus named extra parameters that chapter modules read.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "core/vec.h"
+
+namespace rb {
+
+/// A surface material. The core reads kd, ks and shininess (A4's gr.material); later chapters
+/// read their own named parameters ("reflect", "ior", ...) from `params`.
+struct Material {
+    Colour kd{0.0};          ///< Diffuse reflectance.
+    Colour ks{0.0};          ///< Specular reflectance.
+    double shininess = 1.0;  ///< Phong exponent.
+    std::map<std::string, double> params;  ///< Chapter parameters by name, e.g. "reflect".
+
+    /// A chapter parameter, or fallback when the scene did not set it.
+    double param(const std::string& name, double fallback = 0.0) const {
+        auto it = params.find(name);
+        return it == params.end() ? fallback : it->second;
+    }
+};
+
+}  // namespace rb

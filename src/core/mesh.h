@@ -1,0 +1,50 @@
+/// \file
+/// Triangle meshes: the shape chapter 3 adds, with its own BVH over its triangles.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/bvh.h"
+#include "core/obj.h"
+#include "core/shape.h"
+
+namespace rb {
+
+/// A triangle mesh in object space. Triangles are stored in BVH order with their vertices
+/// copied out, so a leaf test reads one contiguous block.
+class Mesh final : public Shape {
+public:
+    /// Build from OBJ data. Degenerate (zero-area) triangles are dropped; throws InputError
+    /// (naming `name`) when no triangle is left.
+    Mesh(const ObjData& data, const std::string& name);
+    bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
+    bool occluded(const Ray& ray, double tMax) const override;
+    AABB bounds() const override { return bounds_; }
+
+    /// Number of triangles kept.
+    size_t triangleCount() const { return triangles_.size(); }
+    /// Degenerate triangles dropped at load.
+    size_t droppedCount() const { return dropped_; }
+    /// The mesh's BVH.
+    const BVH& bvh() const { return bvh_; }
+    /// Bytes used by triangle data (excluding the BVH).
+    size_t triangleBytes() const;
+    /// The three vertices of triangle slot i (BVH order).
+    const std::array<Vec3, 3>& triangle(size_t i) const { return triangles_[i]; }
+    /// The OBJ triangle index of slot i.
+    std::uint32_t sourceIndex(size_t i) const { return source_[i]; }
+    /// The OBJ corners of slot i (for normals and texture coordinates in later chapters).
+    const std::array<ObjCorner, 3>& corners(size_t i) const { return corners_[i]; }
+
+private:
+    std::vector<std::array<Vec3, 3>> triangles_;      ///< Vertices, BVH order.
+    std::vector<std::uint32_t> source_;                ///< OBJ triangle index per slot.
+    std::vector<std::array<ObjCorner, 3>> corners_;   ///< OBJ corners per slot.
+    BVH bvh_;
+    AABB bounds_;
+    size_t dropped_ = 0;
+};
+
+}  // namespace rb

@@ -1,0 +1,49 @@
+/// \file
+/// The A4 scene graph: nodes with transforms and children (a DAG), and its flattening.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/instance.h"
+#include "core/light.h"
+
+namespace rb {
+
+/// A node of the scene graph. A group (gr.node, gr.joint) only transforms its children; a
+/// geometry node also holds a shape and a material. One node may have several parents.
+struct SceneNode {
+    std::string name;
+    Mat4 transform{1.0};                         ///< Local-to-parent transform.
+    std::shared_ptr<const Shape> shape;          ///< Null for group nodes.
+    std::shared_ptr<const Material> material;    ///< Null until set_material.
+    std::vector<std::shared_ptr<SceneNode>> children;
+};
+
+/// True when `to` can be reached from `from` along child links (used to refuse cycles).
+bool reaches(const SceneNode& from, const SceneNode* to);
+
+/// The most instances a scene may flatten to, so that an exponential DAG fails cleanly.
+inline constexpr size_t kMaxInstances = 20'000'000;
+
+/// Flatten the graph under root into world-space instances. Transforms compose as
+/// parent · child. A node without a material inherits the nearest ancestor's; with none at
+/// all it gets `fallback`. Throws InputError on a singular transform or too many instances.
+std::vector<Instance> flatten(const SceneNode& root, const Material* fallback);
+
+/// One gr.render call: everything needed to render one image.
+struct RenderJob {
+    std::shared_ptr<SceneNode> root;
+    std::string output;        ///< PNG path, relative to the working directory.
+    int width = 0, height = 0;
+    CameraSpec camera;
+    Colour ambient{0.0};
+    std::vector<PointLight> lights;
+    std::string where;         ///< "scene.lua:42", for messages about this job.
+    std::map<std::string, double> options;  ///< Dialect extras (seed 001's aa, ss, dist, ...).
+};
+
+}  // namespace rb

@@ -1,0 +1,25 @@
+/// \file
+/// Shape: the extension point for geometry. A shape lives in its own object space.
+#pragma once
+
+#include "core/aabb.h"
+#include "core/hit.h"
+
+namespace rb {
+
+/// Geometry in object space. Chapters add kinds (mesh, CSG, cylinder, cone) by deriving.
+class Shape {
+public:
+    virtual ~Shape() = default;
+    /// The closest hit with t in (0, tMax), written to hit; false when there is none.
+    virtual bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const = 0;
+    /// Any hit with t in (0, tMax): the shadow-ray query. Defaults to intersect().
+    virtual bool occluded(const Ray& ray, double tMax) const {
+        ObjectHit unused;
+        return intersect(ray, tMax, unused);
+    }
+    /// Object-space bounds.
+    virtual AABB bounds() const = 0;
+};
+
+}  // namespace rb

@@ -1,0 +1,34 @@
+/// \file
+/// Ray counters kept per thread, so counting never needs a lock or an atomic.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace rb {
+
+/// The kinds of ray raybook counts. Chapters add secondary kinds here as they appear.
+enum class RayKind : int { Camera, Shadow, Reflection, Refraction, Glossy, Count };
+
+/// Names for RayKind, in order.
+inline constexpr std::array<const char*, static_cast<int>(RayKind::Count)> kRayKindNames = {
+    "camera", "shadow", "reflection", "refraction", "glossy"};
+
+/// One thread's ray counts. Aligned to a cache line so threads never share one.
+struct alignas(64) RayCounters {
+    std::array<std::uint64_t, static_cast<int>(RayKind::Count)> count{};
+    /// Count one ray of kind k.
+    void add(RayKind k) { ++count[static_cast<int>(k)]; }
+    /// Add another thread's counts to these.
+    void merge(const RayCounters& other) {
+        for (size_t i = 0; i < count.size(); ++i) count[i] += other.count[i];
+    }
+    /// All rays of every kind.
+    std::uint64_t total() const {
+        std::uint64_t t = 0;
+        for (auto c : count) t += c;
+        return t;
+    }
+};
+
+}  // namespace rb

@@ -1,0 +1,1 @@
+echo "bad_input: TODO"

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Render a scene with 1 and with 2 threads; the PNG bytes must be identical.
+set -euo pipefail
+rt=$1 scene=$2 out=$3
+name=$(basename "$scene" .lua)
+mkdir -p "$out"
+"$rt" --quiet --size 96x72 --spp 2 --seed 7 --threads 1 --output "$out/$name-1.png" "$scene"
+"$rt" --quiet --size 96x72 --spp 2 --seed 7 --threads 2 --output "$out/$name-2.png" "$scene"
+if cmp -s "$out/$name-1.png" "$out/$name-2.png"; then
+  echo "$name: 1 and 2 threads give identical bytes"
+else
+  echo "$name: FAIL: 1 and 2 threads differ"; exit 1
+fi

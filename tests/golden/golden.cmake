@@ -1,0 +1,36 @@
+# Golden-image machinery: the rb_imgdiff comparison tool and rb_add_golden_test().
+#
+# Included from the top-level CMakeLists.txt after PkgConfig::STB exists (pkg_check_modules(STB
+# REQUIRED IMPORTED_TARGET stb)) and CMAKE_CXX_STANDARD is set.
+#
+# Provides:
+#   rb_golden_compare             static library: image_compare.cpp (PNG I/O, thresholds, metric);
+#                                 carries its include directory and PkgConfig::STB
+#   rb_imgdiff                    the comparison CLI used by run_golden.sh
+#   RB_GOLDEN_COMPARE_SOURCES     path of image_compare.cpp, for unit tests that compile it in
+#   RB_GOLDEN_INCLUDE_DIR         directory holding image_compare.h
+#   RB_GOLDEN_TEST_SOURCES        the Catch2 tests of the metric (golden_compare.cpp, no main)
+#   rb_add_golden_test(TEST_NAME RT_TARGET SCENE_PATH [rt args...])
+#       a ctest test (label "golden") that renders SCENE_PATH (relative to the repository root)
+#       with RT_TARGET and compares it with golden/NAME.png; reports go to build/golden-report/
+
+set(RB_GOLDEN_INCLUDE_DIR ${CMAKE_CURRENT_LIST_DIR})
+set(RB_GOLDEN_COMPARE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/image_compare.cpp)
+set(RB_GOLDEN_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/golden_compare.cpp)
+set(RB_GOLDEN_RUNNER ${CMAKE_CURRENT_LIST_DIR}/run_golden.sh)
+
+add_library(rb_golden_compare STATIC ${RB_GOLDEN_COMPARE_SOURCES})
+target_include_directories(rb_golden_compare PUBLIC ${RB_GOLDEN_INCLUDE_DIR})
+target_link_libraries(rb_golden_compare PUBLIC PkgConfig::STB)
+
+add_executable(rb_imgdiff ${CMAKE_CURRENT_LIST_DIR}/imgdiff.cpp)
+target_link_libraries(rb_imgdiff PRIVATE rb_golden_compare)
+
+# Register one golden-image test. Extra arguments after SCENE_PATH are passed on to rt.
+function(rb_add_golden_test TEST_NAME RT_TARGET SCENE_PATH)
+    add_test(NAME ${TEST_NAME}
+             COMMAND bash ${RB_GOLDEN_RUNNER} $<TARGET_FILE:${RT_TARGET}> ${SCENE_PATH}
+                     ${CMAKE_SOURCE_DIR}/golden ${CMAKE_BINARY_DIR}/golden-report
+                     $<TARGET_FILE:rb_imgdiff> ${ARGN})
+    set_tests_properties(${TEST_NAME} PROPERTIES LABELS golden)
+endfunction()

@@ -1,0 +1,130 @@
+#!/usr/bin/env bash
+# run_golden.sh: render one scene and compare it with its golden image (or update the golden).
+#
+# usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR IMGDIFF [--update] [rt args...]
+#
+#   NAME      the scene's file name without .lua
+#   settings  GOLDEN_DIR/NAME.txt gives size, seed and args (see image_compare.h); with --update
+#             a missing file is created with the default thresholds
+#   render    RT_BINARY --quiet --features=all --size WxH --seed S --output OUT_DIR/NAME.png
+#             <args from NAME.txt> <rt args...> SCENE, run from the repository root (the parent
+#             of GOLDEN_DIR), so SCENE and the paths inside it are relative to the repository
+#   compare   IMGDIFF against GOLDEN_DIR/NAME.png; its report goes to OUT_DIR
+#   update    with --update, the render is copied to GOLDEN_DIR/NAME.png instead
+#
+# Prints one line. Exit status: 0 pass (or updated), 1 fail, 2 usage or missing input.
+set -euo pipefail
+
+usage() {
+    echo "usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR IMGDIFF [--update] [rt args...]" >&2
+    exit 2
+}
+
+# An absolute path for $1, resolved from the caller's directory (the file need not exist)
+absolute() {
+    case "$1" in
+        /*) printf '%s\n' "$1" ;;
+        *) printf '%s\n' "$PWD/$1" ;;
+    esac
+}
+
+# Parse the arguments; --update may appear anywhere after the five positional ones
+[[ $# -ge 5 ]] || usage
+rt=$(absolute "$1")
+scene=$2
+golden_dir=$(absolute "$3")
+out_dir=$(absolute "$4")
+imgdiff=$(absolute "$5")
+shift 5
+update=0
+rt_extra=()
+for arg in "$@"; do
+    if [[ $arg == --update ]]; then update=1; else rt_extra+=("$arg"); fi
+done
+name=$(basename "$scene" .lua)
+repo_root=$(dirname "$golden_dir")
+thresholds=$golden_dir/$name.txt
+golden_png=$golden_dir/$name.png
+render_png=$out_dir/$name.png
+
+# SCENE is relative to the repository root; accept a path relative to the caller's directory
+# too, when only that one exists
+if [[ $scene != /* && ! -e $repo_root/$scene && -e $scene ]]; then
+    scene=$(absolute "$scene")
+fi
+
+# Find the thresholds file; when updating, a missing one is created (after a good render)
+create_thresholds=0
+thresholds_source=$thresholds
+if [[ ! -f $thresholds ]]; then
+    if [[ $update -eq 0 ]]; then
+        echo "$name: FAIL: no thresholds file $thresholds; run make golden-update"
+        exit 2
+    fi
+    create_thresholds=1
+    thresholds_source=/dev/null # render with the defaults below
+fi
+
+# Read size, seed and args (the C++ parser in rb_imgdiff validates the whole file)
+size=192x144
+seed=1
+args_line=
+while IFS= read -r line || [[ -n $line ]]; do
+    line=${line%%#*} # drop the comment
+    read -r key value <<<"$line" || true
+    case "$key" in
+        size) size=$value ;;
+        seed) seed=$value ;;
+        args) args_line=$value ;;
+    esac
+done <"$thresholds_source"
+read -r -a file_args <<<"$args_line" || true
+
+# Render from the repository root; remove the old render so a silent failure cannot pass
+mkdir -p "$out_dir"
+rm -f "$render_png"
+stderr_file=$(mktemp)
+trap 'rm -f "$stderr_file"' EXIT
+status=0
+(
+    cd "$repo_root"
+    "$rt" --quiet --features=all --size "$size" --seed "$seed" --output "$render_png" \
+        ${file_args[@]+"${file_args[@]}"} ${rt_extra[@]+"${rt_extra[@]}"} "$scene"
+) 2>"$stderr_file" >/dev/null || status=$?
+if [[ $status -ne 0 ]]; then
+    echo "$name: FAIL: render failed (exit $status)"
+    cat "$stderr_file"
+    exit 1
+fi
+if [[ ! -f $render_png ]]; then
+    echo "$name: FAIL: render exited 0 but wrote no image $render_png"
+    cat "$stderr_file"
+    exit 1
+fi
+
+# Update the golden image (and create its thresholds file), or compare with it
+if [[ $update -eq 1 ]]; then
+    mkdir -p "$golden_dir"
+    if [[ $create_thresholds -eq 1 ]]; then
+        cat >"$thresholds" <<'EOF'
+# Golden-image settings and thresholds (read by tests/golden/run_golden.sh and rb_imgdiff)
+size 192x144
+seed 1
+rmse 0.004
+pixel_tol 0.02
+max_fraction 0.002
+EOF
+    fi
+    cp "$render_png" "$golden_png.tmp.$$"
+    mv "$golden_png.tmp.$$" "$golden_png"
+    if [[ $create_thresholds -eq 1 ]]; then
+        echo "$name: golden updated (created $name.txt with the default thresholds)"
+    else
+        echo "$name: golden updated"
+    fi
+    exit 0
+fi
+status=0
+"$imgdiff" --expected "$golden_png" --actual "$render_png" --thresholds "$thresholds" \
+    --name "$name" --report-dir "$out_dir" || status=$?
+exit "$status"
