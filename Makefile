@@ -53,5 +53,16 @@ golden-update: configure
 	  bash tests/golden/run_golden.sh $(BUILD)/rt_ch$$n $$s golden $(BUILD)/golden-report $(BUILD)/tests/rb_imgdiff --update || exit 1; \
 	done
 
+# Benchmarks against POV-Ray and Embree (not a test: CI never gates on timings).
+bench: bench-deps configure
+	cmake -S . -B $(BUILD) >/dev/null
+	cmake --build $(BUILD) -j $(JOBS)
+	bash tests/perf/bench.sh $(BUILD)
+
+# Charts for the chapter pages, into docs/charts/.
+charts: bench-deps configure
+	cmake --build $(BUILD) -j $(JOBS)
+	bash tests/perf/charts.sh $(BUILD)
+
 clean:
 	rm -rf $(BUILD) rt
