@@ -6,7 +6,7 @@
 namespace rb {
 
 namespace {
-void installChapter01(Pipeline& p) {
+void installChapter01(Pipeline& p, Scene&, const RenderContext&) {
     p.surface = shadeHeadlight;
     p.buildAggregate = buildLinearAggregate;
 }

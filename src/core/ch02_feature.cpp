@@ -5,7 +5,7 @@
 namespace rb {
 
 namespace {
-void installChapter02(Pipeline& p) { p.surface = shadePhong; }
+void installChapter02(Pipeline& p, Scene&, const RenderContext&) { p.surface = shadePhong; }
 }  // namespace
 
 Feature chapter02Feature() {

@@ -9,7 +9,7 @@ namespace rb {
 void bindMeshes(LuaBindings& lua);
 
 namespace {
-void installChapter03(Pipeline& p) { p.buildAggregate = buildBVHAggregate; }
+void installChapter03(Pipeline& p, Scene&, const RenderContext&) { p.buildAggregate = buildBVHAggregate; }
 }  // namespace
 
 Feature chapter03Feature() {

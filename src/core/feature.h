@@ -8,7 +8,16 @@
 namespace rb {
 
 struct Pipeline;
+struct RenderContext;
+struct Scene;
 class LuaBindings;
+
+/// A command-line option a feature adds, e.g. {"fresnel", "schlick|exact", "Fresnel formula"}.
+struct FeatureOption {
+    const char* name;   ///< Written --name=value.
+    const char* value;  ///< What the value looks like, for --help.
+    const char* help;   ///< One line for --help.
+};
 
 /// One chapter's module as the core sees it.
 struct Feature {
@@ -18,8 +27,11 @@ struct Feature {
     bool switchable;     ///< False for the core chapters 1–3.
     /// Add the chapter's Lua calls (always, when the chapter is built). May be null.
     void (*bindLua)(LuaBindings& lua);
-    /// Plug the chapter into a render (only when the feature is on). May be null.
-    void (*install)(Pipeline& pipeline);
+    /// Plug the chapter into one render (only when the feature is on). May be null.
+    /// It may adjust the pipeline and the scene's settings.
+    void (*install)(Pipeline& pipeline, Scene& scene, const RenderContext& context);
+    /// Command-line options the chapter adds.
+    std::vector<FeatureOption> options = {};
 };
 
 /// The features compiled into this binary, in chapter order. Each chapter binary defines

@@ -5,8 +5,12 @@
 #include <memory>
 #include <vector>
 
+#include <map>
+#include <string>
+
 #include "core/aggregate.h"
 #include "core/light.h"
+#include "core/medium_stack.h"
 #include "core/sampler.h"
 #include "core/stats.h"
 
@@ -19,38 +23,57 @@ struct Scene {
     std::vector<PointLight> lights;
     Colour ambient{0.0};
     Colour background{0.0};
-    int maxDepth = 5;  ///< Recursion limit for secondary rays (chapters 4–7).
+    int maxDepth = 5;      ///< Recursion limit for secondary rays (chapters 4–7).
+    int lightSamples = 0;  ///< Samples per axis for every area light (0: each light's own).
 };
 
 class Integrator;
 
 /// What a shading routine may use: the scene, the integrator (to trace more rays), this
-/// sample's random stream, this thread's counters and the recursion depth.
+/// sample's random stream, this thread's counters, the recursion depth and the media the
+/// ray travels through.
 struct ShadeContext {
     const Scene& scene;
     const Integrator& integrator;
     Sampler& sampler;
     RayCounters& counters;
-    int depth = 0;
+    int depth;
+    const MediumStack& media;
 };
 
 /// The local shading model: chapter 1 has a headlight; chapter 2 replaces it with Phong.
 using SurfaceShader = Colour (*)(const ShadeContext& ctx, const Ray& ray, const Hit& hit);
 
-/// A secondary-ray term added to the local shading (mirror, transmission, glossy lobe...).
-/// This is the extension point chapters 4–7 plug into.
+/// A secondary-ray term (mirror reflection, transmission ...): the extension point chapters
+/// 4 and 5 plug into. Terms run in chapter order, each turning the colour so far into a new one.
 class ShadingTerm {
 public:
     virtual ~ShadingTerm() = default;
-    /// The term's contribution at hit, for a ray arriving along ray.d.
-    virtual Colour shade(const ShadeContext& ctx, const Ray& ray, const Hit& hit) const = 0;
+    /// The colour at hit after this term, given the colour so far.
+    virtual Colour apply(const ShadeContext& ctx, const Ray& ray, const Hit& hit,
+                         const Colour& colour) const = 0;
+};
+
+/// Spreads a specular direction into a lobe: chapter 7's glossy reflection and translucency.
+/// Reflection and refraction ask it for directions when it is installed.
+class LobeSampler {
+public:
+    virtual ~LobeSampler() = default;
+    /// How many directions to average at a surface of material m (0: keep the sharp one).
+    virtual int sampleCount(const Material& m) const = 0;
+    /// Draw a direction around the unit specular direction `axis`. Returns false when it falls
+    /// on the wrong side of the surface (normal n, pointing to the side the ray must leave
+    /// towards); such a sample carries no light.
+    virtual bool sample(const Material& m, const Vec3& axis, const Vec3& n, Sampler& sampler,
+                        Vec3& direction) const = 0;
 };
 
 /// How a render is put together; each enabled feature adjusts it.
 struct Pipeline {
-    SurfaceShader surface = nullptr;           ///< Local shading (set by chapter 1, then 2).
-    AggregateBuilder buildAggregate = nullptr; ///< Acceleration (set by chapter 1, then 3).
+    SurfaceShader surface = nullptr;            ///< Local shading (chapter 1, then 2).
+    AggregateBuilder buildAggregate = nullptr;  ///< Acceleration (chapter 1, then 3).
     std::vector<std::shared_ptr<const ShadingTerm>> terms;  ///< Secondary terms, in order.
+    std::shared_ptr<const LobeSampler> lobe;    ///< Glossy lobes (chapter 7), or null.
 };
 
 /// Traces rays through a scene with a pipeline.
@@ -59,9 +82,12 @@ public:
     Integrator(const Scene& scene, const Pipeline& pipeline) : scene_(scene), pipeline_(pipeline) {}
     /// Radiance arriving along a ray (reversed): the shaded colour of the first surface, or
     /// the background.
-    Colour trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth) const;
-    /// True when the segment from p (t=0) to p + d (t=1) is blocked.
+    Colour trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth,
+                 const MediumStack& media = MediumStack{}) const;
+    /// True when something lies along the ray with t in (0, tMax): the shadow query.
     bool occluded(const Ray& ray, double tMax, RayCounters& counters) const;
+    /// The pipeline this integrator runs.
+    const Pipeline& pipeline() const { return pipeline_; }
 
 private:
     const Scene& scene_;

@@ -77,7 +77,42 @@ int grNhBox(lua_State* L) {
 }
 // [lua-primitives]
 
+// [lua-material-table]
+/// raybook's own form: gr.material{kd = {..}, ks = {..}, shininess = n, reflect = r, ...}.
+/// Every chapter's parameters are named fields; a field no built chapter reads is an error.
+int materialFromTable(lua_State* L) {
+    auto m = std::make_shared<Material>();
+    m->kd = Colour(0.0);
+    m->ks = Colour(0.0);
+    m->shininess = 1.0;
+    lua_pushnil(L);
+    while (lua_next(L, 1) != 0) {
+        // The key is at -2, the value at -1.
+        if (lua_type(L, -2) != LUA_TSTRING) {
+            lua_pop(L, 2);
+            throw InputError("gr.material: the table's keys must be field names");
+        }
+        const std::string key = lua_tostring(L, -2);
+        const int top = lua_gettop(L);
+        if (key == "kd" || key == "ks") {
+            const Vec3 c = checkVec3(L, top, "gr.material", key.c_str());
+            (key == "kd" ? m->kd : m->ks) = c;
+        } else if (lua_type(L, -1) == LUA_TBOOLEAN) {
+            setMaterialParam(L, *m, key, lua_toboolean(L, -1) ? 1.0 : 0.0, "gr.material");
+        } else {
+            const double v = checkNumber(L, top, "gr.material", key.c_str());
+            if (key == "shininess") m->shininess = v;
+            else setMaterialParam(L, *m, key, v, "gr.material");
+        }
+        lua_pop(L, 1);
+    }
+    pushMaterial(L, m);
+    return 1;
+}
+// [lua-material-table]
+
 int grMaterial(lua_State* L) {
+    if (lua_gettop(L) == 1 && lua_type(L, 1) == LUA_TTABLE) return materialFromTable(L);
     if (lua_gettop(L) > 3)
         throw InputError(
             "gr.material: more than 3 arguments is seed 000's dialect (\"reflect\", "
@@ -89,6 +124,24 @@ int grMaterial(lua_State* L) {
     m->shininess = checkNumber(L, 3, "gr.material", "shininess");
     pushMaterial(L, m);
     return 1;
+}
+
+int grOption(lua_State* L) {
+    // gr.option(name, value): a scene-wide setting (max_depth, light_samples, ...) for the
+    // renders requested after it.
+    checkArgCount(L, "gr.option", 2, 2, "(name, value)");
+    const std::string name = checkString(L, 1, "gr.option", "name");
+    SceneBuilder& builder = sceneBuilder(L);
+    if (!builder.optionNames.count(name)) {
+        std::string title;
+        const int chapter = chapterProviding(name, title);
+        if (chapter)
+            throw InputError("gr.option: '" + name + "' needs chapter " + std::to_string(chapter) +
+                             " (" + title + "), which this build does not have");
+        throw InputError("gr.option: unknown option '" + name + "'");
+    }
+    builder.sceneOptions[name] = checkNumber(L, 2, "gr.option", "value");
+    return 0;
 }
 
 // ---- Lights -------------------------------------------------------------------------------
@@ -212,6 +265,7 @@ int grRender(lua_State* L) {
                   " [, aa, ss, dist, {aperture, focal, dof}])");
     LoadedRender r;
     RenderJob& job = r.job;
+    job.options = sceneBuilder(L).sceneOptions;
     lua_Debug ar;
     if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar))
         job.where = std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
@@ -293,6 +347,8 @@ void bindA4(LuaBindings& lua) {
     lua.function("material", luaGuard<grMaterial>);
     lua.function("light", luaGuard<grLight>);
     lua.function("render", luaGuard<grRender>);
+    lua.function("option", luaGuard<grOption>);
+    lua.option("max_depth", 4);
     lua.nodeMethod("add_child", luaGuard<nodeAddChild>);
     lua.nodeMethod("set_material", luaGuard<nodeSetMaterial>);
     lua.nodeMethod("scale", luaGuard<nodeScale>);

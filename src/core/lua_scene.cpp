@@ -163,6 +163,32 @@ void LuaBindings::materialMethod(const char* name, lua_CFunction f) {
     lua_pop(L_, 2);
 }
 
+void LuaBindings::materialField(const char* name, int chapter) {
+    sceneBuilder(L_).materialFields[name] = chapter;
+}
+
+void LuaBindings::option(const char* name, int chapter) { sceneBuilder(L_).optionNames[name] = chapter; }
+
+void setMaterialParam(lua_State* L, Material& m, const std::string& name, double value,
+                      const char* call) {
+    const SceneBuilder& builder = sceneBuilder(L);
+    if (!builder.materialFields.count(name)) {
+        std::string title;
+        const int chapter = chapterProviding(name, title);
+        if (chapter)
+            throw InputError(std::string(call) + ": material field '" + name + "' needs chapter " +
+                             std::to_string(chapter) + " (" + title +
+                             "), which this build does not have");
+        std::string known = "kd, ks, shininess";
+        for (const auto& [field, ch] : builder.materialFields) known += ", " + field;
+        throw InputError(std::string(call) + ": unknown material field '" + name +
+                         "' (known: " + known + ")");
+    }
+    if (!std::isfinite(value))
+        throw InputError(std::string(call) + ": material field '" + name + "' must be finite");
+    m.params[name] = value;
+}
+
 // ---- The sandbox --------------------------------------------------------------------------
 
 namespace {

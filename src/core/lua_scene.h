@@ -40,6 +40,9 @@ struct SceneBuilder {
     std::map<std::string, std::shared_ptr<const Shape>> meshCache;  ///< One load per file.
     std::shared_ptr<const Shape> unitSphere, unitCube;              ///< Shared by all nodes.
     Material defaultMaterial{Colour(0.5), Colour(0.0), 1.0, {}};  ///< For nodes without one.
+    std::map<std::string, int> materialFields;  ///< Named material parameters, by chapter.
+    std::map<std::string, int> optionNames;     ///< gr.option names, by chapter.
+    std::map<std::string, double> sceneOptions;  ///< gr.option values set so far.
     long long instructions = 0;
     size_t bytesInUse = 0;
 };
@@ -54,6 +57,10 @@ public:
     void nodeMethod(const char* name, lua_CFunction f);
     /// Define or replace a method of materials (m:<name>(...)).
     void materialMethod(const char* name, lua_CFunction f);
+    /// Accept a numeric material parameter in gr.material{...} (chapter: who reads it).
+    void materialField(const char* name, int chapter);
+    /// Accept a scene option gr.option(name, value) (chapter: who reads it).
+    void option(const char* name, int chapter);
     lua_State* state() const { return L_; }
 
 private:
@@ -116,6 +123,11 @@ std::string resolveScenePath(const SceneBuilder& builder, const std::string& nam
 void pushLight(lua_State* L, const PointLight& light);
 /// The table of lights at argument arg: at least one, each made by gr.light.
 std::vector<PointLight> checkLights(lua_State* L, int arg);
+
+/// Set a named material parameter after checking that a built chapter reads it; `value`
+/// must be finite. Throws InputError naming the chapter that would read an unknown name.
+void setMaterialParam(lua_State* L, Material& m, const std::string& name, double value,
+                      const char* call);
 
 /// Chapter 1's Lua calls: the A4 language except gr.mesh.
 void bindA4(LuaBindings& lua);

@@ -10,6 +10,7 @@
 #include "core/lua_scene.h"
 #include "core/options.h"
 #include "core/render.h"
+#include "core/render_context.h"
 
 namespace rb {
 namespace {
@@ -41,16 +42,17 @@ void printFeatures(const FeatureSet& set) {
 }
 
 int run(int argc, char** argv) {
-    const CommandLine cl = parseCommandLine(argc, argv);
+    const std::vector<Feature> built = builtFeatures();
+    const CommandLine cl = parseCommandLine(argc, argv, built);
     if (cl.help) {
-        std::cout << usage();
+        std::cout << usage(built);
         return 0;
     }
     if (cl.version) {
-        std::cout << "raybook rt, chapters 1-" << builtFeatures().back().chapter << "\n";
+        std::cout << "raybook rt, chapters 1-" << built.back().chapter << "\n";
         return 0;
     }
-    const FeatureSet features(builtFeatures(), cl.features);
+    const FeatureSet features(built, cl.features);
     if (cl.listFeatures) {
         printFeatures(features);
         return 0;
@@ -65,10 +67,6 @@ int run(int argc, char** argv) {
     std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions);
     const double luaSeconds = since(t0);
 
-    Pipeline pipeline;
-    for (const Feature& f : features.on())
-        if (f.install) f.install(pipeline);
-
     for (size_t k = 0; k < renders.size(); ++k) {
         LoadedRender& r = renders[k];
         RenderJob& job = r.job;
@@ -79,14 +77,21 @@ int run(int argc, char** argv) {
         checkImageSize(job.width, job.height, job.where + ": ");
         const std::string output = outputPath(cl, job, k, renders.size());
 
-        // Build the world: instances, the aggregate over them, and the lights.
+        // Build the world: instances, lights, settings; let each feature plug itself in;
+        // then build the aggregate over the instances.
         t0 = Clock::now();
         Scene scene;
         scene.instances = std::move(r.instances);
-        scene.aggregate = pipeline.buildAggregate(scene.instances);
         scene.lights = job.lights;
         scene.ambient = job.ambient;
+        scene.maxDepth = static_cast<int>(job.options.count("max_depth") ? job.options.at("max_depth")
+                                                                         : scene.maxDepth);
         if (cl.maxDepth >= 0) scene.maxDepth = cl.maxDepth;
+        Pipeline pipeline;
+        const RenderContext context{scene.instances, job, cl.featureOptions};
+        for (const Feature& f : features.on())
+            if (f.install) f.install(pipeline, scene, context);
+        scene.aggregate = pipeline.buildAggregate(scene.instances);
         const double buildSeconds = since(t0);
 
         const PinholeCamera camera(job.camera, job.width, job.height);

@@ -1,5 +1,6 @@
 #include "core/options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 
@@ -22,7 +23,15 @@ long long parseInteger(const std::string& option, const std::string& text, long 
 
 }  // namespace
 
-CommandLine parseCommandLine(int argc, const char* const* argv) {
+/// The feature that declares option `name`, or null.
+const FeatureOption* findFeatureOption(const std::vector<Feature>& built, const std::string& name) {
+    for (const Feature& f : built)
+        for (const FeatureOption& o : f.options)
+            if (name == std::string("--") + o.name) return &o;
+    return nullptr;
+}
+
+CommandLine parseCommandLine(int argc, const char* const* argv, const std::vector<Feature>& built) {
     CommandLine cl;
     bool haveThreadsPositional = false;
     for (int i = 1; i < argc; ++i) {
@@ -62,6 +71,7 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
         else if (name == "--quiet" || name == "-q") cl.quiet = true;
         else if (name == "--legacy") cl.legacy = true;
         else if (name == "--unsafe-lua") cl.unsafeLua = true;
+        else if (findFeatureOption(built, name)) cl.featureOptions[name.substr(2)] = next();
         else if (!arg.empty() && arg[0] == '-')
             throw InputError("unknown option '" + arg + "' (see ./rt --help)");
         else if (cl.scene.empty()) cl.scene = arg;
@@ -76,8 +86,8 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
     return cl;
 }
 
-std::string usage() {
-    return R"(usage: ./rt [options] scene.lua [threads]
+std::string usage(const std::vector<Feature>& built) {
+    std::string text = R"(usage: ./rt [options] scene.lua [threads]
 
 Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --features=LIST    switch chapter modules: all, name, -name (e.g. all,-glossy)
@@ -94,6 +104,13 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --unsafe-lua       let the scene use os and io
   --help, --version
 )";
+    for (const Feature& f : built)
+        for (const FeatureOption& o : f.options) {
+            std::string left = std::string("  --") + o.name + "=" + o.value;
+            left.resize(std::max<size_t>(left.size() + 1, 21), ' ');
+            text += left + o.help + " (chapter " + std::to_string(f.chapter) + ")\n";
+        }
+    return text;
 }
 
 }  // namespace rb

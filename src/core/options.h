@@ -3,7 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
+
+#include "core/feature.h"
 
 namespace rb {
 
@@ -24,12 +28,15 @@ struct CommandLine {
     bool unsafeLua = false;          ///< --unsafe-lua: allow os and io.
     bool help = false;               ///< --help.
     bool version = false;            ///< --version.
+    std::map<std::string, std::string> featureOptions;  ///< --name=value added by chapters.
 };
 
-/// Parse argv. Throws InputError for an unknown option or a bad value.
-CommandLine parseCommandLine(int argc, const char* const* argv);
+/// Parse argv. Options that built features add (FeatureOption) land in featureOptions.
+/// Throws InputError for an unknown option or a bad value.
+CommandLine parseCommandLine(int argc, const char* const* argv,
+                             const std::vector<Feature>& built = {});
 
-/// The --help text.
-std::string usage();
+/// The --help text, with the options of the built features.
+std::string usage(const std::vector<Feature>& built = {});
 
 }  // namespace rb

@@ -14,6 +14,27 @@ Colour phongBrdfTerm(const Material& m, const Vec3& n, const Vec3& l, const Vec3
 }
 // [phong-term]
 
+namespace {
+
+/// Light arriving from one point `from` of a light, through the shadow test, times the Phong
+/// term. `emission` scales the light's intensity (1 for a point light).
+Colour lightFromPoint(const ShadeContext& ctx, const Hit& hit, const Material& m, const Vec3& n,
+                      const Vec3& ng, const Vec3& v, const PointLight& light, const Vec3& from,
+                      double emission) {
+    const Vec3 toLight = from - hit.p;
+    const double r = glm::length(toLight);
+    if (!(r > 0.0) || emission <= 0.0) return Colour(0.0);
+    const Vec3 l = toLight / r;
+    if (glm::dot(n, l) <= 0.0) return Colour(0.0);  // light behind the shading normal
+    // Cast a shadow ray from the (offset) hit point to the light: t in (0, 1).
+    const Vec3 origin = offsetRayOrigin(hit.p, ng, l);
+    if (ctx.integrator.occluded(Ray{origin, from - origin}, 1.0, ctx.counters))
+        return Colour(0.0);
+    return emission * light.intensityAt(r) * phongBrdfTerm(m, n, l, v);
+}
+
+}  // namespace
+
 // [phong-shade]
 Colour shadePhong(const ShadeContext& ctx, const Ray& ray, const Hit& hit) {
     static const Material kBlack{};
@@ -23,16 +44,22 @@ Colour shadePhong(const ShadeContext& ctx, const Ray& ray, const Hit& hit) {
     const Vec3 ng = faceForward(hit.ng, v);
     Colour colour = m.kd * ctx.scene.ambient;
     for (const PointLight& light : ctx.scene.lights) {
-        // Cast a shadow ray from the (offset) hit point towards the light: t in (0, 1).
-        const Vec3 toLight = light.position - hit.p;
-        const double r = glm::length(toLight);
-        if (!(r > 0.0)) continue;
-        const Vec3 l = toLight / r;
-        if (glm::dot(ng, l) <= 0.0 && glm::dot(n, l) <= 0.0) continue;  // light behind surface
-        const Vec3 origin = offsetRayOrigin(hit.p, ng, l);
-        if (ctx.integrator.occluded(Ray{origin, light.position - origin}, 1.0, ctx.counters))
+        if (!light.shape) {
+            colour += lightFromPoint(ctx, hit, m, n, ng, v, light, light.position, 1.0);
             continue;
-        colour += light.intensityAt(r) * phongBrdfTerm(m, n, l, v);
+        }
+        // A light with an area (chapter 6): average n × n stratified points on it, each
+        // shaded in full, so the highlight takes the light's shape.
+        const int perAxis = ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples
+                                                        : light.shape->samplesPerAxis();
+        Colour sum(0.0);
+        for (int k = 0; k < perAxis * perAxis; ++k) {
+            double emission = 1.0;
+            const Vec3 from = light.shape->samplePoint(light.position, hit.p, k, perAxis,
+                                                       ctx.sampler.next2D(), emission);
+            sum += lightFromPoint(ctx, hit, m, n, ng, v, light, from, emission);
+        }
+        colour += sum / static_cast<double>(perAxis * perAxis);
     }
     return colour;
 }

@@ -13,6 +13,7 @@
 #   rb_add_golden_test(TEST_NAME RT_TARGET SCENE_PATH [rt args...])
 #       a ctest test (label "golden") that renders SCENE_PATH (relative to the repository root)
 #       with RT_TARGET and compares it with golden/NAME.png; reports go to build/golden-report/
+#       under the test's name, so several tests of one scene can run in parallel
 
 set(RB_GOLDEN_INCLUDE_DIR ${CMAKE_CURRENT_LIST_DIR})
 set(RB_GOLDEN_COMPARE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/image_compare.cpp)
@@ -31,6 +32,6 @@ function(rb_add_golden_test TEST_NAME RT_TARGET SCENE_PATH)
     add_test(NAME ${TEST_NAME}
              COMMAND bash ${RB_GOLDEN_RUNNER} $<TARGET_FILE:${RT_TARGET}> ${SCENE_PATH}
                      ${CMAKE_SOURCE_DIR}/golden ${CMAKE_BINARY_DIR}/golden-report
-                     $<TARGET_FILE:rb_imgdiff> ${ARGN})
+                     $<TARGET_FILE:rb_imgdiff> --report-name=${TEST_NAME} ${ARGN})
     set_tests_properties(${TEST_NAME} PROPERTIES LABELS golden)
 endfunction()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # run_golden.sh: render one scene and compare it with its golden image (or update the golden).
 #
-# usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR IMGDIFF [--update] [rt args...]
+# usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR IMGDIFF [--update]
+#                      [--report-name=LABEL] [rt args...]
 #
 #   NAME      the scene's file name without .lua
 #   settings  GOLDEN_DIR/NAME.txt gives size, seed and args (see image_compare.h); with --update
@@ -11,12 +12,16 @@
 #             of GOLDEN_DIR), so SCENE and the paths inside it are relative to the repository
 #   compare   IMGDIFF against GOLDEN_DIR/NAME.png; its report goes to OUT_DIR
 #   update    with --update, the render is copied to GOLDEN_DIR/NAME.png instead
+#   label     --report-name=LABEL (default NAME) names the render, the report files and the
+#             verdict line, so two tests of one scene (say two chapter binaries) can run in
+#             parallel without overwriting each other's files
 #
 # Prints one line. Exit status: 0 pass (or updated), 1 fail, 2 usage or missing input.
 set -euo pipefail
 
 usage() {
-    echo "usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR IMGDIFF [--update] [rt args...]" >&2
+    echo "usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR IMGDIFF [--update]" \
+        "[--report-name=LABEL] [rt args...]" >&2
     exit 2
 }
 
@@ -28,7 +33,8 @@ absolute() {
     esac
 }
 
-# Parse the arguments; --update may appear anywhere after the five positional ones
+# Parse the arguments; --update and --report-name may appear anywhere after the five positional
+# ones; everything else goes to rt
 [[ $# -ge 5 ]] || usage
 rt=$(absolute "$1")
 scene=$2
@@ -37,15 +43,21 @@ out_dir=$(absolute "$4")
 imgdiff=$(absolute "$5")
 shift 5
 update=0
+label=
 rt_extra=()
 for arg in "$@"; do
-    if [[ $arg == --update ]]; then update=1; else rt_extra+=("$arg"); fi
+    case "$arg" in
+        --update) update=1 ;;
+        --report-name=*) label=${arg#--report-name=} ;;
+        *) rt_extra+=("$arg") ;;
+    esac
 done
 name=$(basename "$scene" .lua)
+label=${label:-$name}
 repo_root=$(dirname "$golden_dir")
 thresholds=$golden_dir/$name.txt
 golden_png=$golden_dir/$name.png
-render_png=$out_dir/$name.png
+render_png=$out_dir/$label.png
 
 # SCENE is relative to the repository root; accept a path relative to the caller's directory
 # too, when only that one exists
@@ -58,7 +70,7 @@ create_thresholds=0
 thresholds_source=$thresholds
 if [[ ! -f $thresholds ]]; then
     if [[ $update -eq 0 ]]; then
-        echo "$name: FAIL: no thresholds file $thresholds; run make golden-update"
+        echo "$label: FAIL: no thresholds file $thresholds; run make golden-update"
         exit 2
     fi
     create_thresholds=1
@@ -92,12 +104,12 @@ status=0
         ${file_args[@]+"${file_args[@]}"} ${rt_extra[@]+"${rt_extra[@]}"} "$scene"
 ) 2>"$stderr_file" >/dev/null || status=$?
 if [[ $status -ne 0 ]]; then
-    echo "$name: FAIL: render failed (exit $status)"
+    echo "$label: FAIL: render failed (exit $status)"
     cat "$stderr_file"
     exit 1
 fi
 if [[ ! -f $render_png ]]; then
-    echo "$name: FAIL: render exited 0 but wrote no image $render_png"
+    echo "$label: FAIL: render exited 0 but wrote no image $render_png"
     cat "$stderr_file"
     exit 1
 fi
@@ -126,5 +138,5 @@ EOF
 fi
 status=0
 "$imgdiff" --expected "$golden_png" --actual "$render_png" --thresholds "$thresholds" \
-    --name "$name" --report-dir "$out_dir" || status=$?
+    --name "$label" --report-dir "$out_dir" || status=$?
 exit "$status"

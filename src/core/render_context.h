@@ -1,0 +1,39 @@
+/// \file
+/// RenderContext: what a feature sees when it plugs itself into one render.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/instance.h"
+#include "core/scene_graph.h"
+
+namespace rb {
+
+/// One render as features see it when they install themselves: the instances (to check which
+/// materials use a feature), the scene's options and the command line's feature options.
+struct RenderContext {
+    const std::vector<Instance>& instances;
+    const RenderJob& job;
+    const std::map<std::string, std::string>& commandLine;  ///< --name=value of features.
+
+    /// True when some instance's material sets parameter `name` to a non-zero value.
+    bool anyMaterialUses(const std::string& name) const {
+        for (const Instance& i : instances)
+            if (i.material && i.material->param(name) != 0.0) return true;
+        return false;
+    }
+    /// A command-line feature option as text, or fallback.
+    std::string cliOption(const std::string& name, const std::string& fallback = "") const {
+        auto it = commandLine.find(name);
+        return it == commandLine.end() ? fallback : it->second;
+    }
+    /// A scene option (gr.option or seed 001's gr.render extras), or fallback.
+    double sceneOption(const std::string& name, double fallback) const {
+        auto it = job.options.find(name);
+        return it == job.options.end() ? fallback : it->second;
+    }
+};
+
+}  // namespace rb
