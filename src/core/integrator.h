@@ -25,6 +25,7 @@ struct Scene {
     Colour background{0.0};
     int maxDepth = 5;      ///< Recursion limit for secondary rays (chapters 4–7).
     int lightSamples = 0;  ///< Samples per axis for every area light (0: each light's own).
+    bool sampleAreaLights = false;  ///< Chapter 6 on: lights with a shape are sampled.
 };
 
 class Integrator;

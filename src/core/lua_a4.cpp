@@ -80,7 +80,9 @@ int grNhBox(lua_State* L) {
 // [lua-material-table]
 /// raybook's own form: gr.material{kd = {..}, ks = {..}, shininess = n, reflect = r, ...}.
 /// Every chapter's parameters are named fields; a field no built chapter reads is an error.
-int materialFromTable(lua_State* L) {
+}  // namespace
+
+int materialTable(lua_State* L) {
     auto m = std::make_shared<Material>();
     m->kd = Colour(0.0);
     m->ks = Colour(0.0);
@@ -111,8 +113,7 @@ int materialFromTable(lua_State* L) {
 }
 // [lua-material-table]
 
-int grMaterial(lua_State* L) {
-    if (lua_gettop(L) == 1 && lua_type(L, 1) == LUA_TTABLE) return materialFromTable(L);
+int a4Material(lua_State* L) {
     if (lua_gettop(L) > 3)
         throw InputError(
             "gr.material: more than 3 arguments is seed 000's dialect (\"reflect\", "
@@ -124,6 +125,13 @@ int grMaterial(lua_State* L) {
     m->shininess = checkNumber(L, 3, "gr.material", "shininess");
     pushMaterial(L, m);
     return 1;
+}
+
+namespace {
+
+int grMaterial(lua_State* L) {
+    if (lua_gettop(L) == 1 && lua_type(L, 1) == LUA_TTABLE) return materialTable(L);
+    return a4Material(L);
 }
 
 int grOption(lua_State* L) {

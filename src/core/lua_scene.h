@@ -129,6 +129,11 @@ std::vector<PointLight> checkLights(lua_State* L, int arg);
 void setMaterialParam(lua_State* L, Material& m, const std::string& name, double value,
                       const char* call);
 
+/// gr.material{...}: raybook's named-field form (a call body; may throw).
+int materialTable(lua_State* L);
+/// gr.material(kd, ks, shininess): A4's form (a call body; may throw).
+int a4Material(lua_State* L);
+
 /// Chapter 1's Lua calls: the A4 language except gr.mesh.
 void bindA4(LuaBindings& lua);
 

@@ -44,7 +44,7 @@ Colour shadePhong(const ShadeContext& ctx, const Ray& ray, const Hit& hit) {
     const Vec3 ng = faceForward(hit.ng, v);
     Colour colour = m.kd * ctx.scene.ambient;
     for (const PointLight& light : ctx.scene.lights) {
-        if (!light.shape) {
+        if (!light.shape || !ctx.scene.sampleAreaLights) {
             colour += lightFromPoint(ctx, hit, m, n, ng, v, light, light.position, 1.0);
             continue;
         }

@@ -1,0 +1,97 @@
+// Chapter 4's Lua: the material field `reflect`, and the seeds' material calls that carry a
+// reflectivity: seed 000's gr.material(kd, ks, shin, "reflect", r, ...), seed 001's
+// gr.phongMat and seed 002's gr.fancy_material. Parameters of later chapters (ior,
+// transparency, glossiness) are set through setMaterialParam, which names the chapter a
+// build lacks.
+#include "core/error.h"
+#include "core/lua_scene.h"
+#include "reflection/reflection.h"
+
+namespace rb {
+
+namespace {
+
+/// kd, ks, shininess from arguments 1–3, as A4's gr.material reads them.
+std::shared_ptr<Material> phongBase(lua_State* L, const char* call) {
+    auto m = std::make_shared<Material>();
+    m->kd = checkVec3(L, 1, call, "kd");
+    m->ks = checkVec3(L, 2, call, "ks");
+    m->shininess = checkNumber(L, 3, call, "shininess");
+    return m;
+}
+
+/// Set a dialect parameter only when it is non-zero, so a chapter-4 build accepts seed
+/// scenes whose unused parameters are 0.
+void setIfNonZero(lua_State* L, Material& m, const char* name, double value, const char* call) {
+    if (value != 0.0) setMaterialParam(L, m, name, value, call);
+}
+
+// [lua-seed000-material]
+/// gr.material with seed 000's keyword tail: "reflect", r | "refract", ior |
+/// "glossy", fuzz, then optionally "reflect", r and "refract", ior.
+int grMaterialSeed000(lua_State* L) {
+    const int n = lua_gettop(L);
+    if (n == 1 && lua_type(L, 1) == LUA_TTABLE) return materialTable(L);
+    if (n <= 3) return a4Material(L);
+    auto m = phongBase(L, "gr.material");
+    for (int arg = 4; arg <= n; arg += 2) {
+        const std::string key = checkString(L, arg, "gr.material", "keyword");
+        if (arg + 1 > n)
+            throw InputError("gr.material: keyword \"" + key + "\" needs a number after it");
+        const double v = checkNumber(L, arg + 1, "gr.material", key.c_str());
+        if (key == "reflect") setMaterialParam(L, *m, "reflect", v, "gr.material");
+        else if (key == "refract") {
+            // Seed 000's refracting materials are clear: all light is transmitted.
+            setMaterialParam(L, *m, "ior", v, "gr.material");
+            setMaterialParam(L, *m, "transparency", 1.0, "gr.material");
+        } else if (key == "glossy") setIfNonZero(L, *m, "glossiness", v, "gr.material");
+        else
+            throw InputError("gr.material: unknown keyword \"" + key +
+                             "\" (expected \"reflect\", \"refract\" or \"glossy\")");
+    }
+    pushMaterial(L, m);
+    return 1;
+}
+// [lua-seed000-material]
+
+int grPhongMat(lua_State* L) {
+    // Seed 001: gr.phongMat(kd, ks, shininess, reflectivity, glossiness).
+    checkArgCount(L, "gr.phongMat", 5, 5, "(kd, ks, shininess, reflectivity, glossiness)");
+    auto m = phongBase(L, "gr.phongMat");
+    setIfNonZero(L, *m, "reflect", checkNumber(L, 4, "gr.phongMat", "reflectivity"),
+                 "gr.phongMat");
+    setIfNonZero(L, *m, "glossiness", checkNumber(L, 5, "gr.phongMat", "glossiness"),
+                 "gr.phongMat");
+    pushMaterial(L, m);
+    return 1;
+}
+
+int grFancyMaterial(lua_State* L) {
+    // Seed 002: gr.fancy_material(kd, ks, shininess, reflectivity, ior, transparency,
+    // glossiness).
+    const char* call = "gr.fancy_material";
+    checkArgCount(L, call, 7, 7,
+                  "(kd, ks, shininess, reflectivity, ior, transparency, glossiness)");
+    auto m = phongBase(L, call);
+    setIfNonZero(L, *m, "reflect", checkNumber(L, 4, call, "reflectivity"), call);
+    const double ior = checkNumber(L, 5, call, "ior");
+    const double transparency = checkNumber(L, 6, call, "transparency");
+    if (transparency != 0.0) {
+        setMaterialParam(L, *m, "ior", ior, call);
+        setMaterialParam(L, *m, "transparency", transparency, call);
+    }
+    setIfNonZero(L, *m, "glossiness", checkNumber(L, 7, call, "glossiness"), call);
+    pushMaterial(L, m);
+    return 1;
+}
+
+}  // namespace
+
+void bindReflection(LuaBindings& lua) {
+    lua.materialField("reflect", 4);
+    lua.function("material", luaGuard<grMaterialSeed000>);
+    lua.function("phongMat", luaGuard<grPhongMat>);
+    lua.function("fancy_material", luaGuard<grFancyMaterial>);
+}
+
+}  // namespace rb
