@@ -56,7 +56,8 @@ struct RayInverse {
 
 // [slab-test]
 /// The slab test: does the ray enter the box for some t in (0, tMax)? Sets tEntry when it does.
-inline bool intersectBox(const AABB& b, const RayInverse& ri, double tMax, double& tEntry) {
+[[gnu::always_inline]] inline bool intersectBox(const AABB& b, const RayInverse& ri, double tMax,
+                                                double& tEntry) {
     // Intersect the three pairs of parallel planes, near plane first by the direction's sign.
     double t0 = 0.0, t1 = tMax;
     for (int axis = 0; axis < 3; ++axis) {

@@ -1,16 +1,26 @@
 #include "core/bvh.h"
 
 #include <algorithm>
+#include <array>
 
 namespace rb {
 
 namespace {
 
+/// The most bins a build may use (fixed arrays keep the build free of allocations).
+constexpr int kMaxBins = 32;
+
+/// A primitive during the build: its bounds, centroid and original index. The build
+/// partitions an array of these in place, so every pass reads memory in order.
+struct PrimRef {
+    AABB box;
+    Vec3 centroid;
+    std::uint32_t index;
+};
+
 /// What the recursive build works on.
 struct BuildState {
-    const std::vector<AABB>& bounds;
-    std::vector<Vec3> centroids;
-    std::vector<std::uint32_t>& order;
+    std::vector<PrimRef> refs;
     std::vector<BVHNode>& nodes;
     const BVHBuildOptions& options;
     int depth = 0;
@@ -19,105 +29,127 @@ struct BuildState {
 /// The best SAH split found for a range.
 struct Split {
     int axis = -1;
-    double position = 0.0;
+    int bin = 0;  ///< Primitives in bins [0, bin) go left.
     double cost = std::numeric_limits<double>::infinity();
 };
 
 // [binned-sah]
-/// Find the cheapest binned SAH split of order[begin, end) over all three axes.
+/// Find the cheapest binned SAH split of refs[begin, end) over all three axes.
 Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end,
-                const AABB& nodeBounds) {
-    // Bin the primitives by centroid, within the bounds of the centroids.
-    AABB centroidBounds;
-    for (std::uint32_t i = begin; i < end; ++i) centroidBounds.extend(s.centroids[s.order[i]]);
-    Split best;
-    const int nBins = s.options.bins;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double lo = centroidBounds.lo[axis], hi = centroidBounds.hi[axis];
-        if (!(hi > lo)) continue;  // all centroids on one plane: no split on this axis
-        const double scale = nBins / (hi - lo);
-        std::vector<AABB> binBounds(nBins);
-        std::vector<std::uint32_t> binCount(nBins, 0);
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const std::uint32_t p = s.order[i];
-            const int b = std::min(nBins - 1, static_cast<int>((s.centroids[p][axis] - lo) * scale));
-            binBounds[b].extend(s.bounds[p]);
-            ++binCount[b];
+                const AABB& nodeBounds, const AABB& centroidBounds, int nBins) {
+    // Drop every primitive into a bin per axis by its centroid, in one pass.
+    std::array<std::array<AABB, kMaxBins>, 3> binBounds;
+    std::array<std::array<std::uint32_t, kMaxBins>, 3> binCount;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int b = 0; b < nBins; ++b) {
+            binBounds[axis][b] = AABB();
+            binCount[axis][b] = 0;
         }
-        // Sweep from the right to get the area and count of every suffix of bins.
-        std::vector<double> rightArea(nBins);
-        std::vector<std::uint32_t> rightCount(nBins);
+    Vec3 scale;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double extent = centroidBounds.hi[axis] - centroidBounds.lo[axis];
+        scale[axis] = extent > 0.0 ? nBins / extent : 0.0;
+    }
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const PrimRef& r = s.refs[i];
+        for (int axis = 0; axis < 3; ++axis) {
+            const int b = std::min(
+                nBins - 1, static_cast<int>((r.centroid[axis] - centroidBounds.lo[axis]) *
+                                            scale[axis]));
+            binBounds[axis][b].extend(r.box);
+            ++binCount[axis][b];
+        }
+    }
+    Split best;
+    const double invArea = 1.0 / std::max(nodeBounds.halfArea(), 1e-300);
+    for (int axis = 0; axis < 3; ++axis) {
+        if (scale[axis] == 0.0) continue;  // all centroids on one plane: no split here
+        // Sweep from the right for the area and count of every suffix of bins.
+        std::array<double, kMaxBins> rightArea;
+        std::array<std::uint32_t, kMaxBins> rightCount;
         AABB acc;
         std::uint32_t count = 0;
         for (int b = nBins - 1; b > 0; --b) {
-            acc.extend(binBounds[b]);
-            count += binCount[b];
+            acc.extend(binBounds[axis][b]);
+            count += binCount[axis][b];
             rightArea[b] = acc.halfArea();
             rightCount[b] = count;
         }
-        // Sweep from the left; the cost of splitting before bin b is
+        // Sweep from the left; splitting before bin b costs
         // C_trav + (A_L·N_L + A_R·N_R) / A_node.
         acc = AABB();
         count = 0;
-        const double invArea = 1.0 / std::max(nodeBounds.halfArea(), 1e-300);
         for (int b = 1; b < nBins; ++b) {
-            acc.extend(binBounds[b - 1]);
-            count += binCount[b - 1];
+            acc.extend(binBounds[axis][b - 1]);
+            count += binCount[axis][b - 1];
             if (count == 0 || rightCount[b] == 0) continue;
             const double cost = s.options.traversalCost +
                                 (acc.halfArea() * count + rightArea[b] * rightCount[b]) * invArea;
-            if (cost < best.cost) best = Split{axis, lo + b / scale, cost};
+            if (cost < best.cost) best = Split{axis, b, cost};
         }
     }
     return best;
 }
 // [binned-sah]
 
-/// Build the subtree over order[begin, end) and return its node index.
+/// Make node `index` a leaf over refs[begin, end).
+void makeLeaf(BuildState& s, std::uint32_t index, std::uint32_t begin, std::uint32_t end) {
+    s.nodes[index].count = static_cast<std::uint16_t>(end - begin);
+    s.nodes[index].offset = begin;
+}
+
+/// Build the subtree over refs[begin, end) and return its node index.
 std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, int depth) {
     const std::uint32_t index = static_cast<std::uint32_t>(s.nodes.size());
     s.nodes.emplace_back();
     s.depth = std::max(s.depth, depth);
-    AABB bounds;
-    for (std::uint32_t i = begin; i < end; ++i) bounds.extend(s.bounds[s.order[i]]);
+    // Bounds of the primitives and of their centroids, in one pass.
+    AABB bounds, centroidBounds;
+    for (std::uint32_t i = begin; i < end; ++i) {
+        bounds.extend(s.refs[i].box);
+        centroidBounds.extend(s.refs[i].centroid);
+    }
     s.nodes[index].bounds = bounds;
     const std::uint32_t n = end - begin;
-
-    // Split when the SAH says it pays, or when the range is too big for a leaf.
-    Split split = n > 1 ? findSplit(s, begin, end, bounds) : Split{};
-    const double leafCost = static_cast<double>(n);
     const bool mustSplit = n > static_cast<std::uint32_t>(s.options.maxLeafSize);
-    std::uint32_t mid = begin;
-    if (split.axis >= 0 && (mustSplit || split.cost < leafCost)) {
-        auto* first = s.order.data() + begin;
-        auto* last = s.order.data() + end;
-        mid = static_cast<std::uint32_t>(
-            std::partition(first, last, [&](std::uint32_t p) {
-                return s.centroids[p][split.axis] < split.position;
-            }) - s.order.data());
+    if (n == 1) {
+        makeLeaf(s, index, begin, end);
+        return index;
     }
-    // Fall back to a median split when binning could not separate the primitives (all
-    // centroids equal, or every one on one side) but the range is too big for a leaf.
-    if ((mid == begin || mid == end) && mustSplit && n <= 0xFFFF) {
-        if (split.axis < 0 || mid == begin || mid == end) {
-            s.nodes[index].count = static_cast<std::uint16_t>(n);
-            s.nodes[index].offset = begin;
+
+    // Split where the SAH says it pays, or always when the range is too big for a leaf.
+    // Small ranges need fewer candidate planes.
+    const int nBins = std::clamp(std::min<int>(s.options.bins, n), 2, kMaxBins);
+    const Split split = findSplit(s, begin, end, bounds, centroidBounds, nBins);
+    std::uint32_t mid = begin;
+    int axis = split.axis;
+    if (split.axis >= 0 && (mustSplit || split.cost < static_cast<double>(n))) {
+        const double lo = centroidBounds.lo[axis];
+        const double scale = nBins / (centroidBounds.hi[axis] - lo);
+        mid = static_cast<std::uint32_t>(
+            std::partition(s.refs.begin() + begin, s.refs.begin() + end,
+                           [&](const PrimRef& r) {
+                               const int b = std::min(
+                                   nBins - 1, static_cast<int>((r.centroid[axis] - lo) * scale));
+                               return b < split.bin;
+                           }) -
+            s.refs.begin());
+    } else if (!mustSplit || n <= 0xFFFF) {
+        // A leaf is cheaper, or nothing separates the primitives (all centroids equal).
+        if (!mustSplit || split.axis < 0) {
+            makeLeaf(s, index, begin, end);
             return index;
         }
     }
     if (mid == begin || mid == end) {
-        if (n <= 0xFFFF) {
-            s.nodes[index].count = static_cast<std::uint16_t>(n);
-            s.nodes[index].offset = begin;
-            return index;
-        }
-        mid = begin + n / 2;  // too many identical primitives for one leaf: split in half
+        // Too many primitives with one centroid for one leaf: halve the range.
+        mid = begin + n / 2;
+        axis = 0;
     }
-    const std::uint8_t axis = static_cast<std::uint8_t>(std::max(split.axis, 0));
     buildNode(s, begin, mid, depth + 1);
     const std::uint32_t second = buildNode(s, mid, end, depth + 1);
     s.nodes[index].offset = second;
-    s.nodes[index].axis = axis;
+    s.nodes[index].axis = static_cast<std::uint8_t>(axis);
     s.nodes[index].count = 0;
     return index;
 }
@@ -126,15 +158,17 @@ std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, i
 
 void BVH::build(const std::vector<AABB>& primitiveBounds, const BVHBuildOptions& options) {
     nodes_.clear();
-    order_.resize(primitiveBounds.size());
-    for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
+    order_.clear();
     if (primitiveBounds.empty()) return;
     nodes_.reserve(2 * primitiveBounds.size());
-    BuildState s{primitiveBounds, {}, order_, nodes_, options};
-    s.centroids.reserve(primitiveBounds.size());
-    for (const AABB& b : primitiveBounds) s.centroids.push_back(b.centre());
-    buildNode(s, 0, static_cast<std::uint32_t>(primitiveBounds.size()), 0);
+    BuildState s{{}, nodes_, options};
+    s.refs.reserve(primitiveBounds.size());
+    for (std::uint32_t i = 0; i < primitiveBounds.size(); ++i)
+        s.refs.push_back({primitiveBounds[i], primitiveBounds[i].centre(), i});
+    buildNode(s, 0, static_cast<std::uint32_t>(s.refs.size()), 0);
     depth_ = s.depth;
+    order_.reserve(s.refs.size());
+    for (const PrimRef& r : s.refs) order_.push_back(r.index);
     nodes_.shrink_to_fit();
 }
 

@@ -1,5 +1,6 @@
 // Chapter 3's Lua calls: gr.mesh(name, 'file.obj') and the legacy table form
 // gr.mesh(name, {{x,y,z}...}, {{i,j,k,...}...}) with 0-based indices; seed 002's gr.obj_mesh.
+#include <chrono>
 #include <filesystem>
 
 #include "core/error.h"
@@ -18,7 +19,14 @@ std::shared_ptr<const Shape> meshFromFile(lua_State* L, const std::string& file)
     const std::string key = std::filesystem::weakly_canonical(path, ec).string();
     auto it = builder.meshCache.find(key);
     if (it != builder.meshCache.end()) return it->second;
-    auto mesh = std::make_shared<Mesh>(loadObj(path), path);
+    // Time the two phases for --stats.
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    const ObjData data = loadObj(path);
+    const auto t1 = Clock::now();
+    auto mesh = std::make_shared<Mesh>(data, path);
+    builder.times.meshLoad += std::chrono::duration<double>(t1 - t0).count();
+    builder.times.meshBvh += std::chrono::duration<double>(Clock::now() - t1).count();
     builder.meshCache[key] = mesh;
     return mesh;
 }

@@ -1,5 +1,6 @@
 #include "core/lua_scene.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -344,7 +345,8 @@ struct LuaStateCloser {
 
 // [load-scene]
 std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& features,
-                                    const SceneLoadOptions& options) {
+                                    const SceneLoadOptions& options, SceneLoadTimes* times) {
+    const auto start = std::chrono::steady_clock::now();
     SceneBuilder builder;
     builder.scenePath = path;
     builder.sceneDir = fs::path(path).parent_path().string();
@@ -375,6 +377,11 @@ std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& f
         throw InputError(message);
     }
     if (builder.renders.empty()) throw InputError(path + ": the scene never calls gr.render");
+    if (times) {
+        *times = builder.times;
+        times->total =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     return std::move(builder.renders);
 }
 // [load-scene]

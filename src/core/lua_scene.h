@@ -30,6 +30,13 @@ struct LoadedRender {
     std::vector<Instance> instances;            ///< Flattened from the snapshot.
 };
 
+/// Where the time of loading a scene went (for --stats).
+struct SceneLoadTimes {
+    double total = 0.0;     ///< The whole script run, including the two below.
+    double meshLoad = 0.0;  ///< Reading OBJ files.
+    double meshBvh = 0.0;   ///< Building the meshes' BVHs.
+};
+
 /// What the Lua calls build while the script runs. One per load; reached through the
 /// lua_State, so no global state is needed.
 struct SceneBuilder {
@@ -43,6 +50,7 @@ struct SceneBuilder {
     std::map<std::string, int> materialFields;  ///< Named material parameters, by chapter.
     std::map<std::string, int> optionNames;     ///< gr.option names, by chapter.
     std::map<std::string, double> sceneOptions;  ///< gr.option values set so far.
+    SceneLoadTimes times;
     long long instructions = 0;
     size_t bytesInUse = 0;
 };
@@ -70,7 +78,8 @@ private:
 /// Run the scene script and return its render requests in call order. Binds the Lua calls of
 /// every built feature. Throws InputError ("file:line: what was expected") for bad input.
 std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& features,
-                                    const SceneLoadOptions& options);
+                                    const SceneLoadOptions& options,
+                                    SceneLoadTimes* times = nullptr);
 
 // ---- Helpers for writing Lua calls --------------------------------------------------------
 // A call written with RB_LUA_CALL may throw InputError with a message that names the call and

@@ -64,8 +64,8 @@ int run(int argc, char** argv) {
     SceneLoadOptions loadOptions;
     loadOptions.legacy = cl.legacy;
     loadOptions.unsafeLua = cl.unsafeLua;
-    std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions);
-    const double luaSeconds = since(t0);
+    SceneLoadTimes loadTimes;
+    std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions, &loadTimes);
 
     for (size_t k = 0; k < renders.size(); ++k) {
         LoadedRender& r = renders[k];
@@ -119,9 +119,13 @@ int run(int argc, char** argv) {
                     std::fprintf(stderr, " %s %llu", kRayKindNames[i],
                                  static_cast<unsigned long long>(counters.count[i]));
             std::fprintf(stderr, " (total %llu)\n", static_cast<unsigned long long>(counters.total()));
+            if (k == 0)
+                std::fprintf(stderr, "  time       lua %.3f s, load %.3f s, mesh bvh %.3f s\n",
+                             loadTimes.total - loadTimes.meshLoad - loadTimes.meshBvh,
+                             loadTimes.meshLoad, loadTimes.meshBvh);
             std::fprintf(stderr,
-                         "  time       lua+load %.3f s, build %.3f s, render %.3f s, write %.3f s\n",
-                         k == 0 ? luaSeconds : 0.0, buildSeconds, renderSeconds, writeSeconds);
+                         "  time       build %.3f s, render %.3f s, write %.3f s\n",
+                         buildSeconds, renderSeconds, writeSeconds);
             std::fprintf(stderr, "  speed      %.2f Mrays/s\n",
                          counters.total() / std::max(renderSeconds, 1e-9) / 1e6);
             std::fprintf(stderr, "  instances  %zu\n", scene.instances.size());
