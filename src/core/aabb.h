@@ -39,17 +39,16 @@ struct AABB {
     }
 };
 
-/// A ray prepared for many box tests: reciprocal direction, with zero components replaced by
-/// a huge finite value so that 0·(1/0) never produces NaN.
+/// A ray prepared for many box tests: the reciprocal direction (±infinity where a component
+/// is ±0) and the sign of each component.
 struct RayInverse {
     Vec3 o;
     Vec3 invD;
     int dirIsNeg[3];
     explicit RayInverse(const Ray& r) : o(r.o) {
         for (int i = 0; i < 3; ++i) {
-            const double d = r.d[i];
-            invD[i] = d != 0.0 ? 1.0 / d : std::copysign(1e300, d);
-            dirIsNeg[i] = invD[i] < 0.0;
+            invD[i] = 1.0 / r.d[i];
+            dirIsNeg[i] = std::signbit(invD[i]);
         }
     }
 };
@@ -65,6 +64,9 @@ struct RayInverse {
         double tFar = ((ri.dirIsNeg[axis] ? b.lo : b.hi)[axis] - ri.o[axis]) * ri.invD[axis];
         // Widen the far distance by a few ulps so rounding never misses a box that is hit.
         tFar *= 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
+        // Written so a NaN leaves the interval alone: a ray parallel to a slab and starting
+        // exactly on its plane gives 0·∞ = NaN, and the slab then counts as closed, the same
+        // rule the Box shape uses.
         t0 = tNear > t0 ? tNear : t0;
         t1 = tFar < t1 ? tFar : t1;
         if (t0 > t1) return false;
