@@ -21,8 +21,10 @@ FeatureSet::FeatureSet(const std::vector<Feature>& built, const std::string& spe
         const std::string name = off ? item.substr(1) : item;
         if (name == "all") {
             for (const Feature& f : built)
-                if (off && f.switchable) on.erase(f.name);
-                else if (!off) on.insert(f.name);
+                if (off && f.switchable)
+                    on.erase(f.name);
+                else if (!off)
+                    on.insert(f.name);
             continue;
         }
         auto it = std::find_if(built.begin(), built.end(),
@@ -42,8 +44,10 @@ FeatureSet::FeatureSet(const std::vector<Feature>& built, const std::string& spe
         if (off && !it->switchable)
             throw InputError("--features: '" + name + "' is part of the core (chapter " +
                              std::to_string(it->chapter) + ") and cannot be switched off");
-        if (off) on.erase(name);
-        else on.insert(name);
+        if (off)
+            on.erase(name);
+        else
+            on.insert(name);
     }
     for (const Feature& f : built)
         if (on.count(f.name)) on_.push_back(f);
@@ -61,22 +65,40 @@ struct LaterCall {
     const char* module;
 };
 constexpr LaterCall kLaterCalls[] = {
-    {"mesh", 3, "meshes and the BVH"},       {"obj_mesh", 3, "meshes and the BVH"},
-    {"bvh", 3, "meshes and the BVH"},        {"reflection", 4, "reflection"},
-    {"phongMat", 4, "reflection"},           {"fancy_material", 4, "reflection"},
-    {"reflect", 4, "reflection"},            {"ior", 5, "refraction"},
-    {"transparency", 5, "refraction"},       {"schlick", 5, "refraction"},
-    {"glossiness", 7, "glossy"},             {"fuzz", 7, "glossy"},
-    {"light_samples", 6, "soft_shadows"},    {"glossy_samples", 7, "glossy"},
-    {"refraction", 5, "refraction"},         {"transMat", 5, "refraction"},
-    {"soft_shadows", 6, "soft_shadows"},     {"ball_light", 6, "soft_shadows"},
-    {"area_light", 6, "soft_shadows"},       {"glossy", 7, "glossy"},
-    {"adaptive_aa", 8, "adaptive_aa"},       {"smooth_mesh", 9, "smooth_mesh"},
-    {"texture", 10, "texture"},              {"bump", 11, "bump"},
-    {"tone_map", 12, "tone_map"},            {"dof", 13, "dof"},
-    {"csg", 14, "csg"},                      {"quadrics", 15, "quadrics"},
-    {"cone", 15, "quadrics"},                {"cylinder", 15, "quadrics"},
-    {"cyllinder", 15, "quadrics"},           {"photon_map", 16, "photon_map"},
+    {"mesh", 3, "meshes and the BVH"},
+    {"obj_mesh", 3, "meshes and the BVH"},
+    {"bvh", 3, "meshes and the BVH"},
+    {"reflection", 4, "reflection"},
+    {"phongMat", 4, "reflection"},
+    {"fancy_material", 4, "reflection"},
+    {"reflect", 4, "reflection"},
+    {"ior", 5, "refraction"},
+    {"transparency", 5, "refraction"},
+    {"schlick", 5, "refraction"},
+    {"glossiness", 7, "glossy"},
+    {"fuzz", 7, "glossy"},
+    {"light_samples", 6, "soft_shadows"},
+    {"glossy_samples", 7, "glossy"},
+    {"refraction", 5, "refraction"},
+    {"transMat", 5, "refraction"},
+    {"soft_shadows", 6, "soft_shadows"},
+    {"ball_light", 6, "soft_shadows"},
+    {"area_light", 6, "soft_shadows"},
+    {"glossy", 7, "glossy"},
+    {"adaptive_aa", 8, "adaptive_aa"},
+    {"smooth_mesh", 9, "smooth_mesh"},
+    {"texture", 10, "texture"},
+    {"bump", 11, "bump"},
+    {"tone_map", 12, "tone_map"},
+    {"dof", 13, "dof"},
+    {"csg", 14, "csg"},
+    {"set_texture_map", 10, "texture"},
+    {"set_bump_map", 11, "bump"},
+    {"quadrics", 15, "quadrics"},
+    {"cone", 15, "quadrics"},
+    {"cylinder", 15, "quadrics"},
+    {"cyllinder", 15, "quadrics"},
+    {"photon_map", 16, "photon_map"},
     {"media", 17, "media"},
 };
 }  // namespace

@@ -2,6 +2,7 @@
 
 namespace rb {
 
+// [normal-transform]
 void Instance::setTransform(const Mat4& m) {
     objectToWorld = m;
     worldToObject = glm::inverse(m);
@@ -10,6 +11,7 @@ void Instance::setTransform(const Mat4& m) {
     normalToWorld = glm::transpose(Mat3(worldToObject));
     worldBounds = shape->bounds().transformed(m);
 }
+// [normal-transform]
 
 // [instance-to-world]
 Hit Instance::toWorld(const Ray& worldRay, const ObjectHit& oh) const {

@@ -29,10 +29,12 @@ struct PointLight {
     Vec3 falloff{1.0, 0.0, 0.0};  ///< (c0, c1, c2).
     std::shared_ptr<const LightShape> shape;  ///< Null: a true point light (chapters 1–5).
 
+    // [falloff]
     /// The light's intensity after falloff at distance r.
     Colour intensityAt(double r) const {
         return colour / (falloff.x + falloff.y * r + falloff.z * r * r);
     }
+    // [falloff]
 };
 
 }  // namespace rb

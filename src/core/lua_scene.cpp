@@ -212,12 +212,15 @@ void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize) {
 
 /// The count hook: stop a script that runs too long (an endless loop).
 constexpr int kHookInterval = 10000;
-void instructionHook(lua_State* L, lua_Debug*) {
+void instructionHook(lua_State* L, lua_Debug* ar) {
     SceneBuilder& builder = sceneBuilder(L);
     builder.instructions += kHookInterval;
-    if (builder.instructions > builder.options.instructionLimit)
-        luaL_error(L, "the scene script ran more than %I Lua instructions (an endless loop?)",
-                   static_cast<lua_Integer>(builder.options.instructionLimit));
+    if (builder.instructions <= builder.options.instructionLimit) return;
+    // Name the line the script was running when it hit the limit.
+    lua_getinfo(L, "Sl", ar);
+    luaL_error(L, "%s:%d: the scene script ran more than %I Lua instructions (an endless loop?)",
+               ar->short_src, ar->currentline,
+               static_cast<lua_Integer>(builder.options.instructionLimit));
 }
 
 /// require(name) limited to name.lua in the scene's own folder (dots become slashes).
@@ -268,6 +271,20 @@ int sandboxLoad(lua_State* L) {
         if (!lua_setupvalue(L, -2, 1)) lua_pop(L, 1);
     }
     return 1;
+}
+
+/// A node or material method nobody defined: say which chapter provides it.
+int unknownMethod(lua_State* L) {
+    const char* name = lua_tostring(L, 2);
+    if (!name) return luaL_error(L, "methods are named by strings");
+    std::string title;
+    const int chapter = chapterProviding(name, title);
+    if (chapter)
+        return luaL_error(L,
+                          "method '%s' needs chapter %d (%s), which this build does not have; "
+                          "build it with make chapter%d or later",
+                          name, chapter, title.c_str(), chapter);
+    return luaL_error(L, "'%s' is not a method of raybook nodes or materials", name);
 }
 
 /// gr.<name> for a name nobody defined: say which chapter provides it.
@@ -328,7 +345,11 @@ void createTypes(lua_State* L) {
     lua_setglobal(L, "gr");
     for (const char* type : {kNodeType, kMaterialType}) {
         luaL_newmetatable(L, type);
+        lua_newtable(L);  // the methods; unknown ones name their chapter
         lua_newtable(L);
+        lua_pushcfunction(L, unknownMethod);
+        lua_setfield(L, -2, "__index");
+        lua_setmetatable(L, -2);
         lua_setfield(L, -2, "__index");
         lua_pushcfunction(L, std::strcmp(type, kNodeType) == 0 ? collectShared<SceneNode>
                                                                : collectShared<Material>);

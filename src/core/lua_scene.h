@@ -19,7 +19,7 @@ namespace rb {
 struct SceneLoadOptions {
     bool legacy = false;       ///< Course framework before 2015: transforms post-multiply.
     bool unsafeLua = false;    ///< Allow os and io.
-    long long instructionLimit = 2'000'000'000;  ///< Lua VM instructions before we give up.
+    long long instructionLimit = 1'000'000'000;  ///< Lua VM instructions before we give up.
     size_t memoryLimit = size_t(2) << 30;        ///< Bytes the script may allocate.
 };
 
@@ -59,11 +59,11 @@ struct SceneBuilder {
 class LuaBindings {
 public:
     explicit LuaBindings(lua_State* L) : L_(L) {}
-    /// Define or replace gr.<name>.
+    /// Define or replace `gr.name`.
     void function(const char* name, lua_CFunction f);
-    /// Define or replace a method of scene nodes (n:<name>(...)).
+    /// Define or replace a method of scene nodes (`node:name(...)`).
     void nodeMethod(const char* name, lua_CFunction f);
-    /// Define or replace a method of materials (m:<name>(...)).
+    /// Define or replace a method of materials (`material:name(...)`).
     void materialMethod(const char* name, lua_CFunction f);
     /// Accept a numeric material parameter in gr.material{...} (chapter: who reads it).
     void materialField(const char* name, int chapter);

@@ -245,6 +245,7 @@ ObjData parseObj(std::istream& in, const std::string& displayName) {
             checkCapacity(data.normals.size(), "normals", ctx);
             data.normals.emplace_back(values[0], values[1], values[2]);
         } else if (keyword == "f") {
+            // [obj-face]
             // Read every corner first, so a bad corner anywhere rejects the whole face
             if (tokens.size() - 1 < 3) {
                 ctx.fail("a face needs at least 3 corners, got " +
@@ -259,6 +260,7 @@ ObjData parseObj(std::istream& in, const std::string& displayName) {
             for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
                 data.triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
             }
+            // [obj-face]
         } else if (!isSkippedStatement(keyword)) {
             ctx.fail("unknown statement " + quoted(keyword) +
                      " (expected v, vt, vn or f; o, g, s, usemtl, mtllib, l, p and vp are "

@@ -16,6 +16,7 @@ Colour phongBrdfTerm(const Material& m, const Vec3& n, const Vec3& l, const Vec3
 
 namespace {
 
+// [shadow-ray]
 /// Light arriving from one point `from` of a light, through the shadow test, times the Phong
 /// term. `emission` scales the light's intensity (1 for a point light).
 Colour lightFromPoint(const ShadeContext& ctx, const Hit& hit, const Material& m, const Vec3& n,
@@ -32,6 +33,7 @@ Colour lightFromPoint(const ShadeContext& ctx, const Hit& hit, const Material& m
         return Colour(0.0);
     return emission * light.intensityAt(r) * phongBrdfTerm(m, n, l, v);
 }
+// [shadow-ray]
 
 }  // namespace
 

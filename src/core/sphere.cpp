@@ -4,6 +4,7 @@
 
 namespace rb {
 
+// [stable-quadratic]
 bool solveQuadraticHalfB(double a, double h, double c, const Vec3& f, double& t0, double& t1) {
     // The discriminant h² − a·c loses all its digits when the ray starts far away, because
     // both terms grow like |o|². The equal quantity a·(1 − |f|²), with f the vector from the
@@ -23,6 +24,7 @@ bool solveQuadraticHalfB(double a, double h, double c, const Vec3& f, double& t0
     if (t0 > t1) std::swap(t0, t1);
     return true;
 }
+// [stable-quadratic]
 
 // [sphere-intersect]
 bool Sphere::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {

@@ -2,6 +2,7 @@
 
 namespace rb {
 
+// [watertight-ray]
 WatertightRay::WatertightRay(const Ray& r) : o(r.o) {
     // Choose z as the axis where |d| is largest, and keep the winding by swapping x and y
     // when d_z is negative.
@@ -15,6 +16,7 @@ WatertightRay::WatertightRay(const Ray& r) : o(r.o) {
     Sy = r.d[ky] / r.d[kz];
     Sz = 1.0 / r.d[kz];
 }
+// [watertight-ray]
 
 // [watertight-triangle]
 bool intersectTriangle(const WatertightRay& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2,
