@@ -4,6 +4,7 @@ namespace rb {
 
 // [box-intersect]
 bool Box::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
+    if (isDegenerateDirection(ray.d)) return false;
     // Clip the ray against each slab 0 ≤ x_axis ≤ 1, remembering which face bounds the interval.
     double tEnter = -std::numeric_limits<double>::infinity();
     double tExit = std::numeric_limits<double>::infinity();

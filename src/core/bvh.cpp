@@ -10,6 +10,9 @@ namespace {
 /// The most bins a build may use (fixed arrays keep the build free of allocations).
 constexpr int kMaxBins = 32;
 
+/// Depth from which the build splits at the median (see buildNode).
+constexpr int kMedianDepth = 48;
+
 /// A primitive during the build: its bounds, centroid and original index. The build
 /// partitions an array of these in place, so every pass reads memory in order.
 struct PrimRef {
@@ -118,6 +121,29 @@ std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, i
     }
 
     // Split where the SAH says it pays, or always when the range is too big for a leaf.
+    // Deep in a lopsided tree, split at the median instead: that bounds the depth by
+    // kMedianDepth + log2(n), so traversal's fixed stack can never overflow.
+    if (depth >= kMedianDepth && n > 1) {
+        int longest = 0;
+        const Vec3 extent = centroidBounds.hi - centroidBounds.lo;
+        if (extent.y > extent[longest]) longest = 1;
+        if (extent.z > extent[longest]) longest = 2;
+        const std::uint32_t half = begin + n / 2;
+        std::nth_element(s.refs.begin() + begin, s.refs.begin() + half, s.refs.begin() + end,
+                         [&](const PrimRef& a, const PrimRef& b) {
+                             return a.centroid[longest] < b.centroid[longest];
+                         });
+        if (n <= static_cast<std::uint32_t>(s.options.maxLeafSize)) {
+            makeLeaf(s, index, begin, end);
+            return index;
+        }
+        buildNode(s, begin, half, depth + 1);
+        const std::uint32_t second = buildNode(s, half, end, depth + 1);
+        s.nodes[index].offset = second;
+        s.nodes[index].axis = static_cast<std::uint8_t>(longest);
+        return index;
+    }
+
     // Small ranges need fewer candidate planes.
     const int nBins = std::clamp(std::min<int>(s.options.bins, n), 2, kMaxBins);
     const Split split = findSplit(s, begin, end, bounds, centroidBounds, nBins);

@@ -29,6 +29,10 @@ struct BVHBuildOptions {
 /// A binned-SAH BVH over primitives given by their bounds.
 class BVH {
 public:
+    /// Entries of the traversal stack. The build keeps the tree shallower than this (it splits
+    /// at the median below depth 48, so the depth is at most 48 + 32).
+    static constexpr int kStackSize = 96;
+
     /// Build over the primitives' bounds. primitiveOrder() then lists the primitive indices in
     /// the order leaves refer to them.
     void build(const std::vector<AABB>& primitiveBounds, const BVHBuildOptions& options = {});
@@ -46,7 +50,7 @@ public:
     bool closest(const Ray& ray, double& tMax, LeafTest&& leaf) const {
         if (nodes_.empty()) return false;
         const RayInverse ri(ray);
-        std::uint32_t stack[64];
+        std::uint32_t stack[kStackSize];
         int top = 0;
         std::uint32_t current = 0;
         bool found = false;
@@ -83,7 +87,7 @@ public:
     bool any(const Ray& ray, double tMax, LeafTest&& leaf) const {
         if (nodes_.empty()) return false;
         const RayInverse ri(ray);
-        std::uint32_t stack[64];
+        std::uint32_t stack[kStackSize];
         int top = 0;
         std::uint32_t current = 0;
         for (;;) {

@@ -304,7 +304,8 @@ int grRender(lua_State* L) {
     std::map<const SceneNode*, std::shared_ptr<SceneNode>> copies;
     auto frozen = snapshot(root, copies);
     r.snapshot = frozen;
-    r.instances = flatten(*frozen, &sceneBuilder(L).defaultMaterial);
+    r.fallback = sceneBuilder(L).defaultMaterial;
+    r.instances = flatten(*frozen, r.fallback.get());
     job.root = frozen;
     sceneBuilder(L).renders.push_back(std::move(r));
     return 0;

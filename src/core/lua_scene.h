@@ -28,6 +28,7 @@ struct LoadedRender {
     RenderJob job;
     std::shared_ptr<const SceneNode> snapshot;  ///< The graph as it was at gr.render.
     std::vector<Instance> instances;            ///< Flattened from the snapshot.
+    std::shared_ptr<const Material> fallback;   ///< For instances without a material.
 };
 
 /// Where the time of loading a scene went (for --stats).
@@ -46,7 +47,9 @@ struct SceneBuilder {
     std::vector<LoadedRender> renders;
     std::map<std::string, std::shared_ptr<const Shape>> meshCache;  ///< One load per file.
     std::shared_ptr<const Shape> unitSphere, unitCube;              ///< Shared by all nodes.
-    Material defaultMaterial{Colour(0.5), Colour(0.0), 1.0, {}};  ///< For nodes without one.
+    /// For nodes without a material: grey, no highlight. Shared with each render.
+    std::shared_ptr<const Material> defaultMaterial =
+        std::make_shared<const Material>(Material{Colour(0.5), Colour(0.0), 1.0, {}});
     std::map<std::string, int> materialFields;  ///< Named material parameters, by chapter.
     std::map<std::string, int> optionNames;     ///< gr.option names, by chapter.
     std::map<std::string, double> sceneOptions;  ///< gr.option values set so far.

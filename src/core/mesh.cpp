@@ -45,6 +45,7 @@ size_t Mesh::triangleBytes() const {
 
 // [mesh-intersect]
 bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
+    if (isDegenerateDirection(ray.d)) return false;
     const WatertightRay wray(ray);
     std::uint32_t hitSlot = 0;
     TriangleHit best{};
@@ -68,6 +69,7 @@ bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
 // [mesh-intersect]
 
 bool Mesh::occluded(const Ray& ray, double tMax) const {
+    if (isDegenerateDirection(ray.d)) return false;
     const WatertightRay wray(ray);
     return bvh_.any(ray, tMax, [&](std::uint32_t slot, double t) {
         const auto& v = triangles_[slot];

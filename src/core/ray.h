@@ -18,6 +18,11 @@ struct Ray {
 /// coordinate involved (about 1e-16 relative); 1e-9 leaves a margin of ten million.
 inline constexpr double kOffsetScale = 1e-9;
 
+/// True when a direction cannot define a ray: zero, or with a NaN component.
+inline bool isDegenerateDirection(const Vec3& d) {
+    return !(glm::dot(d, d) > 0.0) || std::isnan(d.x) || std::isnan(d.y) || std::isnan(d.z);
+}
+
 // [offset-origin]
 /// Move a new ray's origin p off the surface with geometric normal ng, to the side that the
 /// direction dir leaves towards, so that the ray cannot re-hit the surface it starts on.

@@ -28,6 +28,7 @@ bool solveQuadraticHalfB(double a, double h, double c, const Vec3& f, double& t0
 
 // [sphere-intersect]
 bool Sphere::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
+    if (isDegenerateDirection(ray.d)) return false;
     // Compute the quadratic coefficients of |o + t·d|² = 1 (with b = 2h).
     const double a = glm::dot(ray.d, ray.d);
     const double h = glm::dot(ray.o, ray.d);

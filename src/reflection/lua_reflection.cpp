@@ -41,9 +41,12 @@ int grMaterialSeed000(lua_State* L) {
         const double v = checkNumber(L, arg + 1, "gr.material", key.c_str());
         if (key == "reflect") setMaterialParam(L, *m, "reflect", v, "gr.material");
         else if (key == "refract") {
-            // Seed 000's refracting materials are clear: all light is transmitted.
-            setMaterialParam(L, *m, "ior", v, "gr.material");
-            setMaterialParam(L, *m, "transparency", 1.0, "gr.material");
+            // Seed 000's refracting materials are clear: all light is transmitted. "refract",
+            // 0 means no refraction, as "reflect", 0 means no mirror.
+            if (v != 0.0) {
+                setMaterialParam(L, *m, "ior", v, "gr.material");
+                setMaterialParam(L, *m, "transparency", 1.0, "gr.material");
+            }
         } else if (key == "glossy") setIfNonZero(L, *m, "glossiness", v, "gr.material");
         else
             throw InputError("gr.material: unknown keyword \"" + key +
