@@ -1,0 +1,592 @@
+/// \file
+/// Chapter 3 tests: watertight ray–triangle intersection and the two-level BVH.
+///
+/// Chapter 3 claims that the watertight triangle test leaves no gap between triangles that
+/// share an edge or a vertex, reports barycentric coordinates that rebuild the hit point, sees
+/// both sides of a triangle and never hits a degenerate one; that a BVH is only a faster way of
+/// getting the answer brute force gives (the same closest hit, the same triangle or instance,
+/// the same shadow-ray verdict); that the tree is well formed; and that the work per ray grows
+/// like log n rather than n. The tests sweep rays exactly through shared edges and vertices,
+/// compare the BVH with a loop over every triangle (Stanford bunny) and over every instance
+/// (a scene of spheres, boxes and meshes) on thousands of random rays with fixed seeds, walk
+/// every tree to check its invariants, and count the triangle tests and the BVH nodes pierced
+/// by rays hitting meshes of 2 048 to 524 288 triangles.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/aggregate.h"
+#include "core/box.h"
+#include "core/bvh.h"
+#include "core/bvh_aggregate.h"
+#include "core/error.h"
+#include "core/mesh.h"
+#include "core/obj.h"
+#include "core/sphere.h"
+#include "core/triangle.h"
+#include "test_helpers.h"
+
+using rb::Vec3;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+
+/// The bunny that chapter 3's scene uses: 3 674 triangles.
+const std::string kBunnyPath = std::string(RB_SOURCE_DIR) + "/scenes/assets/bunny.obj";
+
+/// Does the ray hit triangle (p0, p1, p2) anywhere along t in (0, ∞)?
+bool hitsTriangle(const rb::Ray& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+    rb::TriangleHit th;
+    return rb::intersectTriangle(rb::WatertightRay(ray), p0, p1, p2, kInf, th);
+}
+
+/// The closest hit of a ray on a mesh by testing every triangle: the reference the BVH must
+/// reproduce. Returns the slot of the closest triangle, or -1.
+long bruteForceClosest(const rb::Mesh& mesh, const rb::Ray& ray, double& tClosest) {
+    const rb::WatertightRay wray(ray);
+    long best = -1;
+    tClosest = kInf;
+    for (size_t i = 0; i < mesh.triangleCount(); ++i) {
+        const auto& v = mesh.triangle(i);
+        rb::TriangleHit th;
+        if (rb::intersectTriangle(wray, v[0], v[1], v[2], tClosest, th)) {
+            tClosest = th.t;
+            best = static_cast<long>(i);
+        }
+    }
+    return best;
+}
+
+/// A random ray aimed into a box: from a random point on a sphere twice the box's diagonal
+/// around it, towards a random point inside it (most such rays hit what is inside, some miss).
+rb::Ray rayInto(const rb::AABB& b, rbtest::Rng& rng) {
+    const Vec3 centre = b.centre();
+    const double radius = glm::length(b.hi - b.lo);
+    const Vec3 origin = centre + 2.0 * radius * rng.unitVector();
+    const Vec3 target(rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y),
+                      rng.uniform(b.lo.z, b.hi.z));
+    return rb::Ray{origin, target - origin};
+}
+
+/// True when box `outer` contains box `inner`.
+bool contains(const rb::AABB& outer, const rb::AABB& inner) {
+    return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z &&
+           outer.hi.x >= inner.hi.x && outer.hi.y >= inner.hi.y && outer.hi.z >= inner.hi.z;
+}
+
+/// What a walk over a BVH found wrong with it.
+struct TreeReport {
+    size_t nodesReached = 0;
+    size_t badChildBounds = 0;  ///< Interior nodes whose box misses part of a child's box.
+    size_t badLeafBounds = 0;   ///< Leaves whose box misses part of a primitive's box.
+    std::vector<int> slotSeen;  ///< How many leaves refer to each primitive slot.
+};
+
+/// Walk every node reachable from the root; primitiveBounds(slot) is the box of the primitive
+/// in leaf slot `slot`.
+template <class SlotBounds>
+TreeReport walkTree(const rb::BVH& bvh, size_t primitiveCount, SlotBounds primitiveBounds) {
+    TreeReport report;
+    report.slotSeen.assign(primitiveCount, 0);
+    std::vector<std::uint32_t> stack = {0};
+    while (!stack.empty()) {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        const rb::BVHNode& node = bvh.nodes().at(index);
+        ++report.nodesReached;
+        if (node.count > 0) {
+            for (std::uint32_t slot = node.offset; slot < node.offset + node.count; ++slot) {
+                ++report.slotSeen.at(slot);
+                if (!contains(node.bounds, primitiveBounds(slot))) ++report.badLeafBounds;
+            }
+        } else {
+            // The first child follows its parent; the second is at `offset`.
+            for (const std::uint32_t child : {index + 1, node.offset}) {
+                if (!contains(node.bounds, bvh.nodes().at(child).bounds)) ++report.badChildBounds;
+                stack.push_back(child);
+            }
+        }
+    }
+    return report;
+}
+
+/// The number of BVH nodes whose box the segment of `ray` up to `tHit` enters: the nodes that
+/// any closest-hit traversal has to open, whatever order it visits children in.
+long nodesPierced(const rb::BVH& bvh, const rb::RayInverse& ri, double tHit,
+                  std::uint32_t index = 0) {
+    const rb::BVHNode& node = bvh.nodes()[index];
+    double tEntry;
+    if (!rb::intersectBox(node.bounds, ri, tHit, tEntry)) return 0;
+    if (node.count > 0) return 1;
+    return 1 + nodesPierced(bvh, ri, tHit, index + 1) + nodesPierced(bvh, ri, tHit, node.offset);
+}
+
+/// A wavy height field z = 0.05·sin(6πx)·cos(4πy) over the unit square, cut into k × k quads
+/// of two triangles each: a surface, like the meshes people render.
+std::shared_ptr<rb::Mesh> heightField(int k) {
+    std::vector<Vec3> positions;
+    std::vector<std::array<int, 3>> triangles;
+    for (int j = 0; j <= k; ++j)
+        for (int i = 0; i <= k; ++i) {
+            const double x = static_cast<double>(i) / k, y = static_cast<double>(j) / k;
+            positions.emplace_back(x, y, 0.05 * std::sin(6 * kPi * x) * std::cos(4 * kPi * y));
+        }
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+            const int a = j * (k + 1) + i, b = a + 1, c = a + k + 1, d = c + 1;
+            triangles.push_back({a, b, d});
+            triangles.push_back({a, d, c});
+        }
+    return rbtest::makeMesh(positions, triangles, "height-field");
+}
+
+}  // namespace
+
+// ---- Ray–triangle -----------------------------------------------------------------------------
+
+// [ch03-watertight]
+SCENARIO("a ray through the shared edge or vertex of two triangles hits at least one of them",
+         "[ch03]") {
+    GIVEN("the unit square split along its diagonal into (p0, p1, p2) and (p0, p2, p3)") {
+        const Vec3 p0(0, 0, 0), p1(1, 0, 0), p2(1, 1, 0), p3(0, 1, 0);
+        // Directions with small integer components: with a dyadic point s on the diagonal, the
+        // origin (s, s, 0) − d is exact, so each ray passes exactly through the shared edge.
+        const Vec3 directions[] = {Vec3(0, 0, -1),  Vec3(1, 2, -3),  Vec3(-3, 1, -2),
+                                   Vec3(2, -5, 1),  Vec3(-1, -1, 4), Vec3(7, 3, -1),
+                                   Vec3(1, -1, -1), Vec3(-2, 2, 1)};
+        WHEN("1023 points (i/1024, i/1024, 0) on the diagonal are shot at from 8 directions") {
+            int missedBoth = 0;
+            for (int i = 1; i < 1024; ++i) {
+                const Vec3 onEdge(i / 1024.0, i / 1024.0, 0.0);
+                for (const Vec3& d : directions) {
+                    const rb::Ray ray{onEdge - d, d};
+                    if (!hitsTriangle(ray, p0, p1, p2) && !hitsTriangle(ray, p0, p2, p3))
+                        ++missedBoth;
+                }
+            }
+            THEN("no ray slips between the two triangles") {
+                CHECK(missedBoth == 0);
+            }
+        }
+        WHEN(
+            "the square is turned and moved to a general position, and 20 000 random rays are "
+            "aimed at random points of the shared edge (fixed seed)") {
+            rbtest::Rng rng(31);
+            int missedBoth = 0;
+            for (int k = 0; k < 20000; ++k) {
+                const rb::Mat4 m =
+                    glm::rotate(glm::translate(rb::Mat4(1.0), 10.0 * rng.unitVector()),
+                                rng.uniform(0.0, 6.28), rng.unitVector());
+                const Vec3 q0 = rb::transformPoint(m, p0), q1 = rb::transformPoint(m, p1),
+                           q2 = rb::transformPoint(m, p2), q3 = rb::transformPoint(m, p3);
+                const double s = rng.uniform();
+                const Vec3 onEdge = (1.0 - s) * q0 + s * q2;
+                const Vec3 origin = onEdge + 3.0 * rng.unitVector();
+                const rb::Ray ray{origin, onEdge - origin};
+                if (!hitsTriangle(ray, q0, q1, q2) && !hitsTriangle(ray, q0, q2, q3)) ++missedBoth;
+            }
+            THEN("every one hits at least one triangle") {
+                CHECK(missedBoth == 0);
+            }
+        }
+    }
+    GIVEN("a fan of 6 triangles around the apex (0, 0, 0.3) of a hexagonal pyramid") {
+        const Vec3 apex(0, 0, 0.3);
+        std::vector<Vec3> rim;
+        for (int i = 0; i < 6; ++i)
+            rim.emplace_back(std::cos(i * kPi / 3), std::sin(i * kPi / 3), 0.0);
+        const auto hitsFan = [&](const rb::Ray& ray) {
+            for (int i = 0; i < 6; ++i)
+                if (hitsTriangle(ray, apex, rim[i], rim[(i + 1) % 6])) return true;
+            return false;
+        };
+        // Each ray descends at least 30° below the horizontal, steeper than every face
+        // (atan(0.3 / cos 30°) ≈ 19.1°), so a ray through the apex or a spoke enters the solid
+        // there instead of just touching it: it must hit, whatever rounding does.
+        const auto steepDirection = [](rbtest::Rng& rng) {
+            for (;;) {
+                const Vec3 d = rng.hemisphere(Vec3(0, 0, 1));
+                if (d.z >= 0.5) return d;
+            }
+        };
+        WHEN(
+            "10 000 rays from random points above are aimed at the apex, and 10 000 at random "
+            "points of the six spokes (fixed seed)") {
+            rbtest::Rng rng(47);
+            int missedApex = 0, missedSpoke = 0;
+            for (int k = 0; k < 10000; ++k) {
+                const Vec3 origin = apex + 2.0 * steepDirection(rng);
+                if (!hitsFan(rb::Ray{origin, apex - origin})) ++missedApex;
+                const int spoke = static_cast<int>(rng.uniform() * 6);
+                const double s = rng.uniform();
+                const Vec3 onSpoke = (1.0 - s) * apex + s * rim[spoke];
+                const Vec3 from = onSpoke + 2.0 * steepDirection(rng);
+                if (!hitsFan(rb::Ray{from, onSpoke - from})) ++missedSpoke;
+            }
+            THEN("none of them misses the fan") {
+                CHECK(missedApex == 0);
+                CHECK(missedSpoke == 0);
+            }
+        }
+    }
+}
+// [ch03-watertight]
+
+SCENARIO("the barycentric coordinates of a hit rebuild the hit point", "[ch03]") {
+    GIVEN("the triangle (0,0,0), (1,0,0), (0,1,0) and a ray down from (0.25, 0.5, 1)") {
+        rb::TriangleHit th;
+        REQUIRE(
+            rb::intersectTriangle(rb::WatertightRay(rb::Ray{Vec3(0.25, 0.5, 1), Vec3(0, 0, -1)}),
+                                  Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), kInf, th));
+        THEN("t = 1 and (b0, b1, b2) = (0.25, 0.25, 0.5)") {
+            // Source: hand derivation: (0.25, 0.5) = b1·(1,0) + b2·(0,1), b0 = 1 − b1 − b2.
+            CHECK(th.t == Approx(1.0).epsilon(1e-15));
+            CHECK(th.b0 == Approx(0.25).epsilon(1e-15));
+            CHECK(th.b1 == Approx(0.25).epsilon(1e-15));
+            CHECK(th.b2 == Approx(0.5).epsilon(1e-15));
+        }
+    }
+    GIVEN(
+        "10 000 random triangles in [−1, 1]³, each shot at a random interior point "
+        "w·p0 + u·p1 + v·p2 from 3 units away, with d = target − origin (fixed seed)") {
+        // Rays within 6° of the triangle's plane and slivers of area < 0.1 are skipped: there
+        // the problem itself is ill-conditioned. For the rest the edge functions lose at most a
+        // factor ~100 over double rounding (|p| ≤ 1, area ≥ 0.1, |cos| ≥ 0.1), so errors stay
+        // below ~1e-13; we allow 1e-12.
+        rbtest::Rng rng(5);
+        int tested = 0, missed = 0;
+        double worstT = 0, worstB = 0, worstPoint = 0;
+        while (tested < 10000) {
+            const auto corner = [&] {
+                return Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+            };
+            const Vec3 p0 = corner(), p1 = corner(), p2 = corner();
+            double u = rng.uniform(0.01, 0.98), v = rng.uniform(0.01, 0.98);
+            if (u + v > 0.99) continue;
+            const double w = 1.0 - u - v;
+            const Vec3 target = w * p0 + u * p1 + v * p2;
+            const Vec3 origin = target + 3.0 * rng.unitVector();
+            const Vec3 normal = glm::cross(p1 - p0, p2 - p0);
+            const Vec3 d = target - origin;
+            if (glm::length(normal) < 0.1 ||
+                std::abs(glm::dot(glm::normalize(d), glm::normalize(normal))) < 0.1)
+                continue;
+            ++tested;
+            rb::TriangleHit th;
+            if (!rb::intersectTriangle(rb::WatertightRay(rb::Ray{origin, d}), p0, p1, p2, kInf,
+                                       th)) {
+                ++missed;
+                continue;
+            }
+            worstT = std::max(worstT, std::abs(th.t - 1.0));
+            worstB =
+                std::max({worstB, std::abs(th.b0 - w), std::abs(th.b1 - u), std::abs(th.b2 - v)});
+            const Vec3 rebuilt = th.b0 * p0 + th.b1 * p1 + th.b2 * p2;
+            worstPoint = std::max(worstPoint, glm::length(rebuilt - (origin + th.t * d)));
+        }
+        THEN(
+            "every ray hits at t = 1 with the barycentrics it was aimed with, and "
+            "b0·p0 + b1·p1 + b2·p2 is the point o + t·d") {
+            // Source: d = target − o, so the target is at t = 1, and it was built from (w, u, v).
+            CHECK(missed == 0);
+            CHECK(worstT < 1e-12);
+            CHECK(worstB < 1e-12);
+            CHECK(worstPoint < 1e-12);
+        }
+    }
+}
+
+SCENARIO("a triangle is hit from either side", "[ch03]") {
+    GIVEN("the triangle (0,0,0), (1,0,0), (0,1,0), whose winding makes +z its front") {
+        const Vec3 p0(0, 0, 0), p1(1, 0, 0), p2(0, 1, 0);
+        THEN("a ray from above and a ray from below both hit it at t = 1") {
+            // Source: DESIGN §4.1: never cull back faces.
+            rb::TriangleHit above, below;
+            REQUIRE(
+                rb::intersectTriangle(rb::WatertightRay(rb::Ray{Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)}),
+                                      p0, p1, p2, kInf, above));
+            REQUIRE(
+                rb::intersectTriangle(rb::WatertightRay(rb::Ray{Vec3(0.2, 0.2, -1), Vec3(0, 0, 1)}),
+                                      p0, p1, p2, kInf, below));
+            CHECK(above.t == Approx(1.0).epsilon(1e-15));
+            CHECK(below.t == Approx(1.0).epsilon(1e-15));
+            CHECK(below.b1 == Approx(0.2).epsilon(1e-15));
+        }
+        THEN("a mesh of it is hit from below too, with the winding's normal (0, 0, 1)") {
+            const auto mesh = rbtest::makeMesh({p0, p1, p2}, {{0, 1, 2}});
+            rb::ObjectHit oh;
+            REQUIRE(mesh->intersect(rb::Ray{Vec3(0.2, 0.2, -1), Vec3(0, 0, 1)}, kInf, oh));
+            CHECK(oh.t == Approx(1.0).epsilon(1e-15));
+            CHECK(glm::normalize(oh.n) == Vec3(0, 0, 1));
+        }
+    }
+}
+
+SCENARIO("a degenerate triangle is never hit", "[ch03]") {
+    GIVEN("a triangle with three collinear corners and one with two equal corners") {
+        const Vec3 a(0, 0, 0), b(1, 1, 0), c(2, 2, 0);
+        WHEN("rays pass exactly through their corners and along and across their line") {
+            const rb::Ray rays[] = {
+                {Vec3(1, 1, 1), Vec3(0, 0, -1)},      // through the middle corner, from above
+                {Vec3(0, 0, 1), Vec3(0, 0, -1)},      // through the first corner
+                {Vec3(0.5, 0.5, 3), Vec3(0, 0, -1)},  // through a point of the segment
+                {Vec3(-1, -1, 0), Vec3(1, 1, 0)},     // along the segment itself
+                {Vec3(1, 0, 0), Vec3(-1, 1, 0)},      // across it, in its plane
+                {Vec3(3, -2, 5), Vec3(-2, 3, -5)},    // obliquely through (1, 1, 0)
+            };
+            THEN("no ray hits either triangle, and nothing is reported with a NaN") {
+                for (const rb::Ray& ray : rays) {
+                    CAPTURE(ray.o.x, ray.o.y, ray.o.z);
+                    rb::TriangleHit th{};
+                    CHECK_FALSE(rb::intersectTriangle(rb::WatertightRay(ray), a, b, c, kInf, th));
+                    CHECK_FALSE(rb::intersectTriangle(rb::WatertightRay(ray), a, b, b, kInf, th));
+                    CHECK_FALSE(rb::intersectTriangle(rb::WatertightRay(ray), b, b, b, kInf, th));
+                }
+            }
+        }
+    }
+    GIVEN("OBJ data with one good triangle and two degenerate ones") {
+        THEN("the mesh keeps the good one and counts the two it dropped") {
+            const auto mesh =
+                rbtest::makeMesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0)},
+                                 {{0, 1, 3}, {0, 1, 2}, {2, 2, 2}});
+            CHECK(mesh->triangleCount() == 1);
+            CHECK(mesh->droppedCount() == 2);
+            CHECK(mesh->sourceIndex(0) == 1);
+        }
+        THEN("a mesh with no good triangle at all is an InputError naming it") {
+            CHECK_THROWS_AS(
+                rbtest::makeMesh({Vec3(0), Vec3(1, 0, 0), Vec3(2, 0, 0)}, {{0, 1, 2}}, "flat.obj"),
+                rb::InputError);
+            CHECK_THROWS_WITH(
+                rbtest::makeMesh({Vec3(0), Vec3(1, 0, 0), Vec3(2, 0, 0)}, {{0, 1, 2}}, "flat.obj"),
+                Catch::Contains("flat.obj"));
+        }
+    }
+}
+
+// ---- The BVH ----------------------------------------------------------------------------------
+
+// [ch03-bvh-equals-brute-force]
+SCENARIO("the BVH finds the same closest triangle as testing every triangle", "[ch03]") {
+    GIVEN(
+        "the Stanford bunny (3 674 triangles) and 2 000 random rays aimed into its bounds "
+        "(fixed seed)") {
+        const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
+        REQUIRE(bunny.triangleCount() > 3000);
+        rbtest::Rng rng(2718);
+        int hits = 0, hitMismatch = 0, tMismatch = 0, triangleMismatch = 0, shadowMismatch = 0;
+        for (int k = 0; k < 2000; ++k) {
+            const rb::Ray ray = rayInto(bunny.bounds(), rng);
+            double tBrute;
+            const long slot = bruteForceClosest(bunny, ray, tBrute);
+            rb::ObjectHit oh;
+            const bool found = bunny.intersect(ray, kInf, oh);
+            if (found != (slot >= 0)) {
+                ++hitMismatch;
+                continue;
+            }
+            // The shadow query over the whole ray agrees with the closest-hit query.
+            if (bunny.occluded(ray, kInf) != found) ++shadowMismatch;
+            if (!found) continue;
+            ++hits;
+            // Both run the same triangle test on the same triangle, so t agrees to the last
+            // bits; 1e-12 relative still allows for a different but equally close triangle.
+            if (std::abs(oh.t - tBrute) > 1e-12 * tBrute) ++tMismatch;
+            if (oh.primitive != bunny.sourceIndex(static_cast<size_t>(slot))) ++triangleMismatch;
+            // A shadow ray that stops just short of the hit is free; one just past it is not.
+            if (bunny.occluded(ray, tBrute * (1 - 1e-9))) ++shadowMismatch;
+            if (!bunny.occluded(ray, tBrute * (1 + 1e-9))) ++shadowMismatch;
+        }
+        THEN("hit or miss, the distance, the triangle and the shadow verdict all agree") {
+            CHECK(hits > 500);  // the comparison is about hits, so enough rays must hit
+            CHECK(hitMismatch == 0);
+            CHECK(tMismatch == 0);
+            CHECK(triangleMismatch == 0);
+            CHECK(shadowMismatch == 0);
+        }
+    }
+}
+// [ch03-bvh-equals-brute-force]
+
+SCENARIO("a two-level BVH over instances finds the same hits as testing every instance", "[ch03]") {
+    GIVEN(
+        "400 spheres, 400 boxes and 12 bunnies, each randomly scaled, turned and placed in a "
+        "40-unit cube (fixed seed)") {
+        const rb::Sphere sphere;
+        const rb::Box box;
+        const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
+        rbtest::Rng rng(161);
+        std::vector<rb::Instance> instances;
+        for (int i = 0; i < 812; ++i) {
+            const rb::Shape& shape = i < 400   ? static_cast<const rb::Shape&>(sphere)
+                                     : i < 800 ? static_cast<const rb::Shape&>(box)
+                                               : static_cast<const rb::Shape&>(bunny);
+            const double size = i < 800 ? rng.uniform(0.2, 1.5) : rng.uniform(0.3, 1.0);
+            rb::Mat4 m = glm::translate(
+                rb::Mat4(1.0),
+                Vec3(rng.uniform(-20, 20), rng.uniform(-20, 20), rng.uniform(-20, 20)));
+            m = glm::rotate(m, rng.uniform(0.0, 6.28), rng.unitVector());
+            m = glm::scale(
+                m, size * Vec3(rng.uniform(0.5, 2), rng.uniform(0.5, 2), rng.uniform(0.5, 2)));
+            instances.push_back(rbtest::makeInstance(shape, m, nullptr, "i" + std::to_string(i)));
+        }
+        const rb::LinearAggregate linear(instances);
+        const rb::BVHAggregate bvh(instances);
+        rb::AABB world;
+        for (const rb::Instance& i : instances) world.extend(i.worldBounds);
+        WHEN("3 000 random rays are traced through both") {
+            int hits = 0, hitMismatch = 0, instanceMismatch = 0, tMismatch = 0, shadowMismatch = 0;
+            for (int k = 0; k < 3000; ++k) {
+                const rb::Ray ray = rayInto(world, rng);
+                rb::Hit a, b;
+                const bool foundLinear = linear.intersect(ray, kInf, a);
+                const bool foundBvh = bvh.intersect(ray, kInf, b);
+                if (foundLinear != foundBvh) {
+                    ++hitMismatch;
+                    continue;
+                }
+                // A random segment length: the shadow verdicts must agree with the closest hit.
+                const double tMax = rng.uniform(0.0, 2.0);
+                const bool blocked = foundLinear && a.t < tMax;
+                if (bvh.occluded(ray, tMax) != blocked || linear.occluded(ray, tMax) != blocked)
+                    ++shadowMismatch;
+                if (!foundLinear) continue;
+                ++hits;
+                if (a.instance != b.instance || a.primitive != b.primitive) ++instanceMismatch;
+                if (std::abs(a.t - b.t) > 1e-12 * a.t) ++tMismatch;
+            }
+            THEN(
+                "hit or miss, the instance, the triangle, the distance and the shadow verdict "
+                "all agree") {
+                CHECK(hits > 500);
+                CHECK(hitMismatch == 0);
+                CHECK(instanceMismatch == 0);
+                CHECK(tMismatch == 0);
+                CHECK(shadowMismatch == 0);
+            }
+        }
+        THEN(
+            "the top-level tree is well formed: each node's box holds its children and each "
+            "instance sits in exactly one leaf") {
+            const auto& order = bvh.bvh().primitiveOrder();
+            const TreeReport report =
+                walkTree(bvh.bvh(), instances.size(),
+                         [&](std::uint32_t slot) { return instances[order[slot]].worldBounds; });
+            CHECK(report.nodesReached == bvh.bvh().nodes().size());
+            CHECK(report.badChildBounds == 0);
+            CHECK(report.badLeafBounds == 0);
+            CHECK(std::all_of(report.slotSeen.begin(), report.slotSeen.end(),
+                              [](int n) { return n == 1; }));
+        }
+    }
+}
+
+SCENARIO("a BVH is well formed: boxes nest, and every primitive is in exactly one leaf", "[ch03]") {
+    GIVEN("the bunny's BVH") {
+        const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
+        const rb::BVH& bvh = bunny.bvh();
+        const TreeReport report = walkTree(bvh, bunny.triangleCount(), [&](std::uint32_t slot) {
+            rb::AABB b;
+            for (const Vec3& p : bunny.triangle(slot)) b.extend(p);
+            return b;
+        });
+        THEN("every node is reached once from the root, and no node is orphaned") {
+            CHECK(report.nodesReached == bvh.nodes().size());
+        }
+        THEN(
+            "every node's box contains its children's boxes, and every leaf's box its "
+            "triangles") {
+            CHECK(report.badChildBounds == 0);
+            CHECK(report.badLeafBounds == 0);
+        }
+        THEN("every triangle slot appears in exactly one leaf") {
+            CHECK(std::all_of(report.slotSeen.begin(), report.slotSeen.end(),
+                              [](int n) { return n == 1; }));
+        }
+        THEN("primitiveOrder() is a permutation of 0 … n−1") {
+            std::vector<std::uint32_t> order = bvh.primitiveOrder();
+            std::sort(order.begin(), order.end());
+            bool permutation = order.size() == bunny.triangleCount();
+            for (size_t i = 0; permutation && i < order.size(); ++i) permutation = order[i] == i;
+            CHECK(permutation);
+        }
+        THEN("the tree fits the traversal's fixed stack (one entry per level descended)") {
+            CHECK(bvh.depth() <= rb::BVH::kStackSize);
+        }
+    }
+}
+
+// [ch03-log-cost]
+SCENARIO("the cost of a ray grows like log n with the number of triangles", "[ch03]") {
+    // We count work instead of timing it. For meshes of n = 2 048, 32 768 and 524 288 triangles
+    // (a wavy height field cut ever finer) we trace 2 000 rays that hit the surface (fixed
+    // seed), and count per ray
+    //  - the triangle tests the real traversal (BVH::closest) asks for, through a counting leaf
+    //    callback, and
+    //  - the nodes whose boxes the ray pierces before its hit: the nodes any closest-hit
+    //    traversal must open.
+    // Why log n: the tree halves the triangles at each level, so it has about log2(n/4) levels,
+    // and a ray crossing a surface pierces only a few boxes per level (the ones along its path
+    // near the hit); the leaves it reaches hold at most 4 triangles each. So the work per ray is
+    // about c·log2(n) for a small c. Brute force would be n tests; a uniform grid about n^(1/2).
+    // Each step multiplies n by 16, which adds 4 to log2(n): at most a factor 15/11 ≈ 1.4.
+    GIVEN("meshes of 2 048, 32 768 and 524 288 triangles") {
+        struct Level {
+            int gridSide;
+            double n = 0, triangleTests = 0, nodes = 0;
+        };
+        Level levels[] = {{32}, {128}, {512}};
+        WHEN("2 000 rays per mesh are traced and their work counted") {
+            for (Level& level : levels) {
+                const auto mesh = heightField(level.gridSide);
+                level.n = static_cast<double>(mesh->triangleCount());
+                rbtest::Rng rng(8);
+                long tests = 0, nodes = 0, hits = 0;
+                constexpr int kRays = 2000;
+                for (int k = 0; k < kRays; ++k) {
+                    // From 2 units away, above the surface, to a point of its interior.
+                    const Vec3 target(rng.uniform(0.1, 0.9), rng.uniform(0.1, 0.9), 0.0);
+                    Vec3 up = rng.hemisphere(Vec3(0, 0, 1));
+                    up.z = std::max(up.z, 0.3);
+                    const rb::Ray ray{target + 2.0 * up, -up};
+                    const rb::WatertightRay wray(ray);
+                    double tMax = kInf;
+                    const bool found =
+                        mesh->bvh().closest(ray, tMax, [&](std::uint32_t slot, double& t) {
+                            ++tests;
+                            const auto& v = mesh->triangle(slot);
+                            rb::TriangleHit th;
+                            if (!rb::intersectTriangle(wray, v[0], v[1], v[2], t, th)) return false;
+                            t = th.t;
+                            return true;
+                        });
+                    hits += found;
+                    nodes += nodesPierced(mesh->bvh(), rb::RayInverse(ray), tMax);
+                }
+                REQUIRE(hits > kRays * 99 / 100);  // the rays are aimed at the surface
+                level.triangleTests = static_cast<double>(tests) / kRays;
+                level.nodes = static_cast<double>(nodes) / kRays;
+            }
+            THEN(
+                "16 times the triangles costs less than 3 times the work (linear: 16 times), "
+                "and the work per ray stays below 4·log2(n)") {
+                for (int i = 0; i < 3; ++i) {
+                    const double work = levels[i].triangleTests + levels[i].nodes;
+                    CAPTURE(levels[i].n, levels[i].triangleTests, levels[i].nodes);
+                    CHECK(work < 4.0 * std::log2(levels[i].n));
+                    if (i > 0) {
+                        const double before = levels[i - 1].triangleTests + levels[i - 1].nodes;
+                        CHECK(work < 3.0 * before);
+                    }
+                }
+            }
+        }
+    }
+}
+// [ch03-log-cost]
