@@ -12,7 +12,10 @@ Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, 
                      RayKind kind, const MediumStack& media) {
     const Vec3 origin = offsetRayOrigin(hit.p, hit.ng, side);
     const LobeSampler* lobe = ctx.integrator.pipeline().lobe.get();
-    const int samples = lobe && hit.material ? lobe->sampleCount(*hit.material) : 0;
+    int samples = lobe && hit.material ? lobe->sampleCount(*hit.material) : 0;
+    // Spread into many rays only where the camera sees the glossy surface; a glossy bounce
+    // deeper in the path takes one lobe sample. Otherwise rays multiply like N^depth.
+    if (samples > 1 && ctx.depth > 0) samples = 1;
     if (samples == 0) {
         // One sharp ray.
         ctx.counters.add(kind);

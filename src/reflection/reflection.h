@@ -13,7 +13,9 @@ inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - 2.0 * glm::dot(d,
 /// Radiance arriving at hit from the specular direction `axis` (unit), leaving on the side of
 /// the unit normal `side`. With a glossy lobe installed (chapter 7) and a glossy material, the
 /// average over the lobe's samples; otherwise one sharp ray. Counts rays as `kind`, or as
-/// glossy when the lobe spreads them. Shared by reflection and refraction.
+/// glossy when the lobe spreads them. Only at depth 0 does a glossy surface average many
+/// lobe samples; deeper, it takes one, so the ray count does not grow like N^depth.
+/// Shared by reflection and refraction.
 Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, const Vec3& side,
                      RayKind kind, const MediumStack& media);
 

@@ -1,0 +1,110 @@
+-- Seed 001, "Distributed Raytracer": a car in a white garage, on a platform surrounded by
+-- water. Written in seed 001's own dialect:
+--   gr.phongMat(kd, ks, shininess, reflectivity, glossiness)
+--   gr.transMat(kd, indexOfRefraction, transparency, scatter)
+--   gr.light(position, colour, falloff, {length, width}, normal, left)   (a rectangle)
+--   gr.render(<the ten A4 arguments>, aa, ss, dist, {apertureSize, focalLength, dof})
+-- raybook reads glossiness and scatter as the radius of chapter 7's fuzz sphere.
+--
+-- Chapters used: 1-3, 4 (reflectivity), 5 (gr.transMat), 6 (the rectangular light and ss),
+-- 7 (glossiness, scatter and dist). Parts of the seed's scene that wait for later chapters:
+--   * aa = 1, supersampling                                     chapter 8 (adaptive_aa)
+--   * dof > 0, the thin-lens camera                             chapter 13 (dof)
+--   * node:csg(other, 'u'|'n'|'d'), e.g. cutting wheel arches   chapter 14 (csg)
+--   * gr.cyllinder / gr.cone for the wheels and the lamps       chapter 15 (quadrics)
+--   * the seed's car mesh from the web                          (a primitive car stands in)
+-- Until then the wheels are squashed spheres and the car body is made of boxes.
+
+-- ---- Materials (seed 001's calls) ------------------------------------------------------------
+local white     = gr.phongMat({0.85, 0.85, 0.83}, {0.1, 0.1, 0.1}, 10, 0, 0)
+-- An epoxy garage floor: a faint, blurred reflection.
+local epoxy     = gr.phongMat({0.55, 0.56, 0.58}, {0.3, 0.3, 0.3}, 40, 0.25, 0.15)
+local doorGrey  = gr.phongMat({0.6, 0.62, 0.65}, {0.2, 0.2, 0.2}, 20, 0, 0)
+local stone     = gr.phongMat({0.75, 0.72, 0.66}, {0.1, 0.1, 0.1}, 10, 0, 0)
+local poolTile  = gr.phongMat({0.15, 0.4, 0.55}, {0.3, 0.3, 0.3}, 40, 0, 0)
+-- Clear-coated car paint: a sharp mirror reflection on a red Phong base.
+local paint     = gr.phongMat({0.7, 0.04, 0.03}, {0.8, 0.8, 0.8}, 120, 0.25, 0)
+local chrome    = gr.phongMat({0.05, 0.05, 0.05}, {0.9, 0.9, 0.9}, 200, 0.8, 0)
+local rubber    = gr.phongMat({0.04, 0.04, 0.04}, {0.15, 0.15, 0.15}, 8, 0, 0)
+local seat      = gr.phongMat({0.25, 0.18, 0.12}, {0.1, 0.1, 0.1}, 10, 0, 0)
+-- Tinted windows, clear headlamps, and water (mostly transparent, tinted blue-green).
+local tinted    = gr.transMat({0.05, 0.06, 0.08}, 1.5, 0.75, 0)
+local lampGlass = gr.transMat({0.9, 0.9, 0.8}, 1.5, 0.9, 0)
+local water     = gr.transMat({0.05, 0.25, 0.3}, 1.33, 0.8, 0)
+
+local root = gr.node('root')
+
+--- A box from corner lo to corner hi under `parent`.
+local function box(parent, name, lo, hi, material)
+  local b = gr.cube(name)
+  b:scale(hi[1] - lo[1], hi[2] - lo[2], hi[3] - lo[3])
+  b:translate(lo[1], lo[2], lo[3])
+  b:set_material(material)
+  parent:add_child(b)
+  return b
+end
+
+--- An ellipsoid with centre c and radii r under `parent`.
+local function ellipsoid(parent, name, c, r, material)
+  local s = gr.sphere(name)
+  s:scale(r[1], r[2], r[3])
+  s:translate(c[1], c[2], c[3])
+  s:set_material(material)
+  parent:add_child(s)
+  return s
+end
+
+-- ---- The garage ----------------------------------------------------------------------------
+-- The floor has a pool at x in [-4, 4], z in [-8, -2]; the platform stands in it.
+box(root, 'floor front', {-6, -0.6, -2}, {6, 0, 3}, epoxy)
+box(root, 'floor back',  {-6, -0.6, -10}, {6, 0, -8}, epoxy)
+box(root, 'floor left',  {-6, -0.6, -8}, {-4, 0, -2}, epoxy)
+box(root, 'floor right', {4, -0.6, -8}, {6, 0, -2}, epoxy)
+box(root, 'pool floor',  {-4, -0.7, -8}, {4, -0.6, -2}, poolTile)
+-- The water overlaps the pool's floor and walls a little, so that they lie inside it.
+box(root, 'water', {-4.02, -0.65, -8.02}, {4.02, -0.12, -1.98}, water)
+box(root, 'platform', {-2.8, -0.6, -6.4}, {2.8, 0.2, -3.6}, stone)
+
+box(root, 'back wall',  {-6, 0, -10.2}, {6, 4, -10}, white)
+box(root, 'left wall',  {-6.2, 0, -10}, {-6, 4, 3}, white)
+box(root, 'right wall', {6, 0, -10}, {6.2, 4, 3}, white)
+box(root, 'ceiling',    {-6, 4, -10}, {6, 4.2, 3}, white)
+-- A sectional garage door in the back wall.
+for i = 0, 5 do
+  box(root, 'door panel', {-2.5, 0.05 + i * 0.5, -10}, {2.5, 0.5 + i * 0.5, -9.95}, doorGrey)
+end
+
+-- ---- The car (x: front to back, y: up, z: side to side) -------------------------------------
+local car = gr.node('car')
+box(car, 'body', {-2.0, 0.3, -0.9}, {2.0, 0.85, 0.9}, paint)
+box(car, 'bonnet', {0.9, 0.85, -0.85}, {2.0, 0.95, 0.85}, paint)
+box(car, 'cabin', {-1.2, 0.85, -0.8}, {0.9, 1.38, 0.8}, tinted)
+box(car, 'roof', {-1.25, 1.38, -0.82}, {0.75, 1.48, 0.82}, paint)
+box(car, 'front seat', {-0.3, 0.85, -0.6}, {0.2, 1.25, 0.6}, seat)
+box(car, 'back seat', {-1.15, 0.85, -0.6}, {-0.7, 1.2, 0.6}, seat)
+box(car, 'front bumper', {2.0, 0.3, -0.95}, {2.12, 0.48, 0.95}, chrome)
+box(car, 'rear bumper', {-2.12, 0.3, -0.95}, {-2.0, 0.48, 0.95}, chrome)
+for _, z in ipairs({-0.6, 0.6}) do
+  ellipsoid(car, 'headlamp', {2.0, 0.68, z}, {0.06, 0.12, 0.18}, lampGlass)
+end
+for _, x in ipairs({-1.3, 1.3}) do
+  for _, side in ipairs({-1, 1}) do
+    ellipsoid(car, 'tyre', {x, 0.38, side * 0.9}, {0.38, 0.38, 0.16}, rubber)
+    ellipsoid(car, 'hub cap', {x, 0.38, side * 1.0}, {0.2, 0.2, 0.08}, chrome)
+  end
+end
+car:rotate('y', -35)
+car:translate(0, 0.2, -5)
+root:add_child(car)
+
+-- ---- Lights: a rectangular ceiling panel (seed 001's six-argument gr.light) and a fill -------
+local panel = gr.light({0, 3.95, -5}, {0.85, 0.85, 0.8}, {1, 0, 0},
+                       {4, 2}, {0, -1, 0}, {1, 0, 0})
+local fill  = gr.light({4, 3, 2}, {0.25, 0.25, 0.28}, {1, 0, 0})
+
+-- aa = 0 (chapter 8), ss = 3 (3 x 3 shadow rays per light), dist = 2 (2 x 2 glossy rays),
+-- and the depth of field switched off (dof = 0; chapter 13).
+gr.render(root, '001-garage.png', 320, 240,
+          {4.2, 2.3, 1.2}, {-4.2, -1.7, -6.2}, {0, 1, 0}, 45,
+          {0.3, 0.3, 0.3}, {panel, fill},
+          0, 3, 2, {0.05, 9, 0})

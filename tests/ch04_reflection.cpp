@@ -1,0 +1,945 @@
+/// \file
+/// Chapter 4 tests: mirror reflection and the recursion limit.
+///
+/// Chapter 4 claims that a mirror sends a ray on along r = d − 2(d·n)n (the angle out equals
+/// the angle in, in the plane of d and n, with the length kept), that a mirror of reflectivity r
+/// passes on the fraction r of what it sees, so light that has bounced k times between mirrors
+/// carries r^k, and that the recursion stops after `maxDepth` reflections, which truncates the
+/// geometric series of a hall of mirrors after exactly that many terms. It also claims that the
+/// chapter is free when unused: a depth limit of 0, a reflectivity of 0, a scene without mirrors
+/// and `--features=all,-reflection` all give chapter 2's Phong image, bit for bit.
+///
+/// The tests check the law on many random directions; build a corridor of two parallel mirror
+/// slabs with the real integrator and pipeline (chapters 1–4 installed as `rt` installs them),
+/// in which a tilted ray zig-zags a known number of times before it reaches a wall lit only by
+/// ambient light, so the exact answer is r^k · kd · ambient; compare whole rendered images bit
+/// for bit; and load Lua scenes with the chapter's own and the seeds' material calls. The
+/// [stability] cases trace 1000 bounces between perfect mirrors, rays that meet a mirror exactly
+/// on its edge, and reflections off mirrors from 1e-3 to 1e4 units in size. Nothing here is
+/// random except the test directions, which come from std::mt19937_64 with fixed seeds (the
+/// tests also pass with 20 other seeds for every stream; checked locally).
+#include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/box.h"
+#include "core/camera.h"
+#include "core/chapter_features.h"
+#include "core/error.h"
+#include "core/image.h"
+#include "core/lua_scene.h"
+#include "core/mesh.h"
+#include "core/render.h"
+#include "core/render_context.h"
+#include "core/sphere.h"
+#include "reflection/reflection.h"
+
+using Catch::Contains;
+using rb::Colour;
+using rb::Mat4;
+using rb::Vec3;
+
+namespace {
+
+// ---- Helpers --------------------------------------------------------------------------------
+
+/// Uniform numbers from a fixed seed, taken from the raw std::mt19937_64 stream (which the
+/// standard fixes), so every platform draws the same test directions.
+class TestRng {
+  public:
+    explicit TestRng(std::uint64_t seed) : engine_(seed) {}
+    /// A uniform double in [0, 1).
+    double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
+    /// A uniform double in [lo, hi).
+    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+    /// A uniform unit vector. Source: Archimedes' hat-box theorem (z and φ uniform).
+    Vec3 unitVector() {
+        const double z = 1.0 - 2.0 * uniform();
+        const double phi = 2.0 * M_PI * uniform();
+        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+        return {r * std::cos(phi), r * std::sin(phi), z};
+    }
+
+  private:
+    std::mt19937_64 engine_;
+};
+
+/// Chapters 1–4 as a chapter-4 binary holds them, switched on by `spec`.
+rb::FeatureSet chapter4Features(const std::string& spec = "all") {
+    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature(),
+                           rb::reflectionFeature()},
+                          spec);
+}
+
+/// Chapters 1–3 only: a build without this chapter.
+rb::FeatureSet chapter3Features() {
+    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature()},
+                          "all");
+}
+
+/// A world assembled in code and put together the way `rt` does it (src/core/main.cpp):
+/// every enabled feature installs itself into the pipeline, then the aggregate is built.
+/// Not movable: the aggregate refers to scene.instances.
+class TestWorld {
+  public:
+    TestWorld() = default;
+    TestWorld(const TestWorld&) = delete;
+    TestWorld& operator=(const TestWorld&) = delete;
+
+    /// A material that lives as long as the world: kd, no specular, and reflectivity `reflect`
+    /// (not set at all when negative, so the material is plain A4 Phong).
+    const rb::Material* material(const Colour& kd, double reflect = -1.0,
+                                 const Colour& ks = Colour(0.0), double shininess = 1.0) {
+        rb::Material m;
+        m.kd = kd;
+        m.ks = ks;
+        m.shininess = shininess;
+        if (reflect >= 0.0) m.params["reflect"] = reflect;
+        materials_.push_back(m);
+        return &materials_.back();
+    }
+    /// Place the unit cube [0,1]³ by objectToWorld.
+    void addBox(const Mat4& objectToWorld, const rb::Material* m) { add(box_, objectToWorld, m); }
+    /// Place the unit sphere by objectToWorld.
+    void addSphere(const Mat4& objectToWorld, const rb::Material* m) {
+        add(sphere_, objectToWorld, m);
+    }
+    /// Place any shape (which must outlive the world).
+    void add(const rb::Shape& shape, const Mat4& objectToWorld, const rb::Material* m) {
+        rb::Instance instance;
+        instance.shape = &shape;
+        instance.material = m;
+        instance.name = "test";
+        instance.setTransform(objectToWorld);
+        scene.instances.push_back(instance);
+    }
+    /// Install the features that `features` switches on and build the aggregate.
+    void build(const rb::FeatureSet& features, int maxDepth) {
+        scene.maxDepth = maxDepth;
+        const rb::RenderJob job;
+        const std::map<std::string, std::string> commandLine;
+        const rb::RenderContext context{scene.instances, job, commandLine};
+        for (const rb::Feature& f : features.on())
+            if (f.install) f.install(pipeline, scene, context);
+        scene.aggregate = pipeline.buildAggregate(scene.instances);
+    }
+    /// The radiance the integrator returns along one ray; counts rays into `counters`.
+    Colour trace(const rb::Ray& ray, rb::RayCounters& counters) const {
+        const rb::Integrator integrator(scene, pipeline);
+        rb::Sampler sampler(0, 0, 0);
+        return integrator.trace(ray, sampler, counters, 0);
+    }
+    Colour trace(const rb::Ray& ray) const {
+        rb::RayCounters counters;
+        return trace(ray, counters);
+    }
+
+    rb::Scene scene;
+    rb::Pipeline pipeline;
+
+  private:
+    std::deque<rb::Material> materials_;  // a deque never moves its elements
+    rb::Box box_;
+    rb::Sphere sphere_;
+};
+
+/// Reflection rays counted.
+std::uint64_t reflections(const rb::RayCounters& c) {
+    return c.count[static_cast<int>(rb::RayKind::Reflection)];
+}
+
+/// True when every channel is a finite, non-negative number.
+bool finiteNonNegative(const Colour& c) {
+    return rb::isFinite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0;
+}
+
+/// The unit cube stretched into the box [lo, hi].
+Mat4 boxFromTo(const Vec3& lo, const Vec3& hi) {
+    return glm::scale(glm::translate(Mat4(1.0), lo), hi - lo);
+}
+
+/// The ambient light of the corridor tests; kd = 1 turns it into the target's colour.
+const Colour kAmbient(0.2, 0.4, 0.8);
+
+/// Two parallel mirror slabs facing each other across x: their inner faces are the planes
+/// x = −1 and x = +1, and they reach far along y and z. Mirror material: kd = `mirrorKd`,
+/// reflectivity r.
+void addCorridor(TestWorld& world, double r, const Colour& mirrorKd = Colour(0.0)) {
+    const rb::Material* mirror = world.material(mirrorKd, r);
+    world.addBox(boxFromTo({-1.1, -50.0, -2.0}, {-1.0, 50.0, 2.0}), mirror);
+    world.addBox(boxFromTo({1.0, -50.0, -2.0}, {1.1, 50.0, 2.0}), mirror);
+}
+
+/// Slope of the zig-zag ray: from the origin along (1, s, 0) it meets x = ±1 at
+/// y = s, 3s, 5s, ... (one crossing of the corridor, 2 units wide, climbs 2s).
+constexpr double kSlope = 0.1;
+
+/// The y of a wall across the corridor that the zig-zag ray reaches after exactly k
+/// reflections: halfway up its (k+1)-th leg, which spans y ∈ ((2k−1)s, (2k+1)s) for k ≥ 1
+/// and (0, s) for k = 0. Source: hand derivation from the mirror hits at y = (2j−1)s.
+double wallHeightAfter(int k) {
+    return (2.0 * k + 0.5) * kSlope;
+}
+
+/// Write a scene script into a fresh temporary folder and run it through rb::loadScene.
+std::vector<rb::LoadedRender> loadLua(const std::string& lua, const rb::FeatureSet& features) {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("raybook-ch04-" + std::to_string(std::random_device{}()));
+    std::filesystem::create_directories(dir);
+    const auto file = dir / "scene.lua";
+    {
+        std::ofstream out(file);
+        out << lua;
+    }
+    struct Cleanup {
+        std::filesystem::path p;
+        ~Cleanup() {
+            std::error_code ec;
+            std::filesystem::remove_all(p, ec);
+        }
+    } cleanup{dir};
+    return rb::loadScene(file.string(), features, rb::SceneLoadOptions{});
+}
+
+/// The gr.render line most Lua tests end with.
+const std::string kRenderLine =
+    "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50, {0.1, 0.1, 0.1},"
+    " {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0})})\n";
+
+/// A scene whose only object carries the material made by the Lua expression `material`.
+std::string oneMaterialScene(const std::string& material) {
+    return "local m = " + material +
+           "\n"
+           "root = gr.node('root')\n"
+           "local s = gr.sphere('s')\n"
+           "s:set_material(m)\n"
+           "root:add_child(s)\n" +
+           kRenderLine;
+}
+
+/// The material of the first instance of the first render of a scene.
+rb::Material materialOf(const std::string& material, const rb::FeatureSet& features) {
+    const auto renders = loadLua(oneMaterialScene(material), features);
+    REQUIRE(renders.size() == 1);
+    REQUIRE(renders[0].instances.size() == 1);
+    REQUIRE(renders[0].instances[0].material != nullptr);
+    return *renders[0].instances[0].material;
+}
+
+/// A world built from one loaded render request the way `rt` builds it: the scene's lights,
+/// ambient light and max_depth option; `maxDepth` ≥ 0 overrides like --max-depth.
+struct LoadedWorld {
+    rb::LoadedRender loaded;  ///< Keeps the scene graph (shapes and materials) alive.
+    rb::Scene scene;
+    rb::Pipeline pipeline;
+    LoadedWorld() = default;
+    LoadedWorld(const LoadedWorld&) = delete;
+    LoadedWorld& operator=(const LoadedWorld&) = delete;
+};
+
+std::unique_ptr<LoadedWorld> buildLoaded(rb::LoadedRender render, const rb::FeatureSet& features,
+                                         int maxDepth = -1) {
+    auto w = std::make_unique<LoadedWorld>();
+    w->loaded = std::move(render);
+    rb::Scene& scene = w->scene;
+    scene.instances = std::move(w->loaded.instances);
+    scene.lights = w->loaded.job.lights;
+    scene.ambient = w->loaded.job.ambient;
+    const auto& options = w->loaded.job.options;
+    if (options.count("max_depth")) scene.maxDepth = static_cast<int>(options.at("max_depth"));
+    if (maxDepth >= 0) scene.maxDepth = maxDepth;
+    const std::map<std::string, std::string> commandLine;
+    const rb::RenderContext context{scene.instances, w->loaded.job, commandLine};
+    for (const rb::Feature& f : features.on())
+        if (f.install) f.install(w->pipeline, scene, context);
+    scene.aggregate = w->pipeline.buildAggregate(scene.instances);
+    return w;
+}
+
+/// Load a scene file of the repository with the given features.
+std::unique_ptr<LoadedWorld> loadRepoScene(const std::string& relative,
+                                           const rb::FeatureSet& features, int maxDepth = -1) {
+    auto renders = rb::loadScene(std::string(RB_SOURCE_DIR) + "/" + relative, features,
+                                 rb::SceneLoadOptions{});
+    REQUIRE(!renders.empty());
+    return buildLoaded(std::move(renders[0]), features, maxDepth);
+}
+
+/// Render a loaded world small, on one thread, with one ray per pixel centre.
+rb::Image renderSmall(const LoadedWorld& w, int width = 64, int height = 48) {
+    const rb::PinholeCamera camera(w.loaded.job.camera, width, height);
+    rb::RenderSettings settings;
+    settings.threads = 1;
+    rb::RayCounters counters;
+    return rb::render(w.scene, w.pipeline, camera, width, height, settings, counters);
+}
+
+/// True when two images hold exactly the same bits.
+bool bitIdentical(const rb::Image& a, const rb::Image& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
+}
+
+}  // namespace
+
+// ---- The law of reflection ------------------------------------------------------------------
+
+// [ch04-reflection-law]
+SCENARIO("a mirror sends light out at the angle it came in, in the plane of d and n", "[ch04]") {
+    GIVEN("10,000 random unit directions d and random unit normals n") {
+        TestRng rng(4);
+        WHEN("each d is reflected about its n: r = d − 2(d·n)n") {
+            THEN(
+                "the angle to the normal is mirrored, the tangential part kept, the length "
+                "kept, and r lies in the plane of d and n") {
+                for (int i = 0; i < 10000; ++i) {
+                    const Vec3 d = rng.unitVector();
+                    const Vec3 n = rng.unitVector();
+                    const Vec3 r = rb::reflect(d, n);
+                    // Source: the law of reflection, θ_r = θ_i, with r in the plane of
+                    // incidence; |r|² = |d|² − 4(d·n)² + 4(d·n)²|n|² = |d|² for unit n.
+                    const double cosTheta_i = glm::dot(d, n);
+                    const double cosTheta_r = glm::dot(r, n);
+                    REQUIRE(cosTheta_r == Approx(-cosTheta_i).margin(1e-15));
+                    const Vec3 tangent_i = d - cosTheta_i * n;
+                    const Vec3 tangent_r = r - cosTheta_r * n;
+                    REQUIRE(glm::length(tangent_r - tangent_i) < 1e-15);
+                    REQUIRE(glm::length(r) == Approx(1.0).epsilon(1e-15));
+                    REQUIRE(std::abs(glm::dot(r, glm::cross(d, n))) < 1e-15);
+                }
+            }
+        }
+    }
+}
+// [ch04-reflection-law]
+
+SCENARIO("reflecting twice about the same normal gives the ray back", "[ch04]") {
+    GIVEN("random directions of any length and unit normals") {
+        TestRng rng(40);
+        THEN("reflect(reflect(d, n), n) = d, and |reflect(d, n)| = |d|") {
+            for (int i = 0; i < 1000; ++i) {
+                const Vec3 d = rng.uniform(0.01, 100.0) * rng.unitVector();
+                const Vec3 n = rng.unitVector();
+                // Source: the reflection I − 2nnᵀ is an involution and an isometry.
+                const Vec3 back = rb::reflect(rb::reflect(d, n), n);
+                REQUIRE(glm::length(back - d) <= 1e-13 * glm::length(d));
+                REQUIRE(glm::length(rb::reflect(d, n)) == Approx(glm::length(d)).epsilon(1e-14));
+            }
+        }
+    }
+    GIVEN("a ray straight down onto a floor") {
+        THEN("it comes straight back up; at 45° it leaves at 45° on the other side") {
+            // Source: hand evaluation of d − 2(d·n)n.
+            REQUIRE(rb::reflect(Vec3(0, -1, 0), Vec3(0, 1, 0)) == Vec3(0, 1, 0));
+            REQUIRE(rb::reflect(Vec3(1, -1, 0), Vec3(0, 1, 0)) == Vec3(1, 1, 0));
+            // A grazing ray passes unchanged.
+            REQUIRE(rb::reflect(Vec3(1, 0, 0), Vec3(0, 1, 0)) == Vec3(1, 0, 0));
+        }
+    }
+}
+
+// ---- Energy: r^k after k bounces --------------------------------------------------------------
+
+// [ch04-rk]
+SCENARIO("light that bounced k times between mirrors of reflectivity r carries r^k", "[ch04]") {
+    for (const double r : {0.3, 0.5, 0.9, 1.0}) {
+        for (int k = 0; k <= 8; ++k) {
+            GIVEN("a corridor of two black mirrors (kd = 0, reflect = " + std::to_string(r) +
+                  ") and a white wall lit only by ambient light, k = " + std::to_string(k)) {
+                TestWorld world;
+                addCorridor(world, r);
+                // The wall: kd = 1, so its Phong colour with no lights is exactly kd · ambient.
+                const double y = wallHeightAfter(k);
+                world.addBox(boxFromTo({-0.9, y, -2.0}, {0.9, y + 1.0, 2.0}),
+                             world.material(Colour(1.0)));
+                world.scene.ambient = kAmbient;
+                world.build(chapter4Features(), /*maxDepth=*/20);
+                WHEN("a ray leaves the middle of the corridor along (1, s, 0)") {
+                    rb::RayCounters counters;
+                    const Colour L =
+                        world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, kSlope, 0.0)}, counters);
+                    THEN("it reflects exactly k times and returns r^k · kd · ambient") {
+                        // Source: each mirror adds r · (what it sees) to its own colour,
+                        // which is kd_mirror · ambient = 0; k nested mirrors give r^k · L_wall.
+                        REQUIRE(reflections(counters) == static_cast<std::uint64_t>(k));
+                        const Colour expected = std::pow(r, k) * kAmbient;
+                        CHECK(L.r == Approx(expected.r).epsilon(1e-12));
+                        CHECK(L.g == Approx(expected.g).epsilon(1e-12));
+                        CHECK(L.b == Approx(expected.b).epsilon(1e-12));
+                    }
+                }
+            }
+        }
+    }
+}
+// [ch04-rk]
+
+SCENARIO("the depth limit cuts off images that need more bounces than it allows", "[ch04]") {
+    GIVEN("the corridor with r = 0.8 and the wall 5 reflections away") {
+        const double r = 0.8;
+        const int k = 5;
+        for (int maxDepth = 0; maxDepth <= 8; ++maxDepth) {
+            TestWorld world;
+            addCorridor(world, r);
+            const double y = wallHeightAfter(k);
+            world.addBox(boxFromTo({-0.9, y, -2.0}, {0.9, y + 1.0, 2.0}),
+                         world.material(Colour(1.0)));
+            world.scene.ambient = kAmbient;
+            world.build(chapter4Features(), maxDepth);
+            WHEN("the depth limit is " + std::to_string(maxDepth)) {
+                rb::RayCounters counters;
+                const Colour L = world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, kSlope, 0.0)}, counters);
+                THEN("the wall is seen (as r^5 · ambient) only when maxDepth ≥ 5; else black") {
+                    // Source: the term adds nothing at depth ≥ maxDepth, so at most maxDepth
+                    // reflections are traced; the mirrors themselves are black.
+                    REQUIRE(reflections(counters) ==
+                            static_cast<std::uint64_t>(std::min(maxDepth, k)));
+                    const Colour expected = maxDepth >= k ? std::pow(r, k) * kAmbient : Colour(0.0);
+                    CHECK(L.r == Approx(expected.r).epsilon(1e-12));
+                    CHECK(L.g == Approx(expected.g).epsilon(1e-12));
+                    CHECK(L.b == Approx(expected.b).epsilon(1e-12));
+                }
+            }
+        }
+    }
+}
+
+// [ch04-depth-series]
+SCENARIO("a ray trapped between two facing mirrors sums a geometric series cut at maxDepth",
+         "[ch04]") {
+    for (const double r : {0.5, 0.9, 1.0}) {
+        for (int maxDepth = 0; maxDepth <= 12; ++maxDepth) {
+            GIVEN("two grey mirrors (kd = 0.5, reflect = " + std::to_string(r) +
+                  ") in ambient light, depth limit " + std::to_string(maxDepth)) {
+                const Colour kd(0.5);
+                TestWorld world;
+                addCorridor(world, r, kd);
+                world.scene.ambient = kAmbient;
+                world.build(chapter4Features(), maxDepth);
+                WHEN("a ray runs along the mirrors' normal, bouncing back and forth forever") {
+                    rb::RayCounters counters;
+                    const Colour L = world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, 0.0, 0.0)}, counters);
+                    THEN("L = kd·ambient · (1 − r^(D+1)) / (1 − r), after exactly D reflections") {
+                        // Source: L_j = kd·a + r·L_{j+1} with L_D = kd·a unrolls to
+                        // kd·a · Σ_{j=0..D} r^j, the geometric series; (D+1)·kd·a for r = 1.
+                        const double sum = r == 1.0 ? maxDepth + 1.0
+                                                    : (1.0 - std::pow(r, maxDepth + 1)) / (1.0 - r);
+                        const Colour expected = sum * kd * kAmbient;
+                        REQUIRE(reflections(counters) == static_cast<std::uint64_t>(maxDepth));
+                        CHECK(L.r == Approx(expected.r).epsilon(1e-12));
+                        CHECK(L.g == Approx(expected.g).epsilon(1e-12));
+                        CHECK(L.b == Approx(expected.b).epsilon(1e-12));
+                    }
+                }
+            }
+        }
+    }
+}
+// [ch04-depth-series]
+
+// ---- When the chapter changes nothing ---------------------------------------------------------
+
+// [ch04-depth0-is-phong]
+SCENARIO("with a depth limit of 0 the chapter scene renders exactly as chapter 2 would", "[ch04]") {
+    GIVEN("scenes/chapter04-reflection.lua, which has mirrors") {
+        WHEN("it is rendered with maxDepth 0, and with --features=all,-reflection") {
+            const auto depthZero =
+                loadRepoScene("scenes/chapter04-reflection.lua", chapter4Features("all"), 0);
+            const auto featureOff = loadRepoScene("scenes/chapter04-reflection.lua",
+                                                  chapter4Features("all,-reflection"));
+            const auto full =
+                loadRepoScene("scenes/chapter04-reflection.lua", chapter4Features("all"));
+            REQUIRE(depthZero->pipeline.terms.size() == 1);
+            REQUIRE(featureOff->pipeline.terms.empty());
+            const rb::Image a = renderSmall(*depthZero);
+            const rb::Image b = renderSmall(*featureOff);
+            THEN("the two images are bit-identical (and differ from the render with mirrors)") {
+                // Source: the term returns its input unchanged at depth ≥ maxDepth = 0.
+                REQUIRE(bitIdentical(a, b));
+                REQUIRE_FALSE(bitIdentical(a, renderSmall(*full)));
+            }
+        }
+    }
+}
+// [ch04-depth0-is-phong]
+
+SCENARIO("a scene without mirrors pays nothing for chapter 4", "[ch04]") {
+    GIVEN("chapter 2's scene, which uses no `reflect`") {
+        const auto withChapter4 = loadRepoScene("scenes/chapter02-phong.lua", chapter4Features());
+        const auto chapter3Only = loadRepoScene("scenes/chapter02-phong.lua", chapter3Features());
+        THEN("install() adds no shading term, and the image equals chapter 3's bit for bit") {
+            REQUIRE(withChapter4->pipeline.terms.empty());
+            REQUIRE(bitIdentical(renderSmall(*withChapter4), renderSmall(*chapter3Only)));
+        }
+    }
+    GIVEN("a material that sets reflect = 0 explicitly") {
+        auto renders = loadLua(oneMaterialScene("gr.material{kd = {1, 0, 0}, reflect = 0}"),
+                               chapter4Features());
+        const auto world = buildLoaded(std::move(renders[0]), chapter4Features());
+        THEN("no term is installed either") {
+            REQUIRE(world->pipeline.terms.empty());
+        }
+    }
+    GIVEN("a material with reflect = 0.5") {
+        auto renders = loadLua(oneMaterialScene("gr.material{kd = {1, 0, 0}, reflect = 0.5}"),
+                               chapter4Features());
+        const auto world = buildLoaded(std::move(renders[0]), chapter4Features());
+        THEN("exactly one term, the reflection term, is installed") {
+            REQUIRE(world->pipeline.terms.size() == 1);
+            REQUIRE(dynamic_cast<const rb::ReflectionTerm*>(world->pipeline.terms[0].get()));
+        }
+    }
+}
+
+namespace {
+/// A lit room with a mirror sphere, a sphere with reflect = 0, a floor and a dim blue
+/// background: the scene of the next two scenarios. `mirrorReflect` < 0 makes the mirror a plain
+/// Phong material.
+void addMirrorRoom(TestWorld& world, double mirrorReflect, const rb::Material** zeroOut,
+                   const rb::Material** mirrorOut) {
+    const rb::Material* mirror =
+        world.material(Colour(0.2, 0.3, 0.4), mirrorReflect, Colour(0.6), 40.0);
+    const rb::Material* zero = world.material(Colour(0.8, 0.2, 0.1), 0.0, Colour(0.5), 20.0);
+    const rb::Material* floor = world.material(Colour(0.5, 0.5, 0.45));
+    world.addSphere(glm::scale(glm::translate(Mat4(1.0), Vec3(-1.2, 0.0, -5.0)), Vec3(1.0)),
+                    mirror);
+    world.addSphere(glm::scale(glm::translate(Mat4(1.0), Vec3(1.3, -0.2, -4.5)), Vec3(0.8)), zero);
+    world.addBox(boxFromTo({-10, -2, -20}, {10, -1, 5}), floor);
+    world.scene.ambient = Colour(0.15);
+    world.scene.background = Colour(0.05, 0.1, 0.2);  // so every reflection adds something
+    world.scene.lights.push_back(rb::PointLight{Vec3(-3, 5, 2), Colour(0.9), Vec3(1, 0, 0), {}});
+    world.scene.lights.push_back(rb::PointLight{Vec3(4, 3, 0), Colour(0.4), Vec3(1, 0, 0), {}});
+    if (zeroOut) *zeroOut = zero;
+    if (mirrorOut) *mirrorOut = mirror;
+}
+
+/// The colour of every pixel centre whose camera ray first hits a surface of material `m`.
+std::vector<Colour> pixelsOf(const TestWorld& world, const rb::Material* m) {
+    rb::CameraSpec spec;
+    spec.eye = Vec3(0, 0.5, 2);
+    spec.view = Vec3(0, -0.2, -1);
+    const rb::PinholeCamera camera(spec, 48, 36);
+    std::vector<Colour> out;
+    for (int y = 0; y < 36; ++y)
+        for (int x = 0; x < 48; ++x) {
+            const rb::Ray ray = camera.generateRay(x + 0.5, y + 0.5);
+            rb::Hit hit;
+            if (!world.scene.aggregate->intersect(ray, INFINITY, hit) || hit.material != m)
+                continue;
+            out.push_back(world.trace(ray));
+        }
+    return out;
+}
+}  // namespace
+
+SCENARIO("reflectivity 0 shades exactly as plain Phong", "[ch04]") {
+    GIVEN("a room with a mirror (so the reflection term is installed) and a reflect = 0 ball") {
+        TestWorld on, off;
+        const rb::Material* zeroOn = nullptr;
+        const rb::Material* zeroOff = nullptr;
+        addMirrorRoom(on, 0.7, &zeroOn, nullptr);
+        addMirrorRoom(off, 0.7, &zeroOff, nullptr);
+        on.build(chapter4Features("all"), 5);
+        off.build(chapter4Features("all,-reflection"), 5);
+        REQUIRE(on.pipeline.terms.size() == 1);
+        WHEN("the ball is seen with the chapter on and with it off") {
+            const auto a = pixelsOf(on, zeroOn);
+            const auto b = pixelsOf(off, zeroOff);
+            THEN("every pixel of the ball is bit-identical") {
+                // Source: the term returns its input unchanged when reflect ≤ 0.
+                REQUIRE(a.size() > 50);
+                REQUIRE(a.size() == b.size());
+                for (size_t i = 0; i < a.size(); ++i) REQUIRE(a[i] == b[i]);
+            }
+        }
+    }
+}
+
+// [ch04-feature-off]
+SCENARIO("with --features=all,-reflection a mirror shades as plain Phong", "[ch04]") {
+    GIVEN("the room with a mirror ball (reflect = 0.7), and the same room with a Phong ball") {
+        TestWorld off, phong, on;
+        const rb::Material* mirrorOff = nullptr;
+        const rb::Material* mirrorPhong = nullptr;
+        const rb::Material* mirrorOn = nullptr;
+        addMirrorRoom(off, 0.7, nullptr, &mirrorOff);
+        addMirrorRoom(phong, -1.0, nullptr, &mirrorPhong);
+        addMirrorRoom(on, 0.7, nullptr, &mirrorOn);
+        off.build(chapter4Features("all,-reflection"), 5);
+        phong.build(chapter4Features("all"), 5);
+        on.build(chapter4Features("all"), 5);
+        WHEN("the mirror is rendered with the chapter switched off") {
+            const auto a = pixelsOf(off, mirrorOff);
+            const auto b = pixelsOf(phong, mirrorPhong);
+            const auto c = pixelsOf(on, mirrorOn);
+            THEN("its pixels equal plain Phong's bit for bit (and differ with the chapter on)") {
+                REQUIRE(off.pipeline.terms.empty());
+                REQUIRE(a.size() > 50);
+                REQUIRE(a.size() == b.size());
+                size_t differentWhenOn = 0;
+                for (size_t i = 0; i < a.size(); ++i) {
+                    REQUIRE(a[i] == b[i]);
+                    if (c[i] != a[i]) ++differentWhenOn;
+                }
+                REQUIRE(differentWhenOn == a.size());
+            }
+        }
+    }
+}
+// [ch04-feature-off]
+
+SCENARIO("a mirror seen from behind reflects like its front (no back-face culling)", "[ch04]") {
+    GIVEN("a single mirror triangle in the plane z = 0, its normal along +z") {
+        rb::ObjData data;
+        data.positions = {Vec3(-5, -5, 0), Vec3(5, -5, 0), Vec3(0, 5, 0)};
+        data.triangles.push_back({rb::ObjCorner{0}, rb::ObjCorner{1}, rb::ObjCorner{2}});
+        const rb::Mesh mesh(data, "mirror.obj");
+        TestWorld world;
+        world.add(mesh, Mat4(1.0), world.material(Colour(0.0), 0.5));
+        world.scene.background = Colour(0.25, 0.5, 1.0);
+        world.build(chapter4Features(), 5);
+        for (const double side : {1.0, -1.0}) {
+            WHEN("a ray meets it at 45° from the " + std::string(side > 0 ? "front" : "back")) {
+                rb::RayCounters counters;
+                const Colour L = world.trace(
+                    rb::Ray{Vec3(-1.0, 0.0, side * 1.0), Vec3(1.0, 0.0, -side)}, counters);
+                THEN("it reflects once into the open: L = r · background") {
+                    // Source: kd = 0, and the mirrored ray escapes to the background.
+                    REQUIRE(reflections(counters) == 1);
+                    REQUIRE(L == 0.5 * world.scene.background);
+                }
+            }
+        }
+    }
+}
+
+// ---- Stability ---------------------------------------------------------------------------------
+
+SCENARIO("1000 bounces between perfect mirrors end, with a finite colour", "[ch04][stability]") {
+    GIVEN("two facing mirrors with r = 1, a faint kd, and maxDepth = 1000") {
+        const Colour kd(1e-3);
+        TestWorld world;
+        addCorridor(world, 1.0, kd);
+        world.scene.ambient = kAmbient;
+        world.build(chapter4Features(), 1000);
+        WHEN("a ray runs along their normal") {
+            rb::RayCounters counters;
+            const Colour L = world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, 0.0, 0.0)}, counters);
+            THEN("the recursion stops after 1000 reflections with L = 1001 · kd · ambient") {
+                // Source: the geometric series with r = 1 is (D + 1) terms of kd·a.
+                REQUIRE(reflections(counters) == 1000);
+                REQUIRE(finiteNonNegative(L));
+                CHECK(L.r == Approx(1001.0 * 1e-3 * kAmbient.r).epsilon(1e-12));
+                CHECK(L.b == Approx(1001.0 * 1e-3 * kAmbient.b).epsilon(1e-12));
+            }
+        }
+    }
+    GIVEN("black perfect mirrors (kd = 0, r = 1) and a tilted ray, maxDepth = 1000") {
+        TestWorld world;
+        addCorridor(world, 1.0);
+        world.scene.ambient = kAmbient;
+        world.build(chapter4Features(), 1000);
+        THEN("the ray zig-zags 1000 times and returns black, not NaN") {
+            rb::RayCounters counters;
+            // Slope 0.01: 1000 legs climb about 20 units, still inside the 100-unit mirrors.
+            const Colour L = world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, 0.01, 0.0)}, counters);
+            REQUIRE(reflections(counters) == 1000);
+            REQUIRE(L == Colour(0.0));
+        }
+    }
+}
+
+// [ch04-edge]
+SCENARIO("a ray that meets a mirror exactly on its edge reflects once, cleanly",
+         "[ch04][stability]") {
+    GIVEN("a black mirror cube [0,1]³ with r = 0.5 in front of a coloured background") {
+        TestWorld world;
+        world.addBox(Mat4(1.0), world.material(Colour(0.0), 0.5));
+        world.scene.background = Colour(0.25, 0.5, 1.0);
+        world.build(chapter4Features(), 5);
+        // Points on edges and corners, and directions towards them: head-on to the edge,
+        // oblique, and grazing (parallel to one of the two faces).
+        struct Case {
+            Vec3 target, direction;
+        };
+        const std::vector<Case> cases = {
+            {{1, 1, 0.5}, {-1, -1, 0}},   {{1, 1, 0.5}, {-1, -2, 0.3}},   {{1, 1, 0.5}, {0, -1, 0}},
+            {{1, 1, 0.5}, {-1, 0, 0}},    {{0, 1, 0.5}, {1, -1, 0}},      {{0.5, 0, 0}, {0, 1, 1}},
+            {{1, 1, 1}, {-1, -1, -1}},    {{1, 1, 1}, {-1, -0.5, -0.25}}, {{0, 0, 0}, {1, 1, 1}},
+            {{1, 0.5, 1}, {-3, 0.1, -1}},
+        };
+        for (const Case& c : cases) {
+            WHEN("the ray is aimed along (" + std::to_string(c.direction.x) + ", " +
+                 std::to_string(c.direction.y) + ", " + std::to_string(c.direction.z) +
+                 ") at the edge point (" + std::to_string(c.target.x) + ", " +
+                 std::to_string(c.target.y) + ", " + std::to_string(c.target.z) + ")") {
+                rb::RayCounters counters;
+                const rb::Ray ray{c.target - 2.0 * c.direction, c.direction};
+                const Colour L = world.trace(ray, counters);
+                THEN("it reflects exactly once and escapes: L = r · background") {
+                    // Source: a mirrored ray leaves the entry face's half-space, and a convex
+                    // box lies entirely inside it, so it can never hit the box again.
+                    REQUIRE(finiteNonNegative(L));
+                    REQUIRE(reflections(counters) == 1);
+                    REQUIRE(L == 0.5 * world.scene.background);
+                }
+            }
+        }
+    }
+}
+// [ch04-edge]
+
+// [ch04-no-self-hit]
+SCENARIO("a reflected ray never hits the mirror it leaves, at scene scales 1e-3 to 1e4",
+         "[ch04][stability]") {
+    for (const double scale : {1e-3, 1e-1, 1.0, 1e2, 1e4}) {
+        for (const bool sphere : {true, false}) {
+            GIVEN(std::string("a black convex mirror (") + (sphere ? "sphere" : "box") +
+                  ", r = 0.5) of size " + std::to_string(scale) + ", turned and moved away") {
+                // Stretched, rotated about a skew axis (no face axis-aligned) and placed a few
+                // sizes from the origin, so its world coordinates exceed its size.
+                Mat4 m(1.0);
+                m = glm::translate(m, scale * Vec3(3.0, -2.0, 5.0));
+                m = glm::rotate(m, 0.7, glm::normalize(Vec3(1.0, 2.0, -0.5)));
+                m = glm::scale(m, scale * Vec3(1.0, 0.6, 1.4));
+                TestWorld world;
+                const rb::Material* mirror = world.material(Colour(0.0), 0.5);
+                if (sphere)
+                    world.addSphere(m, mirror);
+                else
+                    world.addBox(m, mirror);
+                world.scene.background = Colour(0.25, 0.5, 1.0);
+                world.build(chapter4Features(), 5);
+                const rb::AABB bounds = world.scene.instances[0].worldBounds;
+                WHEN("2000 random rays from all around hit it") {
+                    TestRng rng(static_cast<std::uint64_t>(1000 * std::log10(scale) + 7));
+                    const Vec3 centre = 0.5 * (bounds.lo + bounds.hi);
+                    const double radius = glm::length(bounds.hi - bounds.lo);
+                    int hits = 0, clean = 0;
+                    for (int i = 0; i < 2000; ++i) {
+                        const Vec3 origin = centre + 2.0 * radius * rng.unitVector();
+                        const Vec3 target(rng.uniform(bounds.lo.x, bounds.hi.x),
+                                          rng.uniform(bounds.lo.y, bounds.hi.y),
+                                          rng.uniform(bounds.lo.z, bounds.hi.z));
+                        const rb::Ray ray{origin, target - origin};
+                        rb::Hit hit;
+                        if (!world.scene.aggregate->intersect(ray, INFINITY, hit)) continue;
+                        ++hits;
+                        rb::RayCounters counters;
+                        const Colour L = world.trace(ray, counters);
+                        if (reflections(counters) == 1 && L == 0.5 * world.scene.background)
+                            ++clean;
+                    }
+                    THEN("every one reflects exactly once into the open: L = r · background") {
+                        // Source: a convex mirror cannot see itself, so a second reflection
+                        // can only be a self-hit caused by rounding.
+                        REQUIRE(hits > 500);
+                        REQUIRE(clean == hits);
+                    }
+                }
+            }
+        }
+    }
+}
+// [ch04-no-self-hit]
+
+// ---- Lua: raybook's fields and the seeds' dialects -------------------------------------------
+
+// [ch04-lua]
+SCENARIO("the seeds' material calls and raybook's named field all set `reflect`", "[ch04]") {
+    const rb::FeatureSet features = chapter4Features();
+    GIVEN("raybook's gr.material{kd = ..., ks = ..., shininess = 25, reflect = 0.4}") {
+        const rb::Material m = materialOf(
+            "gr.material{kd = {0.1, 0.2, 0.3}, ks = {0.5, 0.5, 0.5}, shininess = 25, "
+            "reflect = 0.4}",
+            features);
+        THEN("reflect = 0.4 and the Phong fields are set") {
+            REQUIRE(m.param("reflect") == 0.4);
+            REQUIRE(m.kd == Colour(0.1, 0.2, 0.3));
+            REQUIRE(m.ks == Colour(0.5));
+            REQUIRE(m.shininess == 25.0);
+        }
+    }
+    GIVEN("seed 000's gr.material(kd, ks, shin, \"reflect\", 0.4)") {
+        const rb::Material m = materialOf(
+            "gr.material({0.65, 0.05, 0.05}, {0.1, 0.1, 0.1}, 1, \"reflect\", 0.4)", features);
+        THEN("reflect = 0.4") {
+            REQUIRE(m.param("reflect") == 0.4);
+            REQUIRE(m.kd == Colour(0.65, 0.05, 0.05));
+            REQUIRE(m.params.size() == 1);
+        }
+    }
+    GIVEN("seed 001's gr.phongMat(kd, ks, shin, 0.3, 0)") {
+        const rb::Material m =
+            materialOf("gr.phongMat({0.7, 0.7, 0.7}, {0.4, 0.4, 0.4}, 30, 0.3, 0)", features);
+        THEN("reflect = 0.3, and glossiness 0 sets nothing") {
+            REQUIRE(m.param("reflect") == 0.3);
+            REQUIRE(m.params.count("glossiness") == 0);
+            REQUIRE(m.shininess == 30.0);
+        }
+    }
+    GIVEN("seed 002's gr.fancy_material(kd, ks, shin, 0.25, 1.0, 0, 0)") {
+        const rb::Material m = materialOf(
+            "gr.fancy_material({0.3, 0.2, 0.1}, {0.8, 0.8, 0.8}, 60, 0.25, 1.0, 0, 0)", features);
+        THEN("reflect = 0.25; with no transparency the ior is not needed and not set") {
+            REQUIRE(m.param("reflect") == 0.25);
+            REQUIRE(m.params.count("ior") == 0);
+            REQUIRE(m.params.count("transparency") == 0);
+        }
+    }
+    GIVEN("a plain A4 gr.material(kd, ks, shin)") {
+        const rb::Material m = materialOf("gr.material({1, 0, 0}, {0, 0, 0}, 1)", features);
+        THEN("no chapter parameter at all") {
+            REQUIRE(m.params.empty());
+        }
+    }
+}
+// [ch04-lua]
+
+SCENARIO("a chapter-4 build names the chapter a later material field needs", "[ch04]") {
+    const rb::FeatureSet features = chapter4Features();
+    const auto fails = [&](const std::string& material) {
+        return [=] { loadLua(oneMaterialScene(material), features); };
+    };
+    GIVEN("refraction fields (chapter 5)") {
+        THEN("each form of asking for them fails with 'needs chapter 5'") {
+            REQUIRE_THROWS_WITH(fails("gr.material{kd = {1, 1, 1}, ior = 1.5}")(),
+                                Contains("needs chapter 5"));
+            REQUIRE_THROWS_WITH(fails("gr.material{kd = {1, 1, 1}, transparency = 0.9}")(),
+                                Contains("needs chapter 5"));
+            REQUIRE_THROWS_WITH(
+                fails("gr.material({0.65, 0.05, 0.05}, {0.1, 0.1, 0.1}, 1, \"refract\", 1.5)")(),
+                Contains("needs chapter 5"));
+            REQUIRE_THROWS_WITH(
+                fails("gr.fancy_material({1, 1, 1}, {1, 1, 1}, 10, 0.1, 1.5, 0.9, 0)")(),
+                Contains("needs chapter 5"));
+            REQUIRE_THROWS_WITH(fails("gr.transMat({1, 1, 1}, 1.5, 0.9, 0)")(),
+                                Contains("needs chapter 5"));
+        }
+    }
+    GIVEN("glossiness (chapter 7)") {
+        THEN("each form of asking for it fails with 'needs chapter 7'") {
+            REQUIRE_THROWS_WITH(fails("gr.material{kd = {1, 1, 1}, glossiness = 0.2}")(),
+                                Contains("needs chapter 7"));
+            REQUIRE_THROWS_WITH(
+                fails("gr.material({0.3, 0.6, 0.6}, {0.5, 0.7, 0.5}, 35, \"glossy\", 0.1, "
+                      "\"reflect\", 0.5)")(),
+                Contains("needs chapter 7"));
+            REQUIRE_THROWS_WITH(fails("gr.phongMat({1, 1, 1}, {1, 1, 1}, 10, 0.5, 3)")(),
+                                Contains("needs chapter 7"));
+            REQUIRE_THROWS_WITH(
+                fails("gr.fancy_material({1, 1, 1}, {1, 1, 1}, 10, 0.5, 1.0, 0, 0.2)")(),
+                Contains("needs chapter 7"));
+        }
+    }
+    GIVEN("a ball light (chapter 6)") {
+        THEN("gr.ball_light fails with 'needs chapter 6'") {
+            REQUIRE_THROWS_WITH(
+                loadLua("local l = gr.ball_light({0, 5, 0}, {1, 1, 1}, {1, 0, 0}, 0.5)\n",
+                        features),
+                Contains("needs chapter 6"));
+        }
+    }
+    GIVEN("the seed dialects with their later parameters left at 0") {
+        THEN("they load: a chapter-4 build accepts seed scenes that only use mirrors") {
+            REQUIRE_NOTHROW(fails("gr.phongMat({1, 1, 1}, {1, 1, 1}, 10, 0.5, 0)")());
+            REQUIRE_NOTHROW(fails("gr.fancy_material({1, 1, 1}, {1, 1, 1}, 10, 0.5, 1.5, 0, 0)")());
+            REQUIRE_NOTHROW(
+                fails("gr.material({1, 1, 1}, {1, 1, 1}, 10, \"glossy\", 0, "
+                      "\"reflect\", 0.5)")());
+        }
+    }
+}
+
+SCENARIO("seed 000's \"refract\", 0 means no refraction, as \"reflect\", 0 means no mirror",
+         "[ch04]") {
+    // Seed 000 writes every keyword it knows, with 0 for the effects a material lacks (its own
+    // example: "glossy", 0.1, "reflect", 0, "refract", 0.6). A 0 after "refract" is "does not
+    // refract", not "index of refraction 0": like the other dialect calls, it must set nothing,
+    // so a chapter-4 build loads it and later chapters do not see an ior of 0.
+    GIVEN("gr.material(kd, ks, shin, \"glossy\", 0, \"reflect\", 0.5, \"refract\", 0)") {
+        const std::string material =
+            "gr.material({0.1, 0.1, 0.1}, {0.7, 0.7, 0.7}, 50, \"glossy\", 0, \"reflect\", "
+            "0.5, \"refract\", 0)";
+        WHEN("a chapter-4 build loads it") {
+            THEN("it loads, with reflect = 0.5 and no ior or transparency") {
+                rb::Material m;
+                REQUIRE_NOTHROW(m = materialOf(material, chapter4Features()));
+                REQUIRE(m.param("reflect") == 0.5);
+                REQUIRE(m.params.count("ior") == 0);
+                REQUIRE(m.params.count("transparency") == 0);
+            }
+        }
+    }
+}
+
+SCENARIO("a chapter-3 build names chapter 4 when a scene asks for a mirror", "[ch04]") {
+    const rb::FeatureSet features = chapter3Features();
+    THEN("reflect, seed 000's keyword form, gr.phongMat and gr.fancy_material name chapter 4") {
+        REQUIRE_THROWS_WITH(
+            loadLua(oneMaterialScene("gr.material{kd = {1, 1, 1}, reflect = 0.5}"), features),
+            Contains("needs chapter 4"));
+        REQUIRE_THROWS_WITH(
+            loadLua(oneMaterialScene("gr.material({1, 1, 1}, {0, 0, 0}, 1, \"reflect\", 0.5)"),
+                    features),
+            Contains("chapter 4"));
+        REQUIRE_THROWS_WITH(
+            loadLua(oneMaterialScene("gr.phongMat({1, 1, 1}, {0, 0, 0}, 1, 0.5, 0)"), features),
+            Contains("needs chapter 4"));
+        REQUIRE_THROWS_WITH(
+            loadLua(oneMaterialScene("gr.fancy_material({1, 1, 1}, {0, 0, 0}, 1, 0.5, 1, 0, 0)"),
+                    features),
+            Contains("needs chapter 4"));
+    }
+}
+
+SCENARIO("seed 000's keyword form rejects what it does not know", "[ch04]") {
+    const rb::FeatureSet features = chapter4Features();
+    const auto load = [&](const std::string& material) {
+        loadLua(oneMaterialScene(material), features);
+    };
+    GIVEN("an unknown keyword") {
+        THEN("the error names it and lists the known ones") {
+            REQUIRE_THROWS_WITH(load("gr.material({1, 1, 1}, {0, 0, 0}, 1, \"mirror\", 0.5)"),
+                                Contains("unknown keyword \"mirror\"") &&
+                                    Contains("\"reflect\", \"refract\" or \"glossy\""));
+        }
+    }
+    GIVEN("a keyword without its number") {
+        THEN("the error says a number must follow") {
+            REQUIRE_THROWS_WITH(load("gr.material({1, 1, 1}, {0, 0, 0}, 1, \"reflect\")"),
+                                Contains("needs a number after it"));
+        }
+    }
+    GIVEN("a keyword followed by a string instead of a number") {
+        THEN("the error names the argument") {
+            REQUIRE_THROWS_WITH(load("gr.material({1, 1, 1}, {0, 0, 0}, 1, \"reflect\", \"lots\")"),
+                                Contains("must be a number"));
+        }
+    }
+    GIVEN("an unknown named field") {
+        THEN("the error names it") {
+            REQUIRE_THROWS_WITH(load("gr.material{kd = {1, 1, 1}, reflectivity = 0.5}"),
+                                Contains("unknown material field 'reflectivity'"));
+        }
+    }
+    GIVEN("a wrong argument count for gr.phongMat and gr.fancy_material") {
+        THEN("the error shows the expected signature") {
+            REQUIRE_THROWS_WITH(load("gr.phongMat({1, 1, 1}, {0, 0, 0}, 1, 0.5)"),
+                                Contains("gr.phongMat expects 5 arguments"));
+            REQUIRE_THROWS_WITH(load("gr.fancy_material({1, 1, 1}, {0, 0, 0}, 1, 0.5)"),
+                                Contains("gr.fancy_material expects 7 arguments"));
+        }
+    }
+}
