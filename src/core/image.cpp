@@ -55,11 +55,13 @@ void writePng(const Image& image, const std::string& path) {
     // Write to a temporary name in the same folder, so the rename below is atomic.
     const std::string tmp = path + ".tmp" + std::to_string(::getpid());
     const std::vector<unsigned char> bytes = toBytes(image);
+    errno = 0;
     const int ok = stbi_write_png(tmp.c_str(), image.width(), image.height(), 3, bytes.data(),
                                   image.width() * 3);
     if (!ok) {
+        const std::string why = errno ? std::strerror(errno) : "the encoder failed";
         std::remove(tmp.c_str());
-        throw InputError(path + ": cannot write the PNG file");
+        throw InputError(path + ": cannot write the PNG file (" + why + ")");
     }
     if (std::rename(tmp.c_str(), path.c_str()) != 0) {
         const std::string why = std::strerror(errno);

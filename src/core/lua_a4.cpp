@@ -58,7 +58,7 @@ int grNhSphere(lua_State* L) {
     const double radius = checkNumber(L, 3, "gr.nh_sphere", "radius");
     if (!(radius > 0.0)) throw InputError("gr.nh_sphere: argument 3 (radius) must be positive");
     node->shape = sceneBuilder(L).unitSphere;
-    node->transform = glm::scale(glm::translate(Mat4(1.0), centre), Vec3(radius));
+    node->shapeTransform = glm::scale(glm::translate(Mat4(1.0), centre), Vec3(radius));
     pushNode(L, node);
     return 1;
 }
@@ -71,7 +71,7 @@ int grNhBox(lua_State* L) {
     const double size = checkNumber(L, 3, "gr.nh_box", "size");
     if (!(size > 0.0)) throw InputError("gr.nh_box: argument 3 (size) must be positive");
     node->shape = sceneBuilder(L).unitCube;
-    node->transform = glm::scale(glm::translate(Mat4(1.0), corner), Vec3(size));
+    node->shapeTransform = glm::scale(glm::translate(Mat4(1.0), corner), Vec3(size));
     pushNode(L, node);
     return 1;
 }
@@ -180,6 +180,18 @@ int grLight(lua_State* L) {
 
 // ---- Node methods -------------------------------------------------------------------------
 
+/// The node a method is called on (argument 1), then exactly `count` more arguments.
+/// Checking the node first turns n.translate(...) into a hint about the colon.
+std::shared_ptr<SceneNode> checkSelf(lua_State* L, const char* call, int count,
+                                     const char* signature) {
+    auto node = checkNode(L, 1, call, "self");
+    if (lua_gettop(L) - 1 != count)
+        throw InputError(std::string(call) + " expects " + std::to_string(count) + " argument" +
+                         (count == 1 ? "" : "s") + " " + signature + ", got " +
+                         std::to_string(lua_gettop(L) - 1));
+    return node;
+}
+
 // [lua-transforms]
 /// Apply a local transform: pre-multiplied (calls apply in the order written) in A4, and
 /// post-multiplied for legacy (pre-2015) scenes, which list their transforms in reverse.
@@ -188,8 +200,7 @@ void applyTransform(lua_State* L, SceneNode& node, const Mat4& m) {
 }
 
 int nodeScale(lua_State* L) {
-    checkArgCount(L, "node:scale", 4, 4, "(x, y, z)");
-    auto node = checkNode(L, 1, "node:scale", "self");
+    auto node = checkSelf(L, "node:scale", 3, "(x, y, z)");
     const Vec3 s(checkNumber(L, 2, "node:scale", "x"), checkNumber(L, 3, "node:scale", "y"),
                  checkNumber(L, 4, "node:scale", "z"));
     if (s.x == 0.0 || s.y == 0.0 || s.z == 0.0)
@@ -199,8 +210,7 @@ int nodeScale(lua_State* L) {
 }
 
 int nodeTranslate(lua_State* L) {
-    checkArgCount(L, "node:translate", 4, 4, "(x, y, z)");
-    auto node = checkNode(L, 1, "node:translate", "self");
+    auto node = checkSelf(L, "node:translate", 3, "(x, y, z)");
     const Vec3 t(checkNumber(L, 2, "node:translate", "x"),
                  checkNumber(L, 3, "node:translate", "y"),
                  checkNumber(L, 4, "node:translate", "z"));
@@ -209,8 +219,7 @@ int nodeTranslate(lua_State* L) {
 }
 
 int nodeRotate(lua_State* L) {
-    checkArgCount(L, "node:rotate", 3, 3, "(axis, degrees)");
-    auto node = checkNode(L, 1, "node:rotate", "self");
+    auto node = checkSelf(L, "node:rotate", 2, "(axis, degrees)");
     const std::string axisName = checkString(L, 2, "node:rotate", "axis");
     const double degrees = checkNumber(L, 3, "node:rotate", "degrees");
     Vec3 axis(0.0);
@@ -226,8 +235,7 @@ int nodeRotate(lua_State* L) {
 // [lua-transforms]
 
 int nodeAddChild(lua_State* L) {
-    checkArgCount(L, "node:add_child", 2, 2, "(child)");
-    auto parent = checkNode(L, 1, "node:add_child", "self");
+    auto parent = checkSelf(L, "node:add_child", 1, "(child)");
     auto child = checkNode(L, 2, "node:add_child", "child");
     // Instancing makes the graph a DAG; a cycle would make it infinite.
     if (reaches(*child, parent.get()))
@@ -238,8 +246,7 @@ int nodeAddChild(lua_State* L) {
 }
 
 int nodeSetMaterial(lua_State* L) {
-    checkArgCount(L, "node:set_material", 2, 2, "(material)");
-    auto node = checkNode(L, 1, "node:set_material", "self");
+    auto node = checkSelf(L, "node:set_material", 1, "(material)");
     node->material = checkMaterial(L, 2, "node:set_material", "material");
     return 0;
 }

@@ -1,6 +1,8 @@
 // Chapter 3's Lua calls: gr.mesh(name, 'file.obj') and the legacy table form
 // gr.mesh(name, {{x,y,z}...}, {{i,j,k,...}...}) with 0-based indices; seed 002's gr.obj_mesh.
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "core/error.h"
@@ -40,13 +42,19 @@ std::shared_ptr<const Shape> meshFromTables(lua_State* L, const char* call) {
     for (lua_Unsigned i = 1; i <= nv; ++i) {
         lua_rawgeti(L, 2, static_cast<lua_Integer>(i));
         const int top = lua_gettop(L);
-        try {
-            data.positions.push_back(checkVec3(L, top, call, "vertex"));
-        } catch (const InputError& e) {
+        double xyz[3] = {0, 0, 0};
+        bool ok = lua_type(L, top) == LUA_TTABLE && lua_rawlen(L, top) == 3;
+        for (int k = 0; ok && k < 3; ++k) {
+            ok = lua_rawgeti(L, top, k + 1) == LUA_TNUMBER;
+            xyz[k] = lua_tonumber(L, -1);
             lua_pop(L, 1);
-            throw InputError(std::string(e.what()) + " (vertex " + std::to_string(i) + ")");
+            ok = ok && std::isfinite(xyz[k]);
         }
         lua_pop(L, 1);
+        if (!ok)
+            throw InputError(std::string(call) + ": argument 2 (vertices): vertex " +
+                             std::to_string(i) + " must be a table of 3 finite numbers");
+        data.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
     }
     const lua_Unsigned nf = lua_rawlen(L, 3);
     for (lua_Unsigned f = 1; f <= nf; ++f) {
@@ -84,7 +92,23 @@ int grMesh(lua_State* L) {
     checkArgCount(L, "gr.mesh", 2, 3, "(name, 'file.obj') or (name, vertices, faces)");
     auto node = std::make_shared<SceneNode>();
     node->name = checkString(L, 1, "gr.mesh", "name");
-    if (lua_type(L, 2) == LUA_TTABLE) node->shape = meshFromTables(L, "gr.mesh");
+    if (lua_type(L, 2) == LUA_TTABLE) {
+        // Only course scenes from before 2015 build meshes from tables; they also list
+        // their transforms in reverse. Say so once, since the picture is wrong without it.
+        SceneBuilder& builder = sceneBuilder(L);
+        if (!builder.options.legacy && !builder.warnedLegacy) {
+            builder.warnedLegacy = true;
+            lua_Debug ar;
+            std::string where = builder.scenePath;
+            if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar))
+                where = std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
+            std::fprintf(stderr,
+                         "rt: warning: %s: gr.mesh with tables is the pre-2015 course form; "
+                         "such scenes need --legacy (their transforms are post-multiplied)\n",
+                         where.c_str());
+        }
+        node->shape = meshFromTables(L, "gr.mesh");
+    }
     else if (lua_gettop(L) == 2)
         node->shape = meshFromFile(L, checkString(L, 2, "gr.mesh", "file"));
     else

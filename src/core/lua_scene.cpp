@@ -38,6 +38,7 @@ int collectShared(lua_State* L) {
 const char* typeName(lua_State* L, int arg) {
     if (luaL_testudata(L, arg, kNodeType)) return "a scene node";
     if (luaL_testudata(L, arg, kMaterialType)) return "a material";
+    if (luaL_testudata(L, arg, "rb.light")) return "a light";
     return lua_typename(L, lua_type(L, arg));
 }
 }  // namespace
@@ -118,7 +119,9 @@ std::shared_ptr<SceneNode> checkNode(lua_State* L, int arg, const char* call,
     if (!p)
         throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
                          ") must be a scene node, got " + typeName(L, arg) +
-                         (arg == 1 ? " (call methods with a colon: node:method(...))" : ""));
+                         (arg == 1 && std::strchr(call, ':')
+                              ? " (call methods with a colon: node:method(...))"
+                              : ""));
     return *static_cast<std::shared_ptr<SceneNode>*>(p);
 }
 
@@ -243,7 +246,11 @@ int sandboxRequire(lua_State* L) {
     const SceneBuilder& builder = sceneBuilder(L);
     const std::string file = (fs::path(builder.sceneDir) / (name + ".lua")).string();
     // Text chunks only: precompiled bytecode can crash the VM.
-    if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) return lua_error(L);
+    const int status = luaL_loadfilex(L, file.c_str(), "t");
+    if (status == LUA_ERRFILE)
+        return luaL_error(L, "require('%s'): there is no %s in the scene's folder", raw,
+                          file.c_str());
+    if (status != LUA_OK) return lua_error(L);
     lua_pushstring(L, raw);
     lua_call(L, 1, 1);
     if (lua_isnil(L, -1)) {

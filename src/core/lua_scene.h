@@ -54,6 +54,7 @@ struct SceneBuilder {
     std::map<std::string, int> optionNames;     ///< gr.option names, by chapter.
     std::map<std::string, double> sceneOptions;  ///< gr.option values set so far.
     SceneLoadTimes times;
+    bool warnedLegacy = false;  ///< The pre-2015 hint was printed.
     long long instructions = 0;
     size_t bytesInUse = 0;
 };

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 
@@ -76,6 +77,11 @@ int run(int argc, char** argv) {
         }
         checkImageSize(job.width, job.height, job.where + ": ");
         const std::string output = outputPath(cl, job, k, renders.size());
+        // Refuse an output path that cannot be written before spending time on the render.
+        const std::filesystem::path folder = std::filesystem::path(output).parent_path();
+        if (!folder.empty() && !std::filesystem::is_directory(folder))
+            throw InputError(job.where + ": cannot write " + output + ": the folder '" +
+                             folder.string() + "' does not exist");
 
         // Build the world: instances, lights, settings; let each feature plug itself in;
         // then build the aggregate over the instances.
@@ -107,7 +113,11 @@ int run(int argc, char** argv) {
         const double renderSeconds = since(t0);
 
         t0 = Clock::now();
-        writePng(image, output);
+        try {
+            writePng(image, output);
+        } catch (const InputError& e) {
+            throw InputError(job.where + ": " + e.what());
+        }
         const double writeSeconds = since(t0);
         if (!cl.quiet) std::fprintf(stderr, "wrote %s (%dx%d)\n", output.c_str(), job.width, job.height);
 

@@ -18,16 +18,22 @@ namespace rb {
 struct SceneNode {
     std::string name;
     Mat4 transform{1.0};                         ///< Local-to-parent transform.
+    /// Placement of the shape alone, applied before `transform` and not to the children:
+    /// gr.nh_sphere's centre and radius, gr.nh_box's corner and size.
+    Mat4 shapeTransform{1.0};
     std::shared_ptr<const Shape> shape;          ///< Null for group nodes.
     std::shared_ptr<const Material> material;    ///< Null until set_material.
     std::vector<std::shared_ptr<SceneNode>> children;
 };
 
 /// True when `to` can be reached from `from` along child links (used to refuse cycles).
+/// Visits each node once, so it stays linear however much the DAG shares.
 bool reaches(const SceneNode& from, const SceneNode* to);
 
-/// The most instances a scene may flatten to, so that an exponential DAG fails cleanly.
-inline constexpr size_t kMaxInstances = 20'000'000;
+/// The most instances (and node paths) a scene may flatten to, so that a DAG that doubles
+/// at every level fails cleanly instead of exhausting memory: 2 million instances take
+/// about 1 GB.
+inline constexpr size_t kMaxInstances = 2'000'000;
 
 /// Flatten the graph under root into world-space instances. Transforms compose as
 /// parent · child. A node without a material inherits the nearest ancestor's; with none at

@@ -1,1 +1,212 @@
-echo "scenes: TODO"
+#!/usr/bin/env bash
+# Every scene renders: the course-style A4 scenes (scenes/a4/), the legacy scenes
+# (scenes/legacy/), the showcase and the chapter scenes, each at a small size, from the
+# repository root (where their mesh paths such as 'scenes/assets/cow.obj' point).
+#
+# Usage: bash tests/scenes/run_all.sh RT_BINARY OUT_DIR
+#
+# For each scene it checks that rt exits with 0, that every image the scene asks for (one per
+# gr.render call; --output names the second one X-2.png, and so on) exists, is a PNG of the
+# requested size and is not entirely black. First-line comments of a scene steer it:
+#   -- rt-args: ARGS          extra arguments (e.g. --legacy for pre-2015 scenes)
+#   -- rt-same-as: FILE.lua   the image must be byte-identical to that of FILE.lua in the same
+#                             folder (default for --legacy scenes: equivalent.lua)
+#   -- rt-not-black: X0 Y0 X1 Y1
+#                             the first image must have a non-black pixel in this region
+#                             (fractions of the width and height from the top left)
+#   -- rt-stats: REGEX        the --stats output must match this extended regular expression
+#                             (e.g. the unique triangle count, to show a mesh named twice
+#                             was loaded once, or the number of instances of a DAG)
+#   -- rt-module: ...         not a scene (a helper for require); skipped
+# Chapter scenes (scenes/chapterNN-*.lua) of chapters the binary does not have are skipped.
+# Prints one line per check and a final "N passed, M failed"; exits 1 on any failure.
+set -u
+
+if [ $# -ne 2 ]; then
+    echo "usage: $0 RT_BINARY OUT_DIR" >&2
+    exit 2
+fi
+RT=$(realpath "$1")
+OUT=$(mkdir -p "$2" && realpath "$2")
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+cd "$ROOT" || exit 2
+SIZE=${SCENES_SIZE:-160x120}
+TIMEOUT=${SCENES_TIMEOUT:-60}
+
+passed=0
+failed=0
+ok() { echo "ok   $1"; passed=$((passed + 1)); }
+fail() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+
+# Check a PNG: prints "WxH max mean" (8-bit values), then the maximum inside each region
+# given as "x0 y0 x1 y1" in fractions of the image size, or an error. Python's standard
+# library only (zlib), so no imaging package is needed.
+png_info() {
+    python3 - "$@" <<'PY'
+import struct, sys, zlib
+path = sys.argv[1]
+regions = [[float(v) for v in r.split()] for r in sys.argv[2:]]
+try:
+    data = open(path, 'rb').read()
+    if data[:8] != b'\x89PNG\r\n\x1a\n':
+        raise ValueError('not a PNG file')
+    pos, idat, ihdr = 8, b'', None
+    while pos < len(data):
+        n, kind = struct.unpack('>I4s', data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b'IHDR':
+            ihdr = struct.unpack('>IIBBBBB', body)
+        elif kind == b'IDAT':
+            idat += body
+        pos += 12 + n
+    w, h, depth, ctype, _, _, interlace = ihdr
+    channels = {0: 1, 2: 3, 4: 2, 6: 4}[ctype]
+    if depth != 8 or interlace:
+        raise ValueError('unexpected PNG format (depth %d, interlace %d)' % (depth, interlace))
+    raw = zlib.decompress(idat)
+    stride = w * channels
+    prev = bytearray(stride)
+    total, peak = 0, 0
+    boxes = [(int(r[0] * w), int(r[1] * h), int(r[2] * w), int(r[3] * h)) for r in regions]
+    region_peak = [0] * len(boxes)
+    for y in range(h):
+        f = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - channels] if i >= channels else 0
+            b = prev[i]
+            c = prev[i - channels] if i >= channels else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                pr = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+                line[i] = (line[i] + pr) & 255
+        prev = line
+        colour = line if channels < 3 else bytes(v for i, v in enumerate(line) if i % channels < 3)
+        total += sum(colour)
+        peak = max(peak, max(colour))
+        n = min(channels, 3)
+        for k, (x0, y0, x1, y1) in enumerate(boxes):
+            if y0 <= y < y1 and x1 > x0:
+                region_peak[k] = max(region_peak[k], max(colour[x0 * n:x1 * n]))
+    print(' '.join(['%dx%d %d %.2f' % (w, h, peak, total / (w * h * min(channels, 3)))] +
+                   [str(p) for p in region_peak]))
+except Exception as e:
+    print('error: %s' % e)
+PY
+}
+
+# Lines of a scene's header comments (the comment block at the top) with the given key.
+header() { sed -n "/^--/!q; s/^-- $2: *//p" "$1"; }
+
+declare -A image_of  # scene path -> its first image, for the equivalence checks
+
+render_scene() {
+    local scene=$1
+    local name=${scene%.lua}
+    local rel=${name#scenes/}
+    local png="$OUT/$rel.png"
+    mkdir -p "$(dirname "$png")"
+    rm -f "$OUT/$rel".png "$OUT/$rel"-[0-9]*.png
+    local args
+    read -r -a args <<<"$(header "$scene" rt-args | head -n 1)"
+    local start=$SECONDS
+    timeout "$TIMEOUT" "$RT" --quiet --stats "${args[@]}" --size "$SIZE" --output "$png" "$scene" \
+        >"$OUT/$rel.log" 2>&1
+    local rc=$?
+    local took=$((SECONDS - start))
+    if [ $rc -ne 0 ]; then
+        local why="exit code $rc"
+        [ $rc -eq 124 ] && why="timed out after ${TIMEOUT}s"
+        fail "$name" "$why: $(head -c 400 "$OUT/$rel.log")"
+        return
+    fi
+    # One image per gr.render call written in the scene (calls in comments do not count).
+    local renders
+    renders=$(sed 's/--.*//' "$scene" | grep -c 'gr\.render *(')
+    [ "$renders" -lt 1 ] && renders=1
+    local k image info problems="" regions=()
+    mapfile -t regions < <(header "$scene" rt-not-black)
+    for k in $(seq 1 "$renders"); do
+        image=$png
+        [ "$k" -gt 1 ] && image="$OUT/$rel-$k.png"
+        if [ ! -s "$image" ]; then
+            problems+=" $(basename "$image") is missing or empty;"
+            continue
+        fi
+        if [ "$k" -eq 1 ]; then
+            info=$(png_info "$image" "${regions[@]}")
+            local r field=4
+            for r in "${regions[@]}"; do
+                if [[ "$info" != error* ]] && [ "$(echo "$info" | cut -d' ' -f$field)" -eq 0 ]; then
+                    problems+=" $(basename "$image") is black in the region $r (rt-not-black);"
+                fi
+                field=$((field + 1))
+            done
+        else
+            info=$(png_info "$image")
+        fi
+        case "$info" in
+            error*) problems+=" $(basename "$image"): $info;" ;;
+            "$SIZE "*)
+                if [ "$(echo "$info" | cut -d' ' -f2)" -eq 0 ]; then
+                    problems+=" $(basename "$image") is entirely black;"
+                fi ;;
+            *) problems+=" $(basename "$image") is ${info%% *}, expected $SIZE;" ;;
+        esac
+    done
+    local pattern
+    while IFS= read -r pattern; do
+        [ -z "$pattern" ] && continue
+        grep -Eq -- "$pattern" "$OUT/$rel.log" || problems+=" --stats shows no match for '$pattern' (rt-stats);"
+    done < <(header "$scene" rt-stats)
+    if [ -n "$problems" ]; then
+        fail "$name" "${problems%;}"
+        return
+    fi
+    image_of[$scene]=$png
+    ok "$name ($renders image$([ "$renders" -gt 1 ] && echo s), ${took}s)"
+}
+
+# The last chapter in this binary: later chapters' scenes cannot render with it.
+last_chapter=$("$RT" --list-features 2>/dev/null | awk '$1 ~ /^[0-9]+$/ && $1 > m {m = $1} END {print m + 0}')
+
+scenes=()
+for f in scenes/chapter*.lua scenes/showcase.lua scenes/a4/*.lua scenes/legacy/*.lua; do
+    [ -f "$f" ] || continue
+    [ -n "$(header "$f" rt-module)" ] && continue
+    chapter=$(basename "$f" | sed -n 's/^chapter0*\([0-9][0-9]*\)-.*/\1/p')
+    if [ -n "$chapter" ] && [ "$chapter" -gt "$last_chapter" ]; then
+        echo "skip ${f%.lua} (chapter $chapter; this binary has chapters 1-$last_chapter)"
+        continue
+    fi
+    scenes+=("$f")
+done
+
+for scene in "${scenes[@]}"; do
+    render_scene "$scene"
+done
+
+# Legacy scenes must give the same picture as their modern equivalent, byte for byte.
+for scene in "${scenes[@]}"; do
+    same=$(header "$scene" rt-same-as | head -n 1)
+    if [ -z "$same" ] && header "$scene" rt-args | grep -q -- '--legacy'; then
+        same=equivalent.lua
+    fi
+    [ -z "$same" ] && continue
+    other="$(dirname "$scene")/$same"
+    name="${scene%.lua} = ${other%.lua}"
+    if [ -z "${image_of[$scene]:-}" ] || [ -z "${image_of[$other]:-}" ]; then
+        fail "$name" "one of the two did not render"
+    elif cmp -s "${image_of[$scene]}" "${image_of[$other]}"; then
+        ok "$name (byte-identical)"
+    else
+        fail "$name" "the images differ: ${image_of[$scene]} and ${image_of[$other]}"
+    fi
+done
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

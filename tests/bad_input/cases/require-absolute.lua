@@ -1,0 +1,3 @@
+-- require of an absolute path.
+-- expect: require: module name '/etc/passwd'
+require('/etc/passwd') --!

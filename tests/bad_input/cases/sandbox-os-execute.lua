@@ -1,0 +1,3 @@
+-- os is not loaded in the sandbox.
+-- expect: attempt to index a nil value (global 'os')
+os.execute('touch pwned.txt') --!
