@@ -22,8 +22,8 @@ void orthonormalBasis(const Vec3& w, Vec3& t, Vec3& b) {
 
 // ---- Rectangle ----------------------------------------------------------------------------
 
-RectangleLight::RectangleLight(double length, double width, const Vec3& normal,
-                               const Vec3& left, int samplesPerAxis, LightSampling sampling)
+RectangleLight::RectangleLight(double length, double width, const Vec3& normal, const Vec3& left,
+                               int samplesPerAxis, LightSampling sampling)
     : AreaLightShape(samplesPerAxis, sampling), length_(length), width_(width) {
     if (!(length >= 0.0) || !(width >= 0.0) || !std::isfinite(length) || !std::isfinite(width))
         throw InputError("RectangleLight: length and width must be finite and >= 0");
@@ -41,8 +41,8 @@ RectangleLight::RectangleLight(double length, double width, const Vec3& normal,
 }
 
 // [rectangle-sample]
-Vec3 RectangleLight::samplePoint(const Vec3& centre, const Vec3& p, int k, int n,
-                                 const Vec2& u, double& weight) const {
+Vec3 RectangleLight::samplePoint(const Vec3& centre, const Vec3& p, int k, int n, const Vec2& u,
+                                 double& weight) const {
     // Pick the point: uniform over the panel, pdf_A = 1 / (length · width).
     const Vec2 s = unitSquareSample(k, n, u, sampling_);
     const Vec3 x = centre + ((s.x - 0.5) * length_) * left_ + ((s.y - 0.5) * width_) * up_;
@@ -106,16 +106,16 @@ Vec3 BallLight::samplePoint(const Vec3& centre, const Vec3& p, int k, int n, con
     const double sin2Theta = oneMinusCosTheta * (2.0 - oneMinusCosTheta);
     // Find where that direction first meets the sphere, as the angle α at the centre between
     // the point and p: cosα = (d/R)·sin²θ + cosθ·√(1 − (d/R)²·sin²θ).
-    // Source: pbrt-v4, Pharr, Jakob and Humphreys, §6.2.4 "Sampling the Sphere".
-    const double cosAlpha = sin2Theta / (R / d) +
-                            cosTheta * std::sqrt(std::max(0.0, 1.0 - sin2Theta / sin2ThetaMax));
+    // Source: pbrt-v4 (Pharr, Jakob and Humphreys), §6.2 "Spheres", sampling by solid angle.
+    const double cosAlpha =
+        sin2Theta / (R / d) + cosTheta * std::sqrt(std::max(0.0, 1.0 - sin2Theta / sin2ThetaMax));
     const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha));
     const double phi = 2.0 * glm::pi<double>() * s.y;
     const Vec3 w = toP / d;
     Vec3 t, b;
     orthonormalBasis(w, t, b);
-    const Vec3 x = centre + R * (sinAlpha * std::cos(phi) * t + sinAlpha * std::sin(phi) * b +
-                                 cosAlpha * w);
+    const Vec3 x =
+        centre + R * (sinAlpha * std::cos(phi) * t + sinAlpha * std::sin(phi) * b + cosAlpha * w);
     // Its emission: radiance L = I / (πR²) over the pdf is L·2π(1 − cosθ_max) per unit
     // cosθ_receiver; the core multiplies by I / r², so the weight is 2(1 − cosθ_max)·r² / R².
     const Vec3 fromP = x - p;

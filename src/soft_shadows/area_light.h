@@ -44,17 +44,18 @@ inline Vec2 unitSquareSample(int k, int n, const Vec2& u, LightSampling sampling
 
 /// What every chapter-6 light shape shares: its own sample count and the sampling strategy.
 class AreaLightShape : public LightShape {
-public:
+  public:
     /// The default number of samples per axis (4 × 4 = 16 shadow rays per shading point).
     static constexpr int kDefaultSamplesPerAxis = 4;
 
+    /// This light's own samples per axis (gr.area_light's or gr.ball_light's `samples`).
     int samplesPerAxis() const override { return samplesPerAxis_; }
     /// The strategy samplePoint uses.
     LightSampling sampling() const { return sampling_; }
     /// A copy of this shape that samples with the given strategy.
     virtual std::shared_ptr<const AreaLightShape> withSampling(LightSampling s) const = 0;
 
-protected:
+  protected:
     AreaLightShape(int samplesPerAxis, LightSampling sampling)
         : samplesPerAxis_(samplesPerAxis), sampling_(sampling) {}
     int samplesPerAxis_;
@@ -65,7 +66,7 @@ protected:
 /// centred on the light's position, facing `normal`. `length` runs along `left`, `width`
 /// along normal × left.
 class RectangleLight final : public AreaLightShape {
-public:
+  public:
     /// A panel from unit, orthogonal `normal` and `left`; sizes ≥ 0 (zero gives a point
     /// light with a cosine lobe).
     RectangleLight(double length, double width, const Vec3& normal, const Vec3& left,
@@ -76,17 +77,19 @@ public:
     /// max(0, cosθ_light), the panel's cosine towards p.
     Vec3 samplePoint(const Vec3& centre, const Vec3& p, int k, int n, const Vec2& u,
                      double& weight) const override;
-    /// The density of samplePoint's points with respect to area: 1 / (length · width).
+    /// The density of samplePoint's points with respect to area: 1 / (length · width)
+    /// (infinite for a panel of zero area, whose points all lie on its centre).
     double pdfArea() const { return 1.0 / (length_ * width_); }
 
+    /// A copy that samples with strategy s.
     std::shared_ptr<const AreaLightShape> withSampling(LightSampling s) const override;
 
-    double length() const { return length_; }  ///< Size along left().
-    double width() const { return width_; }    ///< Size along normal × left.
+    double length() const { return length_; }       ///< Size along left().
+    double width() const { return width_; }         ///< Size along normal × left.
     const Vec3& normal() const { return normal_; }  ///< Unit; the side that emits.
     const Vec3& left() const { return left_; }      ///< Unit, orthogonal to normal().
 
-private:
+  private:
     double length_, width_;
     Vec3 normal_, left_, up_;  // up_ = normal × left
 };
@@ -95,7 +98,7 @@ private:
 /// position. Seen from outside it is sampled over the cap visible from the shading point,
 /// uniformly in solid angle; from inside, uniformly over its whole surface.
 class BallLight final : public AreaLightShape {
-public:
+  public:
     /// A ball of radius ≥ 0 (zero gives exactly a point light).
     explicit BallLight(double radius, int samplesPerAxis = kDefaultSamplesPerAxis,
                        LightSampling sampling = LightSampling::Stratified);
@@ -109,11 +112,12 @@ public:
     /// solid angle: 1 / (2π(1 − cosθ_max)), with sinθ_max = R / |centre − p|.
     double pdfSolidAngle(const Vec3& centre, const Vec3& p) const;
 
+    /// A copy that samples with strategy s.
     std::shared_ptr<const AreaLightShape> withSampling(LightSampling s) const override;
 
     double radius() const { return radius_; }  ///< R.
 
-private:
+  private:
     double radius_;
 };
 

@@ -25,8 +25,7 @@ constexpr int kMaxSamplesPerAxis = 256;
 
 /// Throw unless the falloff is non-negative and not all zero (A4's rule for gr.light).
 void checkFalloff(const Vec3& falloff, const std::string& what) {
-    if (falloff.x < 0 || falloff.y < 0 || falloff.z < 0 ||
-        !(falloff.x + falloff.y + falloff.z > 0))
+    if (falloff.x < 0 || falloff.y < 0 || falloff.z < 0 || !(falloff.x + falloff.y + falloff.z > 0))
         throw InputError(what + " must be non-negative and not all zero");
 }
 
@@ -46,7 +45,7 @@ void checkPanelFrame(const Vec3& normal, const Vec3& left, const std::string& ca
 
 /// Reads the named fields of a table argument, with messages that name the call and field.
 class Fields {
-public:
+  public:
     Fields(lua_State* L, int table, const char* call) : L_(L), table_(table), call_(call) {}
 
     /// Throw on a key that is not one of `known` (a typo would otherwise be ignored).
@@ -116,8 +115,7 @@ public:
         if (type == LUA_TNIL)
             throw InputError(std::string(call_) + ": missing field '" + name + "'");
         if (type != LUA_TNUMBER || !std::isfinite(v))
-            throw InputError(std::string(call_) + ": field '" + name +
-                             "' must be a finite number");
+            throw InputError(std::string(call_) + ": field '" + name + "' must be a finite number");
         return v;
     }
     /// The optional field `samples`: a whole number of samples per axis, or fallback.
@@ -130,7 +128,7 @@ public:
         return static_cast<int>(v);
     }
 
-private:
+  private:
     lua_State* L_;
     int table_;
     const char* call_;
@@ -178,9 +176,10 @@ int seed001RectangleLight(lua_State* L) {
 // [lua-seed001-light]
 
 int lightArgCountError(lua_State* L) {
-    throw InputError("gr.light expects 3 arguments (position, colour, {c0,c1,c2}) or 6 "
-                     "(..., {length, width}, normal, left), got " +
-                     std::to_string(lua_gettop(L)));
+    throw InputError(
+        "gr.light expects 3 arguments (position, colour, {c0,c1,c2}) or 6 "
+        "(..., {length, width}, normal, left), got " +
+        std::to_string(lua_gettop(L)));
 }
 
 /// gr.light with A4's 3 arguments or seed 001's 6. The core's gr.light is upvalue 1: it
@@ -211,8 +210,9 @@ int grLight(lua_State* L) {
 int grAreaLight(lua_State* L) {
     const char* call = "gr.area_light";
     if (lua_gettop(L) != 1 || lua_type(L, 1) != LUA_TTABLE)
-        throw InputError("gr.area_light expects one table {position=, colour=, falloff=, "
-                         "size={length, width}, normal=, left=, samples=}");
+        throw InputError(
+            "gr.area_light expects one table {position=, colour=, falloff=, "
+            "size={length, width}, normal=, left=, samples=}");
     const Fields fields(L, 1, call);
     fields.onlyKnown({"position", "colour", "falloff", "size", "normal", "left", "samples"});
     PointLight light = namedPointLight(fields, call);

@@ -31,8 +31,7 @@ SoftShadowSettings softShadowSettings(const RenderContext& context) {
     if (!cli.empty()) {
         int n = -1;
         const auto [end, ec] = std::from_chars(cli.data(), cli.data() + cli.size(), n);
-        if (ec != std::errc() || end != cli.data() + cli.size() || n < 0 ||
-            n > kMaxSamplesPerAxis)
+        if (ec != std::errc() || end != cli.data() + cli.size() || n < 0 || n > kMaxSamplesPerAxis)
             throw InputError("--light-samples: expected a whole number from 0 to " +
                              std::to_string(kMaxSamplesPerAxis) + ", got '" + cli + "'");
         settings.samplesPerAxis = n;
@@ -46,22 +45,24 @@ SoftShadowSettings softShadowSettings(const RenderContext& context) {
     }
     // The strategy: stratified unless the command line asks for independent samples.
     const std::string strategy = context.cliOption("light-sampling", "stratified");
-    if (strategy == "independent") settings.sampling = LightSampling::Independent;
+    if (strategy == "independent")
+        settings.sampling = LightSampling::Independent;
     else if (strategy != "stratified")
-        throw InputError("--light-sampling: expected stratified or independent, got '" +
-                         strategy + "'");
+        throw InputError("--light-sampling: expected stratified or independent, got '" + strategy +
+                         "'");
     return settings;
 }
 // [soft-shadow-settings]
 
 // [install-soft-shadows]
 void installSoftShadows(Pipeline&, Scene& scene, const RenderContext& context) {
+    // Read (and check) the settings even when they will not be used, so a typo in a
+    // command line fails the same way for every scene.
+    const SoftShadowSettings settings = softShadowSettings(context);
     // Only point lights: nothing to do, and nothing to pay.
     const bool anyShape = std::any_of(scene.lights.begin(), scene.lights.end(),
                                       [](const PointLight& l) { return l.shape != nullptr; });
-    if (!anyShape) return;
-    const SoftShadowSettings settings = softShadowSettings(context);
-    if (!settings.sample) return;  // seed 001's ss = 0: shaped lights stay points
+    if (!anyShape || !settings.sample) return;  // ss = 0 (seed 001): shaped lights stay points
     for (PointLight& light : scene.lights) {
         // Give each of our shapes the strategy this render asked for.
         const auto* shape = dynamic_cast<const AreaLightShape*>(light.shape.get());
@@ -74,8 +75,12 @@ void installSoftShadows(Pipeline&, Scene& scene, const RenderContext& context) {
 // [install-soft-shadows]
 
 Feature softShadowsFeature() {
-    Feature f{"soft_shadows", 6, "rectangular and ball area lights, soft shadows", true,
-              bindSoftShadows, installSoftShadows};
+    Feature f{"soft_shadows",
+              6,
+              "rectangular and ball area lights, soft shadows",
+              true,
+              bindSoftShadows,
+              installSoftShadows};
     f.options = {
         {"light-samples", "N", "samples per axis for every area light (N x N shadow rays)"},
         {"light-sampling", "stratified|independent", "how points on area lights are chosen"},

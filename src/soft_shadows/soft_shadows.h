@@ -13,7 +13,7 @@ namespace rb {
 /// The settings chapter 6 reads for one render, after the command line, the scene's
 /// gr.option calls and seed 001's gr.render argument `ss` have had their say.
 struct SoftShadowSettings {
-    bool sample = true;  ///< False when seed 001's ss = 0 asks for no soft shadows.
+    bool sample = true;      ///< False when seed 001's ss = 0 asks for no soft shadows.
     int samplesPerAxis = 0;  ///< For every area light; 0: each light's own.
     LightSampling sampling = LightSampling::Stratified;  ///< --light-sampling.
 };
