@@ -7,14 +7,15 @@ namespace rb {
 
 // [snell]
 bool snellCosTheta_t(double cosTheta_i, double eta_i, double eta_t, double& cosTheta_t) {
-    // Snell's law on the sines: sin θt = (η_i / η_t) sin θi.
+    // Snell's law on the sines, sin θt = (η_i/η_t) sin θi, squared and written with cosines:
+    // cos²θt = 1 − η²(1 − cos²θi) = (1 − η²) + η² cos²θi. The second form keeps the digits of a
+    // grazing cos θi, which 1 − cos²θi would round away.
     cosTheta_i = std::clamp(cosTheta_i, 0.0, 1.0);
-    const double sin2Theta_i = std::max(0.0, 1.0 - cosTheta_i * cosTheta_i);
     const double eta = eta_i / eta_t;
-    const double sin2Theta_t = eta * eta * sin2Theta_i;
+    const double cos2Theta_t = (1.0 - eta * eta) + eta * eta * (cosTheta_i * cosTheta_i);
     // Beyond the critical angle no refracted ray exists: total internal reflection.
-    if (sin2Theta_t > 1.0) return false;
-    cosTheta_t = std::sqrt(1.0 - sin2Theta_t);
+    if (cos2Theta_t < 0.0) return false;
+    cosTheta_t = std::sqrt(cos2Theta_t);
     return true;
 }
 // [snell]
@@ -61,16 +62,19 @@ double fresnelExact(double cosTheta_i, double eta_i, double eta_t) {
     if (!snellCosTheta_t(cosTheta_i, eta_i, eta_t, cosTheta_t)) return 1.0;  // TIR
     // The Fresnel equations for s- and p-polarised amplitudes; unpolarised light carries
     // equal power in both, so the reflectance is the mean of their squares.
-    const double r_s = (eta_i * cosTheta_i - eta_t * cosTheta_t) /
-                       (eta_i * cosTheta_i + eta_t * cosTheta_t);
-    const double r_p = (eta_t * cosTheta_i - eta_i * cosTheta_t) /
-                       (eta_t * cosTheta_i + eta_i * cosTheta_t);
+    const double r_s =
+        (eta_i * cosTheta_i - eta_t * cosTheta_t) / (eta_i * cosTheta_i + eta_t * cosTheta_t);
+    const double r_p =
+        (eta_t * cosTheta_i - eta_i * cosTheta_t) / (eta_t * cosTheta_i + eta_i * cosTheta_t);
     return 0.5 * (r_s * r_s + r_p * r_p);
 }
 // [fresnel-exact]
 
 // [fresnel-schlick]
 double fresnelSchlick(double cosTheta_i, double eta_i, double eta_t) {
+    // The same index on both sides is no surface; the polynomial alone would still reflect
+    // (1 − cos θ)^5 there, up to everything at grazing incidence.
+    if (eta_i == eta_t) return 0.0;
     // Reflectance at normal incidence: R0 = ((η_i − η_t)/(η_i + η_t))².
     const double r = (eta_i - eta_t) / (eta_i + eta_t);
     const double R0 = r * r;

@@ -67,8 +67,7 @@ DielectricSplit splitAtDielectric(const Vec3& d, const Hit& hit, double ior,
     Vec3 t;
     // A refracted ray that would leave on the incident side of the geometric surface can only
     // come from an interpolated shading normal (chapter 9); treat it like TIR.
-    if (!refractDirection(d, n, eta_i, eta_t, t) ||
-        glm::dot(t, faceForward(hit.ng, -d)) >= 0.0) {
+    if (!refractDirection(d, n, eta_i, eta_t, t) || glm::dot(t, faceForward(hit.ng, -d)) >= 0.0) {
         s.totalInternalReflection = true;
         s.F = 1.0;
         return s;
@@ -81,9 +80,12 @@ DielectricSplit splitAtDielectric(const Vec3& d, const Hit& hit, double ior,
 
 FresnelFormula RefractionTerm::formulaFor(const Material& m) const {
     switch (choice_) {
-        case FresnelChoice::Exact: return FresnelFormula::Exact;
-        case FresnelChoice::Schlick: return FresnelFormula::Schlick;
-        case FresnelChoice::PerMaterial: break;
+        case FresnelChoice::Exact:
+            return FresnelFormula::Exact;
+        case FresnelChoice::Schlick:
+            return FresnelFormula::Schlick;
+        case FresnelChoice::PerMaterial:
+            break;
     }
     return m.param("schlick") != 0.0 ? FresnelFormula::Schlick : FresnelFormula::Exact;
 }
@@ -144,8 +146,10 @@ void installRefraction(Pipeline& pipeline, Scene&, const RenderContext& context)
     // --fresnel=exact|schlick overrides every material's choice.
     const std::string fresnel = context.cliOption("fresnel");
     FresnelChoice choice = FresnelChoice::PerMaterial;
-    if (fresnel == "exact") choice = FresnelChoice::Exact;
-    else if (fresnel == "schlick") choice = FresnelChoice::Schlick;
+    if (fresnel == "exact")
+        choice = FresnelChoice::Exact;
+    else if (fresnel == "schlick")
+        choice = FresnelChoice::Schlick;
     else if (!fresnel.empty())
         throw InputError("--fresnel: expected 'exact' or 'schlick', got '" + fresnel + "'");
     // A scene without transparent materials pays nothing: the term is not even added.

@@ -17,10 +17,10 @@ bool refractDirection(const Vec3& d, const Vec3& n, double eta_i, double eta_t, 
 /// The media on both sides of a surface a ray is about to cross, and the media it travels
 /// through once it has crossed.
 struct MediaCrossing {
-    double eta_i = 1.0;     ///< Index of refraction on the ray's side.
-    double eta_t = 1.0;     ///< Index of refraction on the far side.
-    bool entering = true;   ///< The ray goes into the object.
-    MediumStack beyond;     ///< The stack a transmitted ray carries.
+    double eta_i = 1.0;    ///< Index of refraction on the ray's side.
+    double eta_t = 1.0;    ///< Index of refraction on the far side.
+    bool entering = true;  ///< The ray goes into the object.
+    MediumStack beyond;    ///< The stack a transmitted ray carries.
 };
 
 /// Which media meet where a ray travelling through `media` crosses the surface of `instance`,
@@ -33,12 +33,12 @@ MediaCrossing crossSurface(const MediumStack& media, const Instance* instance, d
 /// What a smooth dielectric surface does to one ray: it splits it into a mirror ray that
 /// carries the share F and a refracted ray that carries 1 − F.
 struct DielectricSplit {
-    Vec3 reflected{0.0};     ///< Unit mirror direction.
-    Vec3 transmitted{0.0};   ///< Unit refracted direction (zero under total internal reflection).
-    double F = 1.0;          ///< Fresnel reflectance: the reflected share (1 under TIR).
-    double cosTheta_i = 0.0; ///< Cosine of the angle of incidence.
+    Vec3 reflected{0.0};      ///< Unit mirror direction.
+    Vec3 transmitted{0.0};    ///< Unit refracted direction (zero under total internal reflection).
+    double F = 1.0;           ///< Fresnel reflectance: the reflected share (1 under TIR).
+    double cosTheta_i = 0.0;  ///< Cosine of the angle of incidence.
     bool totalInternalReflection = false;  ///< No refracted ray exists.
-    MediaCrossing media;     ///< The indices on both sides, and the stack beyond.
+    MediaCrossing media;                   ///< The indices on both sides, and the stack beyond.
 };
 
 /// Split a ray with unit direction d at `hit` on an object of index `ior`, travelling through
@@ -56,7 +56,7 @@ enum class FresnelChoice { PerMaterial, Exact, Schlick };
 /// maximum depth it returns the colour unchanged. Shadow rays stay opaque: a glass object
 /// casts a full, hard shadow (no caustics).
 class RefractionTerm final : public ShadingTerm {
-public:
+  public:
     /// Both rays are traced at depths below this; deeper, one of them is picked with
     /// probability F and 1 − F, so nested glass cannot grow a tree of 2^depth rays.
     static constexpr int kFullSplitDepth = 8;
@@ -69,7 +69,7 @@ public:
     /// The formula this term uses for material m.
     FresnelFormula formulaFor(const Material& m) const;
 
-private:
+  private:
     FresnelChoice choice_;
 };
 
