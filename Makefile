@@ -1,7 +1,7 @@
 # raybook's front door. `make demo` and `make test` install what is missing, configure and build.
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
-CHAPTERS   := 1 2 3 4
+CHAPTERS   := 1 2 3 4 5 6 7
 LAST       := $(lastword $(CHAPTERS))
 DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
 #include "core/material.h"
@@ -48,9 +49,12 @@ int parseSampleCount(const std::string& what, const std::string& text) {
 
 /// A scene option that must be a whole number in [0, hi].
 int wholeSceneOption(double value, int hi, const std::string& what) {
-    if (!(value >= 0.0 && value <= hi && value == std::floor(value)))
+    if (!(value >= 0.0 && value <= hi && value == std::floor(value))) {
+        char got[32];
+        std::snprintf(got, sizeof got, "%g", value);
         throw InputError(what + ": expected a whole number from 0 to " + std::to_string(hi) +
-                         ", got " + std::to_string(value));
+                         ", got " + got);
+    }
     return static_cast<int>(value);
 }
 
@@ -62,10 +66,12 @@ int glossySampleCount(const RenderContext& context) {
     // positional `dist`, which asks for dist × dist rays (0: no distribution ray tracing).
     const std::string cli = context.cliOption("glossy-samples");
     if (!cli.empty()) return parseSampleCount("--glossy-samples", cli);
-    const double option = context.sceneOption("glossy_samples", -1.0);
-    if (option != -1.0) return wholeSceneOption(option, 65536, "gr.option('glossy_samples')");
-    const double dist = context.sceneOption("dist", -1.0);
-    if (dist != -1.0) {
+    // Scene options are always finite, so NaN marks one that is absent.
+    const double absent = std::nan("");
+    const double option = context.sceneOption("glossy_samples", absent);
+    if (!std::isnan(option)) return wholeSceneOption(option, 65536, "gr.option('glossy_samples')");
+    const double dist = context.sceneOption("dist", absent);
+    if (!std::isnan(dist)) {
         const int perAxis = wholeSceneOption(dist, 256, "gr.render: argument 13 (dist)");
         return perAxis * perAxis;
     }
@@ -82,8 +88,10 @@ LobeKind glossyLobeKind(const RenderContext& context) {
     const double option = context.sceneOption("glossy_sampler", 1.0);
     if (option == 0.0) return LobeKind::Fuzz;
     if (option == 1.0) return LobeKind::Phong;
-    throw InputError("gr.option('glossy_sampler'): expected 0 (fuzz sphere) or 1 (Phong lobe), "
-                     "got " + std::to_string(option));
+    char got[32];
+    std::snprintf(got, sizeof got, "%g", option);
+    throw InputError(std::string("gr.option('glossy_sampler'): expected 0 (fuzz sphere) or 1 ") +
+                     "(Phong lobe), got " + got);
 }
 
 namespace {

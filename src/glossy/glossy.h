@@ -23,10 +23,11 @@ inline constexpr int kDefaultGlossySamples = 16;
 /// when its `glossiness` is positive; its glossiness is the fuzz radius, and the Phong
 /// exponent is chosen to match it (see phongExponentFromFuzz).
 class GlossyLobe final : public LobeSampler {
-public:
+  public:
     /// A sampler of the given kind that averages `samples` directions per glossy surface.
     GlossyLobe(LobeKind kind, int samples) : kind_(kind), samples_(samples) {}
-    /// `samples` for a material with glossiness > 0, else 0 (a sharp mirror).
+    /// `samples` for a material with glossiness > 0, else 0 (a sharp mirror). traceSpecular
+    /// uses the count where the camera sees the surface and one sample at deeper bounces.
     int sampleCount(const Material& m) const override;
     /// One direction of the material's lobe about `axis`; false (no light) when it falls on
     /// the far side of the surface, that is when direction · n ≤ 0.
@@ -35,7 +36,7 @@ public:
     /// The distribution in use.
     LobeKind kind() const { return kind_; }
 
-private:
+  private:
     LobeKind kind_;
     int samples_;
 };

@@ -73,12 +73,11 @@ Vec3 samplePhongLobe(const Vec3& axis, double exponent, double u1, double u2) {
     const double cosAlpha = 1.0 - oneMinusCos;
     const double sinAlpha = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
     const double phi = 2.0 * kPi * u2;
-    return Frame(axis).toWorld(
-        Vec3(sinAlpha * std::cos(phi), sinAlpha * std::sin(phi), cosAlpha));
+    return Frame(axis).toWorld(Vec3(sinAlpha * std::cos(phi), sinAlpha * std::sin(phi), cosAlpha));
 }
 
 double phongLobePdf(double exponent, double cosAlpha) {
-    if (cosAlpha <= 0.0) return 0.0;
+    if (cosAlpha < 0.0) return 0.0;  // the lobe covers the hemisphere about the axis only
     return (exponent + 1.0) / (2.0 * kPi) * std::pow(cosAlpha, exponent);
 }
 // [phong-lobe]

@@ -19,7 +19,9 @@ struct Frame {
 // ---- Glossiness → the two samplers' parameters ---------------------------------------------
 
 /// The fuzz-sphere radius of a material of glossiness g: the glossiness *is* seed 000's fuzz.
-inline double fuzzFromGlossiness(double glossiness) { return glossiness; }
+inline double fuzzFromGlossiness(double glossiness) {
+    return glossiness;
+}
 
 /// The Phong exponent n whose lobe has the same mean cosine as the fuzz sphere of radius f:
 /// (n+1)/(n+2) = 1 − f²/5, so n = 5/f² − 2 (exact for f ≤ 1; clamped at 0 above √2.5).
@@ -39,7 +41,7 @@ double fuzzSpherePdf(double fuzz, double cosAlpha);
 
 /// A direction distributed ∝ cos^n α about the axis (α: angle to the axis).
 Vec3 samplePhongLobe(const Vec3& axis, double exponent, double u1, double u2);
-/// Its pdf per unit solid angle: (n+1)/(2π) · cos^n α for cos α > 0, else 0.
+/// Its pdf per unit solid angle: (n+1)/(2π) · cos^n α for cos α ≥ 0, else 0.
 double phongLobePdf(double exponent, double cosAlpha);
 
 }  // namespace rb
