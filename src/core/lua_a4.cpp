@@ -327,6 +327,13 @@ void pushLight(lua_State* L, const PointLight& light) {
     luaL_setmetatable(L, kLightType);
 }
 
+PointLight checkLight(lua_State* L, int arg, const char* call, const char* argName) {
+    void* p = luaL_testudata(L, arg, kLightType);
+    if (!p)
+        throw InputError(std::string(call) + ": " + argName + " is not a light made by gr.light");
+    return *static_cast<PointLight*>(p);
+}
+
 std::vector<PointLight> checkLights(lua_State* L, int arg) {
     if (lua_type(L, arg) != LUA_TTABLE)
         throw InputError("gr.render: argument " + std::to_string(arg) +
@@ -338,12 +345,16 @@ std::vector<PointLight> checkLights(lua_State* L, int arg) {
     std::vector<PointLight> lights;
     for (lua_Unsigned i = 1; i <= n; ++i) {
         lua_rawgeti(L, arg, static_cast<lua_Integer>(i));
-        void* p = luaL_testudata(L, -1, kLightType);
+        const int top = lua_gettop(L);
+        try {
+            lights.push_back(checkLight(L, top, "gr.render",
+                                        ("argument " + std::to_string(arg) + " (lights): element " +
+                                         std::to_string(i)).c_str()));
+        } catch (...) {
+            lua_pop(L, 1);
+            throw;
+        }
         lua_pop(L, 1);
-        if (!p)
-            throw InputError("gr.render: argument " + std::to_string(arg) + " (lights): element " +
-                             std::to_string(i) + " is not a light made by gr.light");
-        lights.push_back(*static_cast<PointLight*>(p));
     }
     return lights;
 }

@@ -134,6 +134,8 @@ std::string resolveScenePath(const SceneBuilder& builder, const std::string& nam
 
 /// Push a light userdata (gr.light's result).
 void pushLight(lua_State* L, const PointLight& light);
+/// The light made by gr.light at stack index arg.
+PointLight checkLight(lua_State* L, int arg, const char* call, const char* argName);
 /// The table of lights at argument arg: at least one, each made by gr.light.
 std::vector<PointLight> checkLights(lua_State* L, int arg);
 

@@ -146,23 +146,12 @@ PointLight namedPointLight(const Fields& fields, const char* call) {
     return light;
 }
 
-/// The PointLight inside a light userdata at stack index `index` (made by gr.light).
-PointLight lightAt(lua_State* L, int index) {
-    // The core reads lights out of a table (gr.render's list): wrap this one in a table.
-    lua_createtable(L, 1, 0);
-    lua_pushvalue(L, index);
-    lua_rawseti(L, -2, 1);
-    const PointLight light = checkLights(L, lua_gettop(L)).front();
-    lua_pop(L, 1);
-    return light;
-}
-
 // [lua-seed001-light]
 /// The rest of seed 001's gr.light(position, colour, falloff, {length, width}, normal, left):
 /// the core has already made the point light (argument 7); give it a rectangular shape.
 int seed001RectangleLight(lua_State* L) {
     const char* call = "gr.light";
-    PointLight light = lightAt(L, 7);
+    PointLight light = checkLight(L, 7, call, "the point light");
     const auto size = checkTuple(L, 4, 2, call, "{length, width}");
     if (size[0] < 0 || size[1] < 0)
         throw InputError("gr.light: argument 4 ({length, width}) must not be negative");
