@@ -104,10 +104,15 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --unsafe-lua       let the scene use os and io
   --help, --version
 )";
+    bool first = true;
     for (const Feature& f : built)
         for (const FeatureOption& o : f.options) {
+            if (first) text += "\nOptions the chapters in this build add:\n";
+            first = false;
+            // A long option gets its help on the next line, aligned with the others.
             std::string left = std::string("  --") + o.name + "=" + o.value;
-            left.resize(std::max<size_t>(left.size() + 1, 21), ' ');
+            left = left.size() < 20 ? left + std::string(21 - left.size(), ' ')
+                                    : left + "\n" + std::string(21, ' ');
             text += left + o.help + " (chapter " + std::to_string(f.chapter) + ")\n";
         }
     return text;
