@@ -3,21 +3,23 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "core/error.h"
 #include "core/lua_scene.h"
 #include "core/options.h"
 #include "core/render.h"
-#include "core/render_context.h"
+#include "core/world.h"
 
 namespace rb {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 /// Peak resident set size in MiB.
 double peakMemoryMiB() {
@@ -83,24 +85,16 @@ int run(int argc, char** argv) {
             throw InputError(job.where + ": cannot write " + output + ": the folder '" +
                              folder.string() + "' does not exist");
 
-        // Build the world: instances, lights, settings; let each feature plug itself in;
-        // then build the aggregate over the instances.
+        // Build the world: instances, lights, settings, the features' shading, the aggregate.
         t0 = Clock::now();
-        Scene scene;
-        scene.instances = std::move(r.instances);
-        scene.lights = job.lights;
-        scene.ambient = job.ambient;
-        scene.maxDepth = static_cast<int>(job.options.count("max_depth") ? job.options.at("max_depth")
-                                                                         : scene.maxDepth);
-        if (cl.maxDepth >= 0) scene.maxDepth = cl.maxDepth;
-        Pipeline pipeline;
-        const RenderContext context{scene.instances, job, cl.featureOptions};
-        for (const Feature& f : features.on())
-            if (f.install) f.install(pipeline, scene, context);
-        scene.aggregate = pipeline.buildAggregate(scene.instances);
+        const std::unique_ptr<World> world =
+            buildWorld(std::move(r), features, cl.featureOptions, cl.maxDepth);
+        const Scene& scene = world->scene;
+        const Pipeline& pipeline = world->pipeline;
         const double buildSeconds = since(t0);
 
-        const PinholeCamera camera(job.camera, job.width, job.height);
+        const PinholeCamera camera(world->source.job.camera, world->source.job.width,
+                                   world->source.job.height);
         RenderSettings settings;
         settings.threads = cl.threads;
         settings.seed = cl.seed;
@@ -108,18 +102,20 @@ int run(int argc, char** argv) {
         settings.progress = !cl.quiet && isatty(STDERR_FILENO);
         RayCounters counters;
         t0 = Clock::now();
-        const Image image = render(scene, pipeline, camera, job.width, job.height, settings,
-                                   counters);
+        const Image image = render(scene, pipeline, camera, world->source.job.width,
+                                   world->source.job.height, settings, counters);
         const double renderSeconds = since(t0);
 
         t0 = Clock::now();
         try {
             writePng(image, output);
         } catch (const InputError& e) {
-            throw InputError(job.where + ": " + e.what());
+            throw InputError(world->source.job.where + ": " + e.what());
         }
         const double writeSeconds = since(t0);
-        if (!cl.quiet) std::fprintf(stderr, "wrote %s (%dx%d)\n", output.c_str(), job.width, job.height);
+        if (!cl.quiet)
+            std::fprintf(stderr, "wrote %s (%dx%d)\n", output.c_str(), world->source.job.width,
+                         world->source.job.height);
 
         if (cl.stats) {
             std::fprintf(stderr, "stats for %s\n", output.c_str());
@@ -128,13 +124,13 @@ int run(int argc, char** argv) {
                 if (counters.count[i])
                     std::fprintf(stderr, " %s %llu", kRayKindNames[i],
                                  static_cast<unsigned long long>(counters.count[i]));
-            std::fprintf(stderr, " (total %llu)\n", static_cast<unsigned long long>(counters.total()));
+            std::fprintf(stderr, " (total %llu)\n",
+                         static_cast<unsigned long long>(counters.total()));
             if (k == 0)
                 std::fprintf(stderr, "  time       lua %.3f s, load %.3f s, mesh bvh %.3f s\n",
                              loadTimes.total - loadTimes.meshLoad - loadTimes.meshBvh,
                              loadTimes.meshLoad, loadTimes.meshBvh);
-            std::fprintf(stderr,
-                         "  time       build %.3f s, render %.3f s, write %.3f s\n",
+            std::fprintf(stderr, "  time       build %.3f s, render %.3f s, write %.3f s\n",
                          buildSeconds, renderSeconds, writeSeconds);
             std::fprintf(stderr, "  speed      %.2f Mrays/s\n",
                          counters.total() / std::max(renderSeconds, 1e-9) / 1e6);

@@ -1,0 +1,31 @@
+#include "core/world.h"
+
+#include "core/render_context.h"
+
+namespace rb {
+
+// [build-world]
+std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& features,
+                                  const std::map<std::string, std::string>& featureOptions,
+                                  int maxDepth) {
+    auto world = std::make_unique<World>();
+    world->source = std::move(render);
+    const RenderJob& job = world->source.job;
+    Scene& scene = world->scene;
+    // The instances, lights and settings the script asked for.
+    scene.instances = std::move(world->source.instances);
+    scene.lights = job.lights;
+    scene.ambient = job.ambient;
+    auto depth = job.options.find("max_depth");
+    if (depth != job.options.end()) scene.maxDepth = static_cast<int>(depth->second);
+    if (maxDepth >= 0) scene.maxDepth = maxDepth;
+    // Each enabled chapter plugs itself in, in chapter order; then the aggregate is built.
+    const RenderContext context{scene.instances, job, featureOptions};
+    for (const Feature& f : features.on())
+        if (f.install) f.install(world->pipeline, scene, context);
+    scene.aggregate = world->pipeline.buildAggregate(scene.instances);
+    return world;
+}
+// [build-world]
+
+}  // namespace rb

@@ -1,0 +1,28 @@
+/// \file
+/// World: one loaded render request turned into a scene and a pipeline, ready to render.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/integrator.h"
+#include "core/lua_scene.h"
+
+namespace rb {
+
+/// Everything one render needs, kept together so the shapes and materials outlive the scene.
+struct World {
+    LoadedRender source;  ///< The request; keeps the scene graph (shapes, materials) alive.
+    Scene scene;          ///< Instances, their aggregate, lights and settings.
+    Pipeline pipeline;    ///< The shading the enabled features installed.
+};
+
+/// Build the world for a loaded render: take its instances and lights, apply max_depth (the
+/// scene's gr.option, then `maxDepth` when ≥ 0, as --max-depth), let every enabled feature
+/// install itself, then build the aggregate. `featureOptions` are the chapters' --name=value.
+std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& features,
+                                  const std::map<std::string, std::string>& featureOptions = {},
+                                  int maxDepth = -1);
+
+}  // namespace rb
