@@ -14,9 +14,15 @@ struct AABB {
     Vec3 hi{-std::numeric_limits<double>::infinity()};
 
     /// Grow to contain point p.
-    void extend(const Vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void extend(const Vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
     /// Grow to contain box b.
-    void extend(const AABB& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    void extend(const AABB& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
     /// True when no point has been added.
     bool empty() const { return lo.x > hi.x; }
     /// The box centre.

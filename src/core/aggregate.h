@@ -13,7 +13,7 @@ namespace rb {
 
 /// A set of instances that answers closest-hit and any-hit queries.
 class Aggregate {
-public:
+  public:
     virtual ~Aggregate() = default;
     /// The closest hit with t in (0, tMax); false if none.
     virtual bool intersect(const Ray& ray, double tMax, Hit& hit) const = 0;
@@ -24,17 +24,16 @@ public:
 };
 
 /// Builds an aggregate over a list of instances (which outlive it).
-using AggregateBuilder =
-    std::unique_ptr<Aggregate> (*)(const std::vector<Instance>& instances);
+using AggregateBuilder = std::unique_ptr<Aggregate> (*)(const std::vector<Instance>& instances);
 
 /// Brute force: test every instance. The reference that faster aggregates are tested against.
 class LinearAggregate final : public Aggregate {
-public:
+  public:
     explicit LinearAggregate(const std::vector<Instance>& instances) : instances_(instances) {}
     bool intersect(const Ray& ray, double tMax, Hit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
 
-private:
+  private:
     const std::vector<Instance>& instances_;
 };
 

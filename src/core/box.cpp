@@ -18,15 +18,26 @@ bool Box::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
         }
         double tNear = (0.0 - o) / d, tFar = (1.0 - o) / d;
         if (tNear > tFar) std::swap(tNear, tFar);
-        if (tNear > tEnter) { tEnter = tNear; enterAxis = axis; }
-        if (tFar < tExit) { tExit = tFar; exitAxis = axis; }
+        if (tNear > tEnter) {
+            tEnter = tNear;
+            enterAxis = axis;
+        }
+        if (tFar < tExit) {
+            tExit = tFar;
+            exitAxis = axis;
+        }
         if (tEnter > tExit) return false;
     }
     // Take the entry face when it is ahead of the origin, else the exit face (ray starts inside).
     double t;
     int axis;
-    if (tEnter > 0.0) { t = tEnter; axis = enterAxis; }
-    else { t = tExit; axis = exitAxis; }
+    if (tEnter > 0.0) {
+        t = tEnter;
+        axis = enterAxis;
+    } else {
+        t = tExit;
+        axis = exitAxis;
+    }
     if (t <= 0.0 || t >= tMax || axis < 0) return false;
     // The outward normal of the face: −axis on the 0 face, +axis on the 1 face.
     const Vec3 p = ray.o + t * ray.d;

@@ -8,7 +8,7 @@ namespace rb {
 
 /// The axis-aligned unit cube [0,1]³.
 class Box final : public Shape {
-public:
+  public:
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     AABB bounds() const override { return AABB{Vec3(0.0), Vec3(1.0)}; }
 };

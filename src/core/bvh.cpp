@@ -38,8 +38,8 @@ struct Split {
 
 // [binned-sah]
 /// Find the cheapest binned SAH split of refs[begin, end) over all three axes.
-Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end,
-                const AABB& nodeBounds, const AABB& centroidBounds, int nBins) {
+Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end, const AABB& nodeBounds,
+                const AABB& centroidBounds, int nBins) {
     // Drop every primitive into a bin per axis by its centroid, in one pass.
     std::array<std::array<AABB, kMaxBins>, 3> binBounds;
     std::array<std::array<std::uint32_t, kMaxBins>, 3> binCount;
@@ -57,8 +57,8 @@ Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end,
         const PrimRef& r = s.refs[i];
         for (int axis = 0; axis < 3; ++axis) {
             const int b = std::min(
-                nBins - 1, static_cast<int>((r.centroid[axis] - centroidBounds.lo[axis]) *
-                                            scale[axis]));
+                nBins - 1,
+                static_cast<int>((r.centroid[axis] - centroidBounds.lo[axis]) * scale[axis]));
             binBounds[axis][b].extend(r.box);
             ++binCount[axis][b];
         }

@@ -21,14 +21,14 @@ struct BVHNode {
 
 /// Build settings.
 struct BVHBuildOptions {
-    int bins = 16;           ///< SAH candidate planes per axis = bins − 1.
-    int maxLeafSize = 4;     ///< A node with more primitives is always split.
-    double traversalCost = 1.0;    ///< SAH cost of visiting a node, relative to one primitive test.
+    int bins = 16;               ///< SAH candidate planes per axis = bins − 1.
+    int maxLeafSize = 4;         ///< A node with more primitives is always split.
+    double traversalCost = 1.0;  ///< SAH cost of visiting a node, relative to one primitive test.
 };
 
 /// A binned-SAH BVH over primitives given by their bounds.
 class BVH {
-public:
+  public:
     /// Entries of the traversal stack. The build keeps the tree shallower than this (it splits
     /// at the median below depth 48, so the depth is at most 48 + 32).
     static constexpr int kStackSize = 96;
@@ -108,7 +108,7 @@ public:
         }
     }
 
-private:
+  private:
     std::vector<BVHNode> nodes_;
     std::vector<std::uint32_t> order_;
     int depth_ = 0;

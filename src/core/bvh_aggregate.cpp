@@ -33,9 +33,8 @@ bool BVHAggregate::intersect(const Ray& ray, double tMax, Hit& hit) const {
 // [toplevel-intersect]
 
 bool BVHAggregate::occluded(const Ray& ray, double tMax) const {
-    return bvh_.any(ray, tMax, [&](std::uint32_t slot, double t) {
-        return ordered_[slot]->occluded(ray, t);
-    });
+    return bvh_.any(ray, tMax,
+                    [&](std::uint32_t slot, double t) { return ordered_[slot]->occluded(ray, t); });
 }
 
 std::string BVHAggregate::statistics() const {
@@ -57,9 +56,9 @@ std::string BVHAggregate::statistics() const {
     std::snprintf(line, sizeof line, "%zu nodes, %.2f MiB", nodes, bytes / 1048576.0);
     std::string out = line;
     if (triangles) {
-        std::snprintf(line, sizeof line,
-                      "; %zu triangles: %.1f bytes/triangle (mesh) + %.1f (BVH)", triangles,
-                      double(triangleBytes) / triangles, double(meshBvhBytes) / triangles);
+        std::snprintf(line, sizeof line, "; %zu triangles: %.1f bytes/triangle (mesh) + %.1f (BVH)",
+                      triangles, double(triangleBytes) / triangles,
+                      double(meshBvhBytes) / triangles);
         out += line;
     }
     return out;

@@ -9,7 +9,7 @@ namespace rb {
 
 /// A BVH over instances' world bounds; each instance then uses its shape's own structure.
 class BVHAggregate final : public Aggregate {
-public:
+  public:
     explicit BVHAggregate(const std::vector<Instance>& instances);
     bool intersect(const Ray& ray, double tMax, Hit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
@@ -17,7 +17,7 @@ public:
     std::string statistics() const override;
     const BVH& bvh() const { return bvh_; }
 
-private:
+  private:
     std::vector<const Instance*> ordered_;  ///< Instances in BVH leaf order.
     BVH bvh_;
 };

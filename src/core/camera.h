@@ -8,16 +8,16 @@ namespace rb {
 
 /// A4's camera parameters, as gr.render receives them.
 struct CameraSpec {
-    Vec3 eye{0.0};                 ///< Centre of projection.
-    Vec3 view{0.0, 0.0, -1.0};     ///< Viewing direction (not normalised).
-    Vec3 up{0.0, 1.0, 0.0};        ///< Up hint (need not be orthogonal to view).
-    double fovyDegrees = 50.0;     ///< Vertical field of view in degrees.
+    Vec3 eye{0.0};              ///< Centre of projection.
+    Vec3 view{0.0, 0.0, -1.0};  ///< Viewing direction (not normalised).
+    Vec3 up{0.0, 1.0, 0.0};     ///< Up hint (need not be orthogonal to view).
+    double fovyDegrees = 50.0;  ///< Vertical field of view in degrees.
 };
 
 /// A pinhole camera: every ray starts at the eye and passes through a point on an image plane
 /// at distance 1 along the view direction.
 class PinholeCamera {
-public:
+  public:
     /// Build the camera basis; throws InputError when view is zero, up is parallel to view, or
     /// fovy is outside (0°, 180°).
     PinholeCamera(const CameraSpec& spec, int width, int height);
@@ -29,7 +29,7 @@ public:
     Vec3 right() const { return u_; }
     Vec3 upVector() const { return v_; }
 
-private:
+  private:
     Vec3 eye_, w_, u_, v_;
     double halfWidth_, halfHeight_;
     int width_, height_;

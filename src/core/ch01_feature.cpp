@@ -13,8 +13,8 @@ void installChapter01(Pipeline& p, Scene&, const RenderContext&) {
 }  // namespace
 
 Feature chapter01Feature() {
-    return {"raycast", 1, "rays, pinhole camera, spheres and boxes, images, OpenMP", false,
-            bindA4, installChapter01};
+    return {"raycast", 1,      "rays, pinhole camera, spheres and boxes, images, OpenMP",
+            false,     bindA4, installChapter01};
 }
 
 }  // namespace rb

@@ -5,12 +5,14 @@
 namespace rb {
 
 namespace {
-void installChapter02(Pipeline& p, Scene&, const RenderContext&) { p.surface = shadePhong; }
+void installChapter02(Pipeline& p, Scene&, const RenderContext&) {
+    p.surface = shadePhong;
+}
 }  // namespace
 
 Feature chapter02Feature() {
-    return {"phong", 2, "A4 scene graph, Phong shading, point lights, hard shadows", false,
-            nullptr, installChapter02};
+    return {"phong", 2,       "A4 scene graph, Phong shading, point lights, hard shadows",
+            false,   nullptr, installChapter02};
 }
 
 }  // namespace rb

@@ -1,7 +1,7 @@
 // Chapter 3 plugs in: gr.mesh and the two-level BVH.
 #include "core/bvh_aggregate.h"
-#include "core/integrator.h"
 #include "core/chapter_features.h"
+#include "core/integrator.h"
 #include "core/lua_scene.h"
 
 namespace rb {
@@ -9,12 +9,14 @@ namespace rb {
 void bindMeshes(LuaBindings& lua);
 
 namespace {
-void installChapter03(Pipeline& p, Scene&, const RenderContext&) { p.buildAggregate = buildBVHAggregate; }
+void installChapter03(Pipeline& p, Scene&, const RenderContext&) {
+    p.buildAggregate = buildBVHAggregate;
+}
 }  // namespace
 
 Feature chapter03Feature() {
-    return {"bvh", 3, "OBJ meshes, watertight triangles, two-level binned-SAH BVH", false,
-            bindMeshes, installChapter03};
+    return {"bvh", 3,          "OBJ meshes, watertight triangles, two-level binned-SAH BVH",
+            false, bindMeshes, installChapter03};
 }
 
 }  // namespace rb

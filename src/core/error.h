@@ -10,7 +10,7 @@ namespace rb {
 /// Bad input. The message already names the file, the line where one applies, and what was
 /// expected, so `rt` prints it as it is and exits with code 1.
 class InputError : public std::runtime_error {
-public:
+  public:
     explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 

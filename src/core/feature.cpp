@@ -76,7 +76,7 @@ constexpr LaterCall kLaterCalls[] = {
     {"transparency", 5, "refraction"},
     {"schlick", 5, "refraction"},
     {"glossiness", 7, "glossy"},
-    {"fuzz", 7, "glossy"},
+    {"glossy_sampler", 7, "glossy"},
     {"light_samples", 6, "soft_shadows"},
     {"glossy_samples", 7, "glossy"},
     {"refraction", 5, "refraction"},

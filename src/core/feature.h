@@ -21,10 +21,10 @@ struct FeatureOption {
 
 /// One chapter's module as the core sees it.
 struct Feature {
-    const char* name;    ///< Switch name, e.g. "reflection".
-    int chapter;         ///< Chapter number.
-    const char* title;   ///< One line for --list-features.
-    bool switchable;     ///< False for the core chapters 1–3.
+    const char* name;   ///< Switch name, e.g. "reflection".
+    int chapter;        ///< Chapter number.
+    const char* title;  ///< One line for --list-features.
+    bool switchable;    ///< False for the core chapters 1–3.
     /// Add the chapter's Lua calls (always, when the chapter is built). May be null.
     void (*bindLua)(LuaBindings& lua);
     /// Plug the chapter into one render (only when the feature is on). May be null.
@@ -40,7 +40,7 @@ std::vector<Feature> builtFeatures();
 
 /// Which built features are on.
 class FeatureSet {
-public:
+  public:
     /// Parse a --features list ("all", "reflection,refraction", "all,-glossy") against the
     /// built features. Throws InputError for an unknown name or an attempt to switch off core.
     FeatureSet(const std::vector<Feature>& built, const std::string& spec);
@@ -51,7 +51,7 @@ public:
     /// Every built feature.
     const std::vector<Feature>& built() const { return built_; }
 
-private:
+  private:
     std::vector<Feature> built_;
     std::vector<Feature> on_;
 };

@@ -13,14 +13,14 @@ struct Instance;
 
 /// The closest intersection of a ray with the scene, in world space.
 struct Hit {
-    double t = 0.0;                       ///< Ray parameter of the hit.
-    Vec3 p{0.0};                          ///< World-space hit point.
-    Vec3 ng{0.0};                         ///< Geometric normal, unit length, as the shape defines it.
-    Vec3 ns{0.0};                         ///< Shading normal (equals ng until a chapter changes it).
-    Vec2 uv{0.0};                         ///< Surface parameterisation, where the shape has one.
-    std::uint32_t primitive = 0;          ///< Triangle index within a mesh, or 0.
-    const Material* material = nullptr;   ///< Material of the instance that was hit.
-    const Instance* instance = nullptr;   ///< The instance that was hit.
+    double t = 0.0;               ///< Ray parameter of the hit.
+    Vec3 p{0.0};                  ///< World-space hit point.
+    Vec3 ng{0.0};                 ///< Geometric normal, unit length, as the shape defines it.
+    Vec3 ns{0.0};                 ///< Shading normal (equals ng until a chapter changes it).
+    Vec2 uv{0.0};                 ///< Surface parameterisation, where the shape has one.
+    std::uint32_t primitive = 0;  ///< Triangle index within a mesh, or 0.
+    const Material* material = nullptr;  ///< Material of the instance that was hit.
+    const Instance* instance = nullptr;  ///< The instance that was hit.
 };
 
 /// What a shape reports in its own object space; the scene turns it into a Hit.

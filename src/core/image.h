@@ -19,7 +19,7 @@ void checkImageSize(long long width, long long height, const std::string& where)
 
 /// A width × height image of linear RGB, row 0 at the top.
 class Image {
-public:
+  public:
     Image(int width, int height);
     int width() const { return width_; }
     int height() const { return height_; }
@@ -31,7 +31,7 @@ public:
     const std::vector<float>& data() const { return rgb_; }
     std::vector<float>& data() { return rgb_; }
 
-private:
+  private:
     int width_, height_;
     std::vector<float> rgb_;
 };

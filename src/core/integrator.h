@@ -2,11 +2,10 @@
 /// The integrator: trace a ray, find the surface, and add up the shading terms.
 #pragma once
 
-#include <memory>
-#include <vector>
-
 #include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "core/aggregate.h"
 #include "core/light.h"
@@ -48,7 +47,7 @@ using SurfaceShader = Colour (*)(const ShadeContext& ctx, const Ray& ray, const 
 /// A secondary-ray term (mirror reflection, transmission ...): the extension point chapters
 /// 4 and 5 plug into. Terms run in chapter order, each turning the colour so far into a new one.
 class ShadingTerm {
-public:
+  public:
     virtual ~ShadingTerm() = default;
     /// The colour at hit after this term, given the colour so far.
     virtual Colour apply(const ShadeContext& ctx, const Ray& ray, const Hit& hit,
@@ -58,7 +57,7 @@ public:
 /// Spreads a specular direction into a lobe: chapter 7's glossy reflection and translucency.
 /// Reflection and refraction ask it for directions when it is installed.
 class LobeSampler {
-public:
+  public:
     virtual ~LobeSampler() = default;
     /// How many directions to average at a surface of material m (0: keep the sharp one).
     virtual int sampleCount(const Material& m) const = 0;
@@ -71,15 +70,15 @@ public:
 
 /// How a render is put together; each enabled feature adjusts it.
 struct Pipeline {
-    SurfaceShader surface = nullptr;            ///< Local shading (chapter 1, then 2).
-    AggregateBuilder buildAggregate = nullptr;  ///< Acceleration (chapter 1, then 3).
+    SurfaceShader surface = nullptr;                        ///< Local shading (chapter 1, then 2).
+    AggregateBuilder buildAggregate = nullptr;              ///< Acceleration (chapter 1, then 3).
     std::vector<std::shared_ptr<const ShadingTerm>> terms;  ///< Secondary terms, in order.
-    std::shared_ptr<const LobeSampler> lobe;    ///< Glossy lobes (chapter 7), or null.
+    std::shared_ptr<const LobeSampler> lobe;                ///< Glossy lobes (chapter 7), or null.
 };
 
 /// Traces rays through a scene with a pipeline.
 class Integrator {
-public:
+  public:
     Integrator(const Scene& scene, const Pipeline& pipeline) : scene_(scene), pipeline_(pipeline) {}
     /// Radiance arriving along a ray (reversed): the shaded colour of the first surface, or
     /// the background.
@@ -90,7 +89,7 @@ public:
     /// The pipeline this integrator runs.
     const Pipeline& pipeline() const { return pipeline_; }
 
-private:
+  private:
     const Scene& scene_;
     const Pipeline& pipeline_;
 };

@@ -11,7 +11,7 @@ namespace rb {
 /// The extension point for lights with an area (chapter 6). A shaped light is sampled as
 /// n × n stratified points, each shaded like a point light.
 class LightShape {
-public:
+  public:
     virtual ~LightShape() = default;
     /// Samples per axis the scene asked for (n × n in all).
     virtual int samplesPerAxis() const = 0;
@@ -26,7 +26,7 @@ public:
 struct PointLight {
     Vec3 position{0.0};
     Colour colour{1.0};
-    Vec3 falloff{1.0, 0.0, 0.0};  ///< (c0, c1, c2).
+    Vec3 falloff{1.0, 0.0, 0.0};              ///< (c0, c1, c2).
     std::shared_ptr<const LightShape> shape;  ///< Null: a true point light (chapters 1–5).
 
     // [falloff]

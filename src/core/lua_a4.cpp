@@ -1,5 +1,6 @@
 // The CS488 A4 scene language: gr.node, gr.joint, gr.sphere, gr.cube, gr.nh_sphere, gr.nh_box,
 // gr.material, gr.light, gr.render and the node methods. gr.mesh comes with chapter 3.
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
@@ -96,15 +97,18 @@ int materialTable(lua_State* L) {
         }
         const std::string key = lua_tostring(L, -2);
         const int top = lua_gettop(L);
+        const std::string label = "gr.material: field '" + key + "'";
         if (key == "kd" || key == "ks") {
-            const Vec3 c = checkVec3(L, top, "gr.material", key.c_str());
-            (key == "kd" ? m->kd : m->ks) = c;
+            const auto c = checkTupleAt(L, top, 3, label);
+            (key == "kd" ? m->kd : m->ks) = Vec3(c[0], c[1], c[2]);
         } else if (lua_type(L, -1) == LUA_TBOOLEAN) {
             setMaterialParam(L, *m, key, lua_toboolean(L, -1) ? 1.0 : 0.0, "gr.material");
         } else {
-            const double v = checkNumber(L, top, "gr.material", key.c_str());
-            if (key == "shininess") m->shininess = v;
-            else setMaterialParam(L, *m, key, v, "gr.material");
+            const double v = checkNumberAt(L, top, label);
+            if (key == "shininess")
+                m->shininess = v;
+            else
+                setMaterialParam(L, *m, key, v, "gr.material");
         }
         lua_pop(L, 1);
     }
@@ -142,13 +146,21 @@ int grOption(lua_State* L) {
     SceneBuilder& builder = sceneBuilder(L);
     if (!builder.optionNames.count(name)) {
         std::string title;
-        const int chapter = chapterProviding(name, title);
+        const int chapter = missingChapter(L, name, title);
         if (chapter)
             throw InputError("gr.option: '" + name + "' needs chapter " + std::to_string(chapter) +
                              " (" + title + "), which this build does not have");
         throw InputError("gr.option: unknown option '" + name + "'");
     }
-    builder.sceneOptions[name] = checkNumber(L, 2, "gr.option", "value");
+    const auto& spec = builder.optionNames.at(name);
+    const double value = checkNumber(L, 2, "gr.option", "value");
+    if (value < spec.min || value > spec.max || (spec.integer && value != std::floor(value))) {
+        char range[96];
+        std::snprintf(range, sizeof range, "%s from %g to %g",
+                      spec.integer ? "a whole number" : "a number", spec.min, spec.max);
+        throw InputError("gr.option: '" + name + "' must be " + range);
+    }
+    builder.sceneOptions[name] = value;
     return 0;
 }
 
@@ -211,8 +223,7 @@ int nodeScale(lua_State* L) {
 
 int nodeTranslate(lua_State* L) {
     auto node = checkSelf(L, "node:translate", 3, "(x, y, z)");
-    const Vec3 t(checkNumber(L, 2, "node:translate", "x"),
-                 checkNumber(L, 3, "node:translate", "y"),
+    const Vec3 t(checkNumber(L, 2, "node:translate", "x"), checkNumber(L, 3, "node:translate", "y"),
                  checkNumber(L, 4, "node:translate", "z"));
     applyTransform(L, *node, glm::translate(Mat4(1.0), t));
     return 0;
@@ -223,12 +234,14 @@ int nodeRotate(lua_State* L) {
     const std::string axisName = checkString(L, 2, "node:rotate", "axis");
     const double degrees = checkNumber(L, 3, "node:rotate", "degrees");
     Vec3 axis(0.0);
-    if (axisName == "x" || axisName == "X") axis.x = 1.0;
-    else if (axisName == "y" || axisName == "Y") axis.y = 1.0;
-    else if (axisName == "z" || axisName == "Z") axis.z = 1.0;
+    if (axisName == "x" || axisName == "X")
+        axis.x = 1.0;
+    else if (axisName == "y" || axisName == "Y")
+        axis.y = 1.0;
+    else if (axisName == "z" || axisName == "Z")
+        axis.z = 1.0;
     else
-        throw InputError("node:rotate: the axis must be 'x', 'y' or 'z', got '" +
-                         axisName + "'");
+        throw InputError("node:rotate: the axis must be 'x', 'y' or 'z', got '" + axisName + "'");
     applyTransform(L, *node, glm::rotate(Mat4(1.0), glm::radians(degrees), axis));
     return 0;
 }
@@ -347,9 +360,10 @@ std::vector<PointLight> checkLights(lua_State* L, int arg) {
         lua_rawgeti(L, arg, static_cast<lua_Integer>(i));
         const int top = lua_gettop(L);
         try {
-            lights.push_back(checkLight(L, top, "gr.render",
-                                        ("argument " + std::to_string(arg) + " (lights): element " +
-                                         std::to_string(i)).c_str()));
+            lights.push_back(checkLight(
+                L, top, "gr.render",
+                ("argument " + std::to_string(arg) + " (lights): element " + std::to_string(i))
+                    .c_str()));
         } catch (...) {
             lua_pop(L, 1);
             throw;
@@ -375,7 +389,7 @@ void bindA4(LuaBindings& lua) {
     lua.function("light", luaGuard<grLight>);
     lua.function("render", luaGuard<grRender>);
     lua.function("option", luaGuard<grOption>);
-    lua.option("max_depth", 4);
+    lua.option("max_depth", 4, 0, 1000, true);
     lua.nodeMethod("add_child", luaGuard<nodeAddChild>);
     lua.nodeMethod("set_material", luaGuard<nodeSetMaterial>);
     lua.nodeMethod("scale", luaGuard<nodeScale>);

@@ -81,8 +81,7 @@ std::shared_ptr<const Shape> meshFromTables(lua_State* L, const char* call) {
                              " needs at least 3 indices");
         // Fan-triangulate the polygon.
         for (size_t k = 1; k + 1 < idx.size(); ++k)
-            data.triangles.push_back(
-                {ObjCorner{idx[0]}, ObjCorner{idx[k]}, ObjCorner{idx[k + 1]}});
+            data.triangles.push_back({ObjCorner{idx[0]}, ObjCorner{idx[k]}, ObjCorner{idx[k + 1]}});
     }
     return std::make_shared<Mesh>(data, sceneBuilder(L).scenePath);
 }
@@ -108,8 +107,7 @@ int grMesh(lua_State* L) {
                          where.c_str());
         }
         node->shape = meshFromTables(L, "gr.mesh");
-    }
-    else if (lua_gettop(L) == 2)
+    } else if (lua_gettop(L) == 2)
         node->shape = meshFromFile(L, checkString(L, 2, "gr.mesh", "file"));
     else
         throw InputError("gr.mesh: with 3 arguments, argument 2 (vertices) must be a table");

@@ -52,49 +52,58 @@ void pushMaterial(lua_State* L, std::shared_ptr<Material> material) {
 
 // ---- Argument checks ----------------------------------------------------------------------
 
-SceneBuilder& sceneBuilder(lua_State* L) { return **static_cast<SceneBuilder**>(lua_getextraspace(L)); }
+SceneBuilder& sceneBuilder(lua_State* L) {
+    return **static_cast<SceneBuilder**>(lua_getextraspace(L));
+}
 
 void checkArgCount(lua_State* L, const char* call, int min, int max, const char* signature) {
     const int n = lua_gettop(L);
     if (n < min || n > max)
         throw InputError(std::string(call) + " expects " +
-                         (min == max ? std::to_string(min) : std::to_string(min) + " to " +
-                                                                 std::to_string(max)) +
+                         (min == max ? std::to_string(min)
+                                     : std::to_string(min) + " to " + std::to_string(max)) +
                          " argument" + (max == 1 ? "" : "s") + " " + signature + ", got " +
                          std::to_string(n));
 }
 
-double checkNumber(lua_State* L, int arg, const char* call, const char* argName) {
-    if (lua_type(L, arg) != LUA_TNUMBER)
-        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
-                         ") must be a number, got " + typeName(L, arg));
-    const double v = lua_tonumber(L, arg);
+namespace {
+/// "gr.nh_sphere: argument 3 (radius)": how a message names positional argument `arg`.
+std::string argumentLabel(const char* call, int arg, const char* argName) {
+    return std::string(call) + ": argument " + std::to_string(arg) + " (" + argName + ")";
+}
+}  // namespace
+
+double checkNumberAt(lua_State* L, int index, const std::string& label) {
+    if (lua_type(L, index) != LUA_TNUMBER)
+        throw InputError(label + " must be a number, got " + typeName(L, index));
+    const double v = lua_tonumber(L, index);
     if (!std::isfinite(v))
-        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
-                         ") must be finite, got " + (std::isnan(v) ? "nan" : "inf"));
+        throw InputError(label + " must be finite, got " + (std::isnan(v) ? "nan" : "inf"));
     return v;
+}
+
+double checkNumber(lua_State* L, int arg, const char* call, const char* argName) {
+    return checkNumberAt(L, arg, argumentLabel(call, arg, argName));
 }
 
 std::string checkString(lua_State* L, int arg, const char* call, const char* argName) {
     if (lua_type(L, arg) != LUA_TSTRING)
-        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
-                         ") must be a string, got " + typeName(L, arg));
+        throw InputError(argumentLabel(call, arg, argName) + " must be a string, got " +
+                         typeName(L, arg));
     size_t len = 0;
     const char* s = lua_tolstring(L, arg, &len);
     return std::string(s, len);
 }
 
-std::vector<double> checkTuple(lua_State* L, int arg, int n, const char* call,
-                               const char* argName) {
-    const std::string what = std::string(call) + ": argument " + std::to_string(arg) + " (" +
-                             argName + ") must be a table of " + std::to_string(n) + " numbers";
-    if (lua_type(L, arg) != LUA_TTABLE) throw InputError(what + ", got " + typeName(L, arg));
-    const lua_Unsigned len = lua_rawlen(L, arg);
+std::vector<double> checkTupleAt(lua_State* L, int index, int n, const std::string& label) {
+    const std::string what = label + " must be a table of " + std::to_string(n) + " numbers";
+    if (lua_type(L, index) != LUA_TTABLE) throw InputError(what + ", got " + typeName(L, index));
+    const lua_Unsigned len = lua_rawlen(L, index);
     if (len != static_cast<lua_Unsigned>(n))
         throw InputError(what + ", got a table of " + std::to_string(len));
     std::vector<double> values(n);
     for (int i = 1; i <= n; ++i) {
-        const int type = lua_rawgeti(L, arg, i);
+        const int type = lua_rawgeti(L, index, i);
         const double v = lua_tonumber(L, -1);
         lua_pop(L, 1);
         if (type != LUA_TNUMBER)
@@ -108,13 +117,17 @@ std::vector<double> checkTuple(lua_State* L, int arg, int n, const char* call,
     return values;
 }
 
+std::vector<double> checkTuple(lua_State* L, int arg, int n, const char* call,
+                               const char* argName) {
+    return checkTupleAt(L, arg, n, argumentLabel(call, arg, argName));
+}
+
 Vec3 checkVec3(lua_State* L, int arg, const char* call, const char* argName) {
     const std::vector<double> v = checkTuple(L, arg, 3, call, argName);
     return {v[0], v[1], v[2]};
 }
 
-std::shared_ptr<SceneNode> checkNode(lua_State* L, int arg, const char* call,
-                                     const char* argName) {
+std::shared_ptr<SceneNode> checkNode(lua_State* L, int arg, const char* call, const char* argName) {
     void* p = luaL_testudata(L, arg, kNodeType);
     if (!p)
         throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
@@ -171,14 +184,21 @@ void LuaBindings::materialField(const char* name, int chapter) {
     sceneBuilder(L_).materialFields[name] = chapter;
 }
 
-void LuaBindings::option(const char* name, int chapter) { sceneBuilder(L_).optionNames[name] = chapter; }
+void LuaBindings::option(const char* name, int chapter, double min, double max, bool integer) {
+    sceneBuilder(L_).optionNames[name] = {chapter, min, max, integer};
+}
+
+int missingChapter(lua_State* L, const std::string& name, std::string& title) {
+    const int chapter = chapterProviding(name, title);
+    return chapter > sceneBuilder(L).lastChapter ? chapter : 0;
+}
 
 void setMaterialParam(lua_State* L, Material& m, const std::string& name, double value,
                       const char* call) {
     const SceneBuilder& builder = sceneBuilder(L);
     if (!builder.materialFields.count(name)) {
         std::string title;
-        const int chapter = chapterProviding(name, title);
+        const int chapter = missingChapter(L, name, title);
         if (chapter)
             throw InputError(std::string(call) + ": material field '" + name + "' needs chapter " +
                              std::to_string(chapter) + " (" + title +
@@ -285,7 +305,7 @@ int unknownMethod(lua_State* L) {
     const char* name = lua_tostring(L, 2);
     if (!name) return luaL_error(L, "methods are named by strings");
     std::string title;
-    const int chapter = chapterProviding(name, title);
+    const int chapter = missingChapter(L, name, title);
     if (chapter)
         return luaL_error(L,
                           "method '%s' needs chapter %d (%s), which this build does not have; "
@@ -299,14 +319,13 @@ int unknownGrCall(lua_State* L) {
     const char* name = lua_tostring(L, 2);
     if (!name) return luaL_error(L, "gr: index must be a string");
     std::string title;
-    const int chapter = chapterProviding(name, title);
+    const int chapter = missingChapter(L, name, title);
     if (chapter)
         return luaL_error(L,
                           "gr.%s needs chapter %d (%s), which this build does not have; build "
                           "it with make chapter%d or later",
                           name, chapter, title.c_str(), chapter);
-    return luaL_error(L, "gr.%s is not a raybook call (see --help and the reference page)",
-                      name);
+    return luaL_error(L, "gr.%s is not a raybook call (see --help and the reference page)", name);
 }
 
 /// Open only base, math, string and table (all libraries with --unsafe-lua).
@@ -381,6 +400,8 @@ std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& f
     builder.options = options;
     builder.unitSphere = std::make_shared<Sphere>();
     builder.unitCube = std::make_shared<Box>();
+    for (const Feature& f : features.built())
+        builder.lastChapter = std::max(builder.lastChapter, f.chapter);
 
     // A fresh state with a capped allocator; the builder is reachable from the state itself.
     std::unique_ptr<lua_State, LuaStateCloser> state(lua_newstate(limitedAlloc, &builder));

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <lua.hpp>
-
 #include <map>
 #include <memory>
 #include <string>
@@ -17,8 +16,8 @@ namespace rb {
 
 /// How to run a scene script.
 struct SceneLoadOptions {
-    bool legacy = false;       ///< Course framework before 2015: transforms post-multiply.
-    bool unsafeLua = false;    ///< Allow os and io.
+    bool legacy = false;     ///< Course framework before 2015: transforms post-multiply.
+    bool unsafeLua = false;  ///< Allow os and io.
     long long instructionLimit = 1'000'000'000;  ///< Lua VM instructions before we give up.
     size_t memoryLimit = size_t(2) << 30;        ///< Bytes the script may allocate.
 };
@@ -41,8 +40,8 @@ struct SceneLoadTimes {
 /// What the Lua calls build while the script runs. One per load; reached through the
 /// lua_State, so no global state is needed.
 struct SceneBuilder {
-    std::string scenePath;       ///< As given on the command line.
-    std::string sceneDir;        ///< Folder of the scene ("" for the working directory).
+    std::string scenePath;  ///< As given on the command line.
+    std::string sceneDir;   ///< Folder of the scene ("" for the working directory).
     SceneLoadOptions options;
     std::vector<LoadedRender> renders;
     std::map<std::string, std::shared_ptr<const Shape>> meshCache;  ///< One load per file.
@@ -51,17 +50,24 @@ struct SceneBuilder {
     std::shared_ptr<const Material> defaultMaterial =
         std::make_shared<const Material>(Material{Colour(0.5), Colour(0.0), 1.0, {}});
     std::map<std::string, int> materialFields;  ///< Named material parameters, by chapter.
-    std::map<std::string, int> optionNames;     ///< gr.option names, by chapter.
-    std::map<std::string, double> sceneOptions;  ///< gr.option values set so far.
+    /// What gr.option accepts for one name.
+    struct OptionSpec {
+        int chapter;
+        double min, max;
+        bool integer;
+    };
+    std::map<std::string, OptionSpec> optionNames;  ///< gr.option names and their ranges.
+    std::map<std::string, double> sceneOptions;     ///< gr.option values set so far.
     SceneLoadTimes times;
     bool warnedLegacy = false;  ///< The pre-2015 hint was printed.
+    int lastChapter = 0;        ///< The newest chapter built into this binary.
     long long instructions = 0;
     size_t bytesInUse = 0;
 };
 
 /// Registers Lua calls. Chapter modules receive one in Feature::bindLua.
 class LuaBindings {
-public:
+  public:
     explicit LuaBindings(lua_State* L) : L_(L) {}
     /// Define or replace `gr.name`.
     void function(const char* name, lua_CFunction f);
@@ -71,11 +77,13 @@ public:
     void materialMethod(const char* name, lua_CFunction f);
     /// Accept a numeric material parameter in gr.material{...} (chapter: who reads it).
     void materialField(const char* name, int chapter);
-    /// Accept a scene option gr.option(name, value) (chapter: who reads it).
-    void option(const char* name, int chapter);
+    /// Accept a scene option gr.option(name, value) (chapter: who reads it), with the values
+    /// it allows: [min, max], and whole numbers only when `integer`.
+    void option(const char* name, int chapter, double min = -1e308, double max = 1e308,
+                bool integer = false);
     lua_State* state() const { return L_; }
 
-private:
+  private:
     lua_State* L_;
 };
 
@@ -111,6 +119,11 @@ int luaGuard(lua_State* L) {
 SceneBuilder& sceneBuilder(lua_State* L);
 /// Throw unless the call received between min and max arguments.
 void checkArgCount(lua_State* L, const char* call, int min, int max, const char* signature);
+/// A finite number at stack index `index`; `label` names it in messages
+/// ("gr.material: field 'shininess'").
+double checkNumberAt(lua_State* L, int index, const std::string& label);
+/// A table of exactly n finite numbers at stack index `index`, named by `label`.
+std::vector<double> checkTupleAt(lua_State* L, int index, int n, const std::string& label);
 /// A finite number argument.
 double checkNumber(lua_State* L, int arg, const char* call, const char* argName);
 /// A string argument.
@@ -138,6 +151,10 @@ void pushLight(lua_State* L, const PointLight& light);
 PointLight checkLight(lua_State* L, int arg, const char* call, const char* argName);
 /// The table of lights at argument arg: at least one, each made by gr.light.
 std::vector<PointLight> checkLights(lua_State* L, int arg);
+
+/// The chapter that provides `name` when this build lacks it, else 0 (the name is then
+/// simply unknown: a typo, or not a name of that kind).
+int missingChapter(lua_State* L, const std::string& name, std::string& title);
 
 /// Set a named material parameter after checking that a built chapter reads it; `value`
 /// must be finite. Throws InputError naming the chapter that would read an unknown name.

@@ -12,9 +12,9 @@ namespace rb {
 /// A surface material. The core reads kd, ks and shininess (A4's gr.material); later chapters
 /// read their own named parameters ("reflect", "ior", ...) from `params`.
 struct Material {
-    Colour kd{0.0};          ///< Diffuse reflectance.
-    Colour ks{0.0};          ///< Specular reflectance.
-    double shininess = 1.0;  ///< Phong exponent.
+    Colour kd{0.0};                        ///< Diffuse reflectance.
+    Colour ks{0.0};                        ///< Specular reflectance.
+    double shininess = 1.0;                ///< Phong exponent.
     std::map<std::string, double> params;  ///< Chapter parameters by name, e.g. "reflect".
 
     /// A chapter parameter, or fallback when the scene did not set it.

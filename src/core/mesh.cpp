@@ -39,8 +39,7 @@ Mesh::Mesh(const ObjData& data, const std::string& name) {
 }
 
 size_t Mesh::triangleBytes() const {
-    return triangles_.size() *
-           (sizeof(triangles_[0]) + sizeof(source_[0]) + sizeof(corners_[0]));
+    return triangles_.size() * (sizeof(triangles_[0]) + sizeof(source_[0]) + sizeof(corners_[0]));
 }
 
 // [mesh-intersect]

@@ -15,7 +15,7 @@ namespace rb {
 /// A triangle mesh in object space. Triangles are stored in BVH order with their vertices
 /// copied out, so a leaf test reads one contiguous block.
 class Mesh final : public Shape {
-public:
+  public:
     /// Build from OBJ data. Degenerate (zero-area) triangles are dropped; throws InputError
     /// (naming `name`) when no triangle is left.
     Mesh(const ObjData& data, const std::string& name);
@@ -38,10 +38,10 @@ public:
     /// The OBJ corners of slot i (for normals and texture coordinates in later chapters).
     const std::array<ObjCorner, 3>& corners(size_t i) const { return corners_[i]; }
 
-private:
-    std::vector<std::array<Vec3, 3>> triangles_;      ///< Vertices, BVH order.
-    std::vector<std::uint32_t> source_;                ///< OBJ triangle index per slot.
-    std::vector<std::array<ObjCorner, 3>> corners_;   ///< OBJ corners per slot.
+  private:
+    std::vector<std::array<Vec3, 3>> triangles_;     ///< Vertices, BVH order.
+    std::vector<std::uint32_t> source_;              ///< OBJ triangle index per slot.
+    std::vector<std::array<ObjCorner, 3>> corners_;  ///< OBJ corners per slot.
     BVH bvh_;
     AABB bounds_;
     size_t dropped_ = 0;

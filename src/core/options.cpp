@@ -16,8 +16,8 @@ long long parseInteger(const std::string& option, const std::string& text, long 
     long long v = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
-        throw InputError(option + ": expected a whole number from " + std::to_string(lo) +
-                         " to " + std::to_string(hi) + ", got '" + text + "'");
+        throw InputError(option + ": expected a whole number from " + std::to_string(lo) + " to " +
+                         std::to_string(hi) + ", got '" + text + "'");
     return v;
 }
 
@@ -49,11 +49,16 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             if (i + 1 >= argc) throw InputError(name + ": missing value");
             return argv[++i];
         };
-        if (name == "--help" || name == "-h") cl.help = true;
-        else if (name == "--version") cl.version = true;
-        else if (name == "--list-features") cl.listFeatures = true;
-        else if (name == "--features") cl.features = next();
-        else if (name == "--threads") cl.threads = static_cast<int>(parseInteger(name, next(), 1, 1024));
+        if (name == "--help" || name == "-h")
+            cl.help = true;
+        else if (name == "--version")
+            cl.version = true;
+        else if (name == "--list-features")
+            cl.listFeatures = true;
+        else if (name == "--features")
+            cl.features = next();
+        else if (name == "--threads")
+            cl.threads = static_cast<int>(parseInteger(name, next(), 1, 1024));
         else if (name == "--seed")
             cl.seed = static_cast<std::uint64_t>(parseInteger(name, next(), 0, 1LL << 62));
         else if (name == "--spp")
@@ -66,20 +71,28 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             if (x == std::string::npos) throw InputError("--size: expected WxH, got '" + v + "'");
             cl.width = static_cast<int>(parseInteger("--size", v.substr(0, x), 1, 1 << 16));
             cl.height = static_cast<int>(parseInteger("--size", v.substr(x + 1), 1, 1 << 16));
-        } else if (name == "--output" || name == "-o") cl.output = next();
-        else if (name == "--stats") cl.stats = true;
-        else if (name == "--quiet" || name == "-q") cl.quiet = true;
-        else if (name == "--legacy") cl.legacy = true;
-        else if (name == "--unsafe-lua") cl.unsafeLua = true;
-        else if (findFeatureOption(built, name)) cl.featureOptions[name.substr(2)] = next();
+        } else if (name == "--output" || name == "-o")
+            cl.output = next();
+        else if (name == "--stats")
+            cl.stats = true;
+        else if (name == "--quiet" || name == "-q")
+            cl.quiet = true;
+        else if (name == "--legacy")
+            cl.legacy = true;
+        else if (name == "--unsafe-lua")
+            cl.unsafeLua = true;
+        else if (findFeatureOption(built, name))
+            cl.featureOptions[name.substr(2)] = next();
         else if (!arg.empty() && arg[0] == '-')
             throw InputError("unknown option '" + arg + "' (see ./rt --help)");
-        else if (cl.scene.empty()) cl.scene = arg;
+        else if (cl.scene.empty())
+            cl.scene = arg;
         else if (!haveThreadsPositional) {
             // The seeds' form: ./rt scene.lua N, with N threads.
             cl.threads = static_cast<int>(parseInteger("thread count", arg, 1, 1024));
             haveThreadsPositional = true;
-        } else throw InputError("unexpected argument '" + arg + "'");
+        } else
+            throw InputError("unexpected argument '" + arg + "'");
     }
     if (cl.scene.empty() && !cl.help && !cl.version && !cl.listFeatures)
         throw InputError("no scene file given (usage: ./rt [options] scene.lua)");

@@ -29,8 +29,7 @@ Colour lightFromPoint(const ShadeContext& ctx, const Hit& hit, const Material& m
     if (glm::dot(n, l) <= 0.0) return Colour(0.0);  // light behind the shading normal
     // Cast a shadow ray from the (offset) hit point to the light: t in (0, 1).
     const Vec3 origin = offsetRayOrigin(hit.p, ng, l);
-    if (ctx.integrator.occluded(Ray{origin, from - origin}, 1.0, ctx.counters))
-        return Colour(0.0);
+    if (ctx.integrator.occluded(Ray{origin, from - origin}, 1.0, ctx.counters)) return Colour(0.0);
     return emission * light.intensityAt(r) * phongBrdfTerm(m, n, l, v);
 }
 // [shadow-ray]
@@ -52,8 +51,8 @@ Colour shadePhong(const ShadeContext& ctx, const Ray& ray, const Hit& hit) {
         }
         // A light with an area (chapter 6): average n × n stratified points on it, each
         // shaded in full, so the highlight takes the light's shape.
-        const int perAxis = ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples
-                                                        : light.shape->samplesPerAxis();
+        const int perAxis =
+            ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples : light.shape->samplesPerAxis();
         Colour sum(0.0);
         for (int k = 0; k < perAxis * perAxis; ++k) {
             double emission = 1.0;

@@ -14,7 +14,9 @@ Colour phongBrdfTerm(const Material& m, const Vec3& n, const Vec3& l, const Vec3
 
 /// The normal turned to face the viewer: raybook never culls back faces, so a surface seen
 /// from behind is shaded as its front.
-inline Vec3 faceForward(const Vec3& n, const Vec3& v) { return glm::dot(n, v) < 0.0 ? -n : n; }
+inline Vec3 faceForward(const Vec3& n, const Vec3& v) {
+    return glm::dot(n, v) < 0.0 ? -n : n;
+}
 
 /// A4 shading: kd·ambient + Σ visible · I(r) · phongBrdfTerm. A SurfaceShader.
 Colour shadePhong(const ShadeContext& ctx, const Ray& ray, const Hit& hit);

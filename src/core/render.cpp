@@ -13,7 +13,7 @@ namespace {
 
 /// Draws "[#####     ] 52% ETA 3.1 s" on stderr. Only thread 0 draws, so no lock is needed.
 class ProgressBar {
-public:
+  public:
     ProgressBar(bool enabled, int total) : enabled_(enabled), total_(total) {}
     /// Record one finished row, and redraw now and then.
     void rowDone() {
@@ -30,7 +30,7 @@ public:
         if (enabled_) std::fprintf(stderr, "\r%60s\r", "");
     }
 
-private:
+  private:
     double seconds() const {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     }
@@ -51,8 +51,8 @@ private:
 }  // namespace
 
 // [render-loop]
-Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera,
-             int width, int height, const RenderSettings& settings, RayCounters& counters) {
+Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera, int width,
+             int height, const RenderSettings& settings, RayCounters& counters) {
     Image image(width, height);
     const Integrator integrator(scene, pipeline);
     const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();

@@ -12,14 +12,14 @@ namespace rb {
 
 /// How to sample the image.
 struct RenderSettings {
-    int threads = 0;            ///< 0: all cores.
-    std::uint64_t seed = 0;     ///< Selects the random stream (--seed).
-    int samplesPerPixel = 1;    ///< 1: one ray through each pixel centre, as A4 does.
-    bool progress = false;      ///< Draw a progress bar with an ETA on stderr.
+    int threads = 0;          ///< 0: all cores.
+    std::uint64_t seed = 0;   ///< Selects the random stream (--seed).
+    int samplesPerPixel = 1;  ///< 1: one ray through each pixel centre, as A4 does.
+    bool progress = false;    ///< Draw a progress bar with an ETA on stderr.
 };
 
 /// Render an image of the scene through the camera. Counts rays into `counters`.
-Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera,
-             int width, int height, const RenderSettings& settings, RayCounters& counters);
+Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera, int width,
+             int height, const RenderSettings& settings, RayCounters& counters);
 
 }  // namespace rb

@@ -21,7 +21,7 @@ inline std::uint64_t mix64(std::uint64_t z) {
 /// Because a value depends only on (seed, pixel, sample, dimension) and never on the thread or
 /// on what other pixels drew, an image is bit-identical for any thread count.
 class Sampler {
-public:
+  public:
     /// The stream for sample `sampleIndex` of pixel `pixelIndex`, under the global `seed`.
     Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint64_t sampleIndex)
         : key_(mix64(mix64(mix64(seed + 0x9e3779b97f4a7c15ULL) ^ pixelIndex) ^ sampleIndex)) {}
@@ -39,7 +39,7 @@ public:
     /// How many dimensions this stream has drawn.
     std::uint64_t dimension() const { return dimension_; }
 
-private:
+  private:
     std::uint64_t key_;
     std::uint64_t dimension_ = 0;
 };

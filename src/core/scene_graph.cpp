@@ -68,8 +68,7 @@ std::vector<Instance> flatten(const SceneNode& root, const Material* fallback) {
     // refuse before allocating anything.
     std::unordered_map<const SceneNode*, double> memo;
     const double paths = countPaths(root, memo);
-    if (paths > static_cast<double>(kMaxInstances))
-    {
+    if (paths > static_cast<double>(kMaxInstances)) {
         char count[32];
         std::snprintf(count, sizeof count, "%.3g", paths);
         throw InputError(std::string("the scene graph has ") + count +

@@ -17,12 +17,12 @@ namespace rb {
 /// geometry node also holds a shape and a material. One node may have several parents.
 struct SceneNode {
     std::string name;
-    Mat4 transform{1.0};                         ///< Local-to-parent transform.
+    Mat4 transform{1.0};  ///< Local-to-parent transform.
     /// Placement of the shape alone, applied before `transform` and not to the children:
     /// gr.nh_sphere's centre and radius, gr.nh_box's corner and size.
     Mat4 shapeTransform{1.0};
-    std::shared_ptr<const Shape> shape;          ///< Null for group nodes.
-    std::shared_ptr<const Material> material;    ///< Null until set_material.
+    std::shared_ptr<const Shape> shape;        ///< Null for group nodes.
+    std::shared_ptr<const Material> material;  ///< Null until set_material.
     std::vector<std::shared_ptr<SceneNode>> children;
 };
 
@@ -43,12 +43,12 @@ std::vector<Instance> flatten(const SceneNode& root, const Material* fallback);
 /// One gr.render call: everything needed to render one image.
 struct RenderJob {
     std::shared_ptr<SceneNode> root;
-    std::string output;        ///< PNG path, relative to the working directory.
+    std::string output;  ///< PNG path, relative to the working directory.
     int width = 0, height = 0;
     CameraSpec camera;
     Colour ambient{0.0};
     std::vector<PointLight> lights;
-    std::string where;         ///< "scene.lua:42", for messages about this job.
+    std::string where;                      ///< "scene.lua:42", for messages about this job.
     std::map<std::string, double> options;  ///< Dialect extras (seed 001's aa, ss, dist, ...).
 };
 

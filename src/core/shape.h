@@ -9,7 +9,7 @@ namespace rb {
 
 /// Geometry in object space. Chapters add kinds (mesh, CSG, cylinder, cone) by deriving.
 class Shape {
-public:
+  public:
     virtual ~Shape() = default;
     /// The closest hit with t in (0, tMax), written to hit; false when there is none.
     virtual bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const = 0;

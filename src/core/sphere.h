@@ -12,7 +12,7 @@ bool solveQuadraticHalfB(double a, double h, double c, const Vec3& f, double& t0
 
 /// The unit sphere at the origin. Other spheres are this one under a transform.
 class Sphere final : public Shape {
-public:
+  public:
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     AABB bounds() const override { return AABB{Vec3(-1.0), Vec3(1.0)}; }
 };

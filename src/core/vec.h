@@ -25,9 +25,13 @@ inline bool isFinite(const Vec3& v) {
 }
 
 /// Transform a point (w = 1) by an affine matrix.
-inline Vec3 transformPoint(const Mat4& m, const Vec3& p) { return Vec3(m * glm::dvec4(p, 1.0)); }
+inline Vec3 transformPoint(const Mat4& m, const Vec3& p) {
+    return Vec3(m * glm::dvec4(p, 1.0));
+}
 
 /// Transform a direction (w = 0) by an affine matrix.
-inline Vec3 transformVector(const Mat4& m, const Vec3& v) { return Vec3(m * glm::dvec4(v, 0.0)); }
+inline Vec3 transformVector(const Mat4& m, const Vec3& v) {
+    return Vec3(m * glm::dvec4(v, 0.0));
+}
 
 }  // namespace rb

@@ -1,5 +1,6 @@
 #include "core/world.h"
 
+#include "core/error.h"
 #include "core/render_context.h"
 
 namespace rb {
@@ -21,8 +22,15 @@ std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& feature
     if (maxDepth >= 0) scene.maxDepth = maxDepth;
     // Each enabled chapter plugs itself in, in chapter order; then the aggregate is built.
     const RenderContext context{scene.instances, job, featureOptions};
-    for (const Feature& f : features.on())
-        if (f.install) f.install(world->pipeline, scene, context);
+    for (const Feature& f : features.on()) {
+        if (!f.install) continue;
+        try {
+            f.install(world->pipeline, scene, context);
+        } catch (const InputError& e) {
+            // Point at the gr.render call whose settings were refused.
+            throw InputError(job.where.empty() ? e.what() : job.where + ": " + e.what());
+        }
+    }
     scene.aggregate = world->pipeline.buildAggregate(scene.instances);
     return world;
 }
