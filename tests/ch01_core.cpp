@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <vector>
@@ -33,6 +32,7 @@
 
 using Catch::Contains;
 using rb::Vec3;
+using rbtest::bitIdentical;
 
 namespace {
 
@@ -78,27 +78,24 @@ struct BoxCase {
 /// A small scene built in code for the render-loop tests: spheres and boxes under Phong with two
 /// lights, through the chapter 1–3 pipeline (headlight replaced by Phong, BVH aggregate).
 struct CodeScene {
-    rb::Sphere sphere;
-    rb::Box box;
-    rb::Material red{rb::Colour(0.8, 0.2, 0.1), rb::Colour(0.5), 20.0, {}};
-    rb::Material grey{rb::Colour(0.6), rb::Colour(0.0), 1.0, {}};
-    rb::Pipeline pipeline;
-    rb::Scene scene;
+    rbtest::TestWorld world;
     CodeScene() {
-        scene.instances.push_back(rbtest::makeInstance(
-            box, glm::scale(glm::translate(rb::Mat4(1.0), Vec3(-5, -1.5, -5)), Vec3(10, 0.5, 10)),
-            &grey, "floor"));
+        const rb::Material* red =
+            world.material(rb::Material{rb::Colour(0.8, 0.2, 0.1), rb::Colour(0.5), 20.0, {}});
+        const rb::Material* grey =
+            world.material(rb::Material{rb::Colour(0.6), rb::Colour(0.0), 1.0, {}});
+        world.addBox(
+            glm::scale(glm::translate(rb::Mat4(1.0), Vec3(-5, -1.5, -5)), Vec3(10, 0.5, 10)), grey,
+            "floor");
         for (int i = 0; i < 3; ++i)
-            scene.instances.push_back(rbtest::makeInstance(
-                sphere,
+            world.addSphere(
                 glm::scale(glm::translate(rb::Mat4(1.0), Vec3(-1.5 + 1.5 * i, -0.4, -i)),
                            Vec3(0.6)),
-                &red, "ball"));
-        scene.lights.push_back(pointLight(Vec3(-4, 5, 4), rb::Colour(0.9), Vec3(1, 0, 0)));
-        scene.lights.push_back(pointLight(Vec3(3, 2, 5), rb::Colour(0.4), Vec3(1, 0.1, 0)));
-        scene.ambient = rb::Colour(0.1);
-        rbtest::installCore(pipeline, scene, rb::RenderJob{});
-        scene.aggregate = pipeline.buildAggregate(scene.instances);
+                red, "ball");
+        world.scene.lights.push_back(pointLight(Vec3(-4, 5, 4), rb::Colour(0.9), Vec3(1, 0, 0)));
+        world.scene.lights.push_back(pointLight(Vec3(3, 2, 5), rb::Colour(0.4), Vec3(1, 0.1, 0)));
+        world.scene.ambient = rb::Colour(0.1);
+        world.build(rbtest::coreFeatures());
     }
     rb::Image render(int threads, int spp, std::uint64_t seed) const {
         const rb::PinholeCamera camera(
@@ -108,15 +105,9 @@ struct CodeScene {
         settings.samplesPerPixel = spp;
         settings.seed = seed;
         rb::RayCounters counters;
-        return rb::render(scene, pipeline, camera, 64, 48, settings, counters);
+        return rb::render(world.scene, world.pipeline, camera, 64, 48, settings, counters);
     }
 };
-
-/// True when two images hold the same bits (NaN included).
-bool bitIdentical(const rb::Image& a, const rb::Image& b) {
-    return a.data().size() == b.data().size() &&
-           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
-}
 
 }  // namespace
 

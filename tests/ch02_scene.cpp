@@ -26,6 +26,7 @@
 using Catch::Contains;
 using rb::Colour;
 using rb::Vec3;
+using rbtest::loadError;
 using rbtest::loadSceneText;
 using rbtest::renderLine;
 
@@ -56,16 +57,6 @@ const rb::Instance& instanceNamed(const std::vector<rb::Instance>& instances,
         if (i.name == name) return i;
     FAIL("no instance named " << name);
     throw std::logic_error("unreachable");
-}
-
-/// The message of the InputError that loading `lua` throws, or "" if it loads.
-std::string loadError(const std::string& lua, const std::string& fileName) {
-    try {
-        loadSceneText(lua, fileName);
-    } catch (const rb::InputError& e) {
-        return e.what();
-    }
-    return "";
 }
 
 /// Fill a large block of stack with 0xFF bytes, so that anything that still points into a
@@ -500,11 +491,7 @@ SCENARIO("a pixel's colour is kd·ambient + Σ visible·I(r)·(kd·max(0,n·l) +
             "gr.render(root, 'pixel.png', 1, 1, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 30,"
             " {0.1, 0.2, 0.3}, {l1, l2, l3})\n");
         WHEN("the pixel is rendered") {
-            rb::RenderSettings settings;
-            settings.threads = 1;
-            rb::RayCounters counters;
-            const rb::Image image = rb::render(world->scene, world->pipeline, world->camera(), 1, 1,
-                                               settings, counters);
+            const rb::Image image = rbtest::renderWorld(*world, {.threads = 1});
             THEN("it is (0.2276, 0.3216, 0.4356)") {
                 // Source: hand derivation. The pixel centre's ray runs down −z and hits the
                 // pole p = (0,0,1): n = v = (0,0,1).

@@ -18,85 +18,45 @@
 /// on its edge, and reflections off mirrors from 1e-3 to 1e4 units in size. Nothing here is
 /// random except the test directions, which come from std::mt19937_64 with fixed seeds (the
 /// tests also pass with 20 other seeds for every stream; checked locally).
-#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <deque>
-#include <filesystem>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
-#include <map>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
-#include "core/box.h"
 #include "core/camera.h"
-#include "core/chapter_features.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/lua_scene.h"
 #include "core/mesh.h"
 #include "core/render.h"
-#include "core/render_context.h"
-#include "core/sphere.h"
+#include "core/world.h"
 #include "reflection/reflection.h"
+#include "test_helpers.h"
 
 using Catch::Contains;
 using rb::Colour;
 using rb::Mat4;
 using rb::Vec3;
+using rbtest::bitIdentical;
+using rbtest::boxFromTo;
+using rbtest::chapters;
+using rbtest::finiteNonNegative;
+using rbtest::loadSceneText;
+using rbtest::materialOf;
+using rbtest::oneMaterialScene;
+using rbtest::renderSmall;
 
 namespace {
 
 // ---- Helpers --------------------------------------------------------------------------------
 
-/// Uniform numbers from a fixed seed, taken from the raw std::mt19937_64 stream (which the
-/// standard fixes), so every platform draws the same test directions.
-class TestRng {
+/// The shared test world, with materials made from kd, a reflectivity, ks and shininess.
+class TestWorld : public rbtest::TestWorld {
   public:
-    explicit TestRng(std::uint64_t seed) : engine_(seed) {}
-    /// A uniform double in [0, 1).
-    double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-    /// A uniform double in [lo, hi).
-    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-    /// A uniform unit vector. Source: Archimedes' hat-box theorem (z and φ uniform).
-    Vec3 unitVector() {
-        const double z = 1.0 - 2.0 * uniform();
-        const double phi = 2.0 * M_PI * uniform();
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        return {r * std::cos(phi), r * std::sin(phi), z};
-    }
-
-  private:
-    std::mt19937_64 engine_;
-};
-
-/// Chapters 1–4 as a chapter-4 binary holds them, switched on by `spec`.
-rb::FeatureSet chapter4Features(const std::string& spec = "all") {
-    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature(),
-                           rb::reflectionFeature()},
-                          spec);
-}
-
-/// Chapters 1–3 only: a build without this chapter.
-rb::FeatureSet chapter3Features() {
-    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature()},
-                          "all");
-}
-
-/// A world assembled in code and put together the way `rt` does it (src/core/main.cpp):
-/// every enabled feature installs itself into the pipeline, then the aggregate is built.
-/// Not movable: the aggregate refers to scene.instances.
-class TestWorld {
-  public:
-    TestWorld() = default;
-    TestWorld(const TestWorld&) = delete;
-    TestWorld& operator=(const TestWorld&) = delete;
-
+    using rbtest::TestWorld::material;
     /// A material that lives as long as the world: kd, no specular, and reflectivity `reflect`
     /// (not set at all when negative, so the material is plain A4 Phong).
     const rb::Material* material(const Colour& kd, double reflect = -1.0,
@@ -106,67 +66,13 @@ class TestWorld {
         m.ks = ks;
         m.shininess = shininess;
         if (reflect >= 0.0) m.params["reflect"] = reflect;
-        materials_.push_back(m);
-        return &materials_.back();
+        return material(m);
     }
-    /// Place the unit cube [0,1]³ by objectToWorld.
-    void addBox(const Mat4& objectToWorld, const rb::Material* m) { add(box_, objectToWorld, m); }
-    /// Place the unit sphere by objectToWorld.
-    void addSphere(const Mat4& objectToWorld, const rb::Material* m) {
-        add(sphere_, objectToWorld, m);
-    }
-    /// Place any shape (which must outlive the world).
-    void add(const rb::Shape& shape, const Mat4& objectToWorld, const rb::Material* m) {
-        rb::Instance instance;
-        instance.shape = &shape;
-        instance.material = m;
-        instance.name = "test";
-        instance.setTransform(objectToWorld);
-        scene.instances.push_back(instance);
-    }
-    /// Install the features that `features` switches on and build the aggregate.
-    void build(const rb::FeatureSet& features, int maxDepth) {
-        scene.maxDepth = maxDepth;
-        const rb::RenderJob job;
-        const std::map<std::string, std::string> commandLine;
-        const rb::RenderContext context{scene.instances, job, commandLine};
-        for (const rb::Feature& f : features.on())
-            if (f.install) f.install(pipeline, scene, context);
-        scene.aggregate = pipeline.buildAggregate(scene.instances);
-    }
-    /// The radiance the integrator returns along one ray; counts rays into `counters`.
-    Colour trace(const rb::Ray& ray, rb::RayCounters& counters) const {
-        const rb::Integrator integrator(scene, pipeline);
-        rb::Sampler sampler(0, 0, 0);
-        return integrator.trace(ray, sampler, counters, 0);
-    }
-    Colour trace(const rb::Ray& ray) const {
-        rb::RayCounters counters;
-        return trace(ray, counters);
-    }
-
-    rb::Scene scene;
-    rb::Pipeline pipeline;
-
-  private:
-    std::deque<rb::Material> materials_;  // a deque never moves its elements
-    rb::Box box_;
-    rb::Sphere sphere_;
 };
 
 /// Reflection rays counted.
 std::uint64_t reflections(const rb::RayCounters& c) {
     return c.count[static_cast<int>(rb::RayKind::Reflection)];
-}
-
-/// True when every channel is a finite, non-negative number.
-bool finiteNonNegative(const Colour& c) {
-    return rb::isFinite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0;
-}
-
-/// The unit cube stretched into the box [lo, hi].
-Mat4 boxFromTo(const Vec3& lo, const Vec3& hi) {
-    return glm::scale(glm::translate(Mat4(1.0), lo), hi - lo);
 }
 
 /// The ambient light of the corridor tests; kd = 1 turns it into the target's colour.
@@ -192,103 +98,14 @@ double wallHeightAfter(int k) {
     return (2.0 * k + 0.5) * kSlope;
 }
 
-/// Write a scene script into a fresh temporary folder and run it through rb::loadScene.
-std::vector<rb::LoadedRender> loadLua(const std::string& lua, const rb::FeatureSet& features) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("raybook-ch04-" + std::to_string(std::random_device{}()));
-    std::filesystem::create_directories(dir);
-    const auto file = dir / "scene.lua";
-    {
-        std::ofstream out(file);
-        out << lua;
-    }
-    struct Cleanup {
-        std::filesystem::path p;
-        ~Cleanup() {
-            std::error_code ec;
-            std::filesystem::remove_all(p, ec);
-        }
-    } cleanup{dir};
-    return rb::loadScene(file.string(), features, rb::SceneLoadOptions{});
-}
-
-/// The gr.render line most Lua tests end with.
-const std::string kRenderLine =
-    "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50, {0.1, 0.1, 0.1},"
-    " {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0})})\n";
-
-/// A scene whose only object carries the material made by the Lua expression `material`.
-std::string oneMaterialScene(const std::string& material) {
-    return "local m = " + material +
-           "\n"
-           "root = gr.node('root')\n"
-           "local s = gr.sphere('s')\n"
-           "s:set_material(m)\n"
-           "root:add_child(s)\n" +
-           kRenderLine;
-}
-
-/// The material of the first instance of the first render of a scene.
-rb::Material materialOf(const std::string& material, const rb::FeatureSet& features) {
-    const auto renders = loadLua(oneMaterialScene(material), features);
-    REQUIRE(renders.size() == 1);
-    REQUIRE(renders[0].instances.size() == 1);
-    REQUIRE(renders[0].instances[0].material != nullptr);
-    return *renders[0].instances[0].material;
-}
-
-/// A world built from one loaded render request the way `rt` builds it: the scene's lights,
-/// ambient light and max_depth option; `maxDepth` ≥ 0 overrides like --max-depth.
-struct LoadedWorld {
-    rb::LoadedRender loaded;  ///< Keeps the scene graph (shapes and materials) alive.
-    rb::Scene scene;
-    rb::Pipeline pipeline;
-    LoadedWorld() = default;
-    LoadedWorld(const LoadedWorld&) = delete;
-    LoadedWorld& operator=(const LoadedWorld&) = delete;
-};
-
-std::unique_ptr<LoadedWorld> buildLoaded(rb::LoadedRender render, const rb::FeatureSet& features,
-                                         int maxDepth = -1) {
-    auto w = std::make_unique<LoadedWorld>();
-    w->loaded = std::move(render);
-    rb::Scene& scene = w->scene;
-    scene.instances = std::move(w->loaded.instances);
-    scene.lights = w->loaded.job.lights;
-    scene.ambient = w->loaded.job.ambient;
-    const auto& options = w->loaded.job.options;
-    if (options.count("max_depth")) scene.maxDepth = static_cast<int>(options.at("max_depth"));
-    if (maxDepth >= 0) scene.maxDepth = maxDepth;
-    const std::map<std::string, std::string> commandLine;
-    const rb::RenderContext context{scene.instances, w->loaded.job, commandLine};
-    for (const rb::Feature& f : features.on())
-        if (f.install) f.install(w->pipeline, scene, context);
-    scene.aggregate = w->pipeline.buildAggregate(scene.instances);
-    return w;
-}
-
-/// Load a scene file of the repository with the given features.
-std::unique_ptr<LoadedWorld> loadRepoScene(const std::string& relative,
-                                           const rb::FeatureSet& features, int maxDepth = -1) {
+/// Load a scene file of the repository and build its first render's world as `rt` does;
+/// `maxDepth` ≥ 0 overrides like --max-depth.
+std::unique_ptr<rb::World> loadRepoScene(const std::string& relative,
+                                         const rb::FeatureSet& features, int maxDepth = -1) {
     auto renders = rb::loadScene(std::string(RB_SOURCE_DIR) + "/" + relative, features,
                                  rb::SceneLoadOptions{});
     REQUIRE(!renders.empty());
-    return buildLoaded(std::move(renders[0]), features, maxDepth);
-}
-
-/// Render a loaded world small, on one thread, with one ray per pixel centre.
-rb::Image renderSmall(const LoadedWorld& w, int width = 64, int height = 48) {
-    const rb::PinholeCamera camera(w.loaded.job.camera, width, height);
-    rb::RenderSettings settings;
-    settings.threads = 1;
-    rb::RayCounters counters;
-    return rb::render(w.scene, w.pipeline, camera, width, height, settings, counters);
-}
-
-/// True when two images hold exactly the same bits.
-bool bitIdentical(const rb::Image& a, const rb::Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
+    return rb::buildWorld(std::move(renders[0]), features, {}, maxDepth);
 }
 
 }  // namespace
@@ -298,7 +115,7 @@ bool bitIdentical(const rb::Image& a, const rb::Image& b) {
 // [ch04-reflection-law]
 SCENARIO("a mirror sends light out at the angle it came in, in the plane of d and n", "[ch04]") {
     GIVEN("10,000 random unit directions d and random unit normals n") {
-        TestRng rng(4);
+        rbtest::Rng rng(4);
         WHEN("each d is reflected about its n: r = d − 2(d·n)n") {
             THEN(
                 "the angle to the normal is mirrored, the tangential part kept, the length "
@@ -326,7 +143,7 @@ SCENARIO("a mirror sends light out at the angle it came in, in the plane of d an
 
 SCENARIO("reflecting twice about the same normal gives the ray back", "[ch04]") {
     GIVEN("random directions of any length and unit normals") {
-        TestRng rng(40);
+        rbtest::Rng rng(40);
         THEN("reflect(reflect(d, n), n) = d, and |reflect(d, n)| = |d|") {
             for (int i = 0; i < 1000; ++i) {
                 const Vec3 d = rng.uniform(0.01, 100.0) * rng.unitVector();
@@ -364,7 +181,7 @@ SCENARIO("light that bounced k times between mirrors of reflectivity r carries r
                 world.addBox(boxFromTo({-0.9, y, -2.0}, {0.9, y + 1.0, 2.0}),
                              world.material(Colour(1.0)));
                 world.scene.ambient = kAmbient;
-                world.build(chapter4Features(), /*maxDepth=*/20);
+                world.build(chapters(4), /*maxDepth=*/20);
                 WHEN("a ray leaves the middle of the corridor along (1, s, 0)") {
                     rb::RayCounters counters;
                     const Colour L =
@@ -396,7 +213,7 @@ SCENARIO("the depth limit cuts off images that need more bounces than it allows"
             world.addBox(boxFromTo({-0.9, y, -2.0}, {0.9, y + 1.0, 2.0}),
                          world.material(Colour(1.0)));
             world.scene.ambient = kAmbient;
-            world.build(chapter4Features(), maxDepth);
+            world.build(chapters(4), maxDepth);
             WHEN("the depth limit is " + std::to_string(maxDepth)) {
                 rb::RayCounters counters;
                 const Colour L = world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, kSlope, 0.0)}, counters);
@@ -426,7 +243,7 @@ SCENARIO("a ray trapped between two facing mirrors sums a geometric series cut a
                 TestWorld world;
                 addCorridor(world, r, kd);
                 world.scene.ambient = kAmbient;
-                world.build(chapter4Features(), maxDepth);
+                world.build(chapters(4), maxDepth);
                 WHEN("a ray runs along the mirrors' normal, bouncing back and forth forever") {
                     rb::RayCounters counters;
                     const Colour L = world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, 0.0, 0.0)}, counters);
@@ -455,11 +272,10 @@ SCENARIO("with a depth limit of 0 the chapter scene renders exactly as chapter 2
     GIVEN("scenes/chapter04-reflection.lua, which has mirrors") {
         WHEN("it is rendered with maxDepth 0, and with --features=all,-reflection") {
             const auto depthZero =
-                loadRepoScene("scenes/chapter04-reflection.lua", chapter4Features("all"), 0);
-            const auto featureOff = loadRepoScene("scenes/chapter04-reflection.lua",
-                                                  chapter4Features("all,-reflection"));
-            const auto full =
-                loadRepoScene("scenes/chapter04-reflection.lua", chapter4Features("all"));
+                loadRepoScene("scenes/chapter04-reflection.lua", chapters(4, "all"), 0);
+            const auto featureOff =
+                loadRepoScene("scenes/chapter04-reflection.lua", chapters(4, "all,-reflection"));
+            const auto full = loadRepoScene("scenes/chapter04-reflection.lua", chapters(4, "all"));
             REQUIRE(depthZero->pipeline.terms.size() == 1);
             REQUIRE(featureOff->pipeline.terms.empty());
             const rb::Image a = renderSmall(*depthZero);
@@ -476,25 +292,23 @@ SCENARIO("with a depth limit of 0 the chapter scene renders exactly as chapter 2
 
 SCENARIO("a scene without mirrors pays nothing for chapter 4", "[ch04]") {
     GIVEN("chapter 2's scene, which uses no `reflect`") {
-        const auto withChapter4 = loadRepoScene("scenes/chapter02-phong.lua", chapter4Features());
-        const auto chapter3Only = loadRepoScene("scenes/chapter02-phong.lua", chapter3Features());
+        const auto withChapter4 = loadRepoScene("scenes/chapter02-phong.lua", chapters(4));
+        const auto chapter3Only = loadRepoScene("scenes/chapter02-phong.lua", chapters(3));
         THEN("install() adds no shading term, and the image equals chapter 3's bit for bit") {
             REQUIRE(withChapter4->pipeline.terms.empty());
             REQUIRE(bitIdentical(renderSmall(*withChapter4), renderSmall(*chapter3Only)));
         }
     }
     GIVEN("a material that sets reflect = 0 explicitly") {
-        auto renders = loadLua(oneMaterialScene("gr.material{kd = {1, 0, 0}, reflect = 0}"),
-                               chapter4Features());
-        const auto world = buildLoaded(std::move(renders[0]), chapter4Features());
+        const auto world = rbtest::worldFromLua(
+            oneMaterialScene("gr.material{kd = {1, 0, 0}, reflect = 0}"), chapters(4));
         THEN("no term is installed either") {
             REQUIRE(world->pipeline.terms.empty());
         }
     }
     GIVEN("a material with reflect = 0.5") {
-        auto renders = loadLua(oneMaterialScene("gr.material{kd = {1, 0, 0}, reflect = 0.5}"),
-                               chapter4Features());
-        const auto world = buildLoaded(std::move(renders[0]), chapter4Features());
+        const auto world = rbtest::worldFromLua(
+            oneMaterialScene("gr.material{kd = {1, 0, 0}, reflect = 0.5}"), chapters(4));
         THEN("exactly one term, the reflection term, is installed") {
             REQUIRE(world->pipeline.terms.size() == 1);
             REQUIRE(dynamic_cast<const rb::ReflectionTerm*>(world->pipeline.terms[0].get()));
@@ -550,8 +364,8 @@ SCENARIO("reflectivity 0 shades exactly as plain Phong", "[ch04]") {
         const rb::Material* zeroOff = nullptr;
         addMirrorRoom(on, 0.7, &zeroOn, nullptr);
         addMirrorRoom(off, 0.7, &zeroOff, nullptr);
-        on.build(chapter4Features("all"), 5);
-        off.build(chapter4Features("all,-reflection"), 5);
+        on.build(chapters(4, "all"), 5);
+        off.build(chapters(4, "all,-reflection"), 5);
         REQUIRE(on.pipeline.terms.size() == 1);
         WHEN("the ball is seen with the chapter on and with it off") {
             const auto a = pixelsOf(on, zeroOn);
@@ -576,9 +390,9 @@ SCENARIO("with --features=all,-reflection a mirror shades as plain Phong", "[ch0
         addMirrorRoom(off, 0.7, nullptr, &mirrorOff);
         addMirrorRoom(phong, -1.0, nullptr, &mirrorPhong);
         addMirrorRoom(on, 0.7, nullptr, &mirrorOn);
-        off.build(chapter4Features("all,-reflection"), 5);
-        phong.build(chapter4Features("all"), 5);
-        on.build(chapter4Features("all"), 5);
+        off.build(chapters(4, "all,-reflection"), 5);
+        phong.build(chapters(4, "all"), 5);
+        on.build(chapters(4, "all"), 5);
         WHEN("the mirror is rendered with the chapter switched off") {
             const auto a = pixelsOf(off, mirrorOff);
             const auto b = pixelsOf(phong, mirrorPhong);
@@ -608,7 +422,7 @@ SCENARIO("a mirror seen from behind reflects like its front (no back-face cullin
         TestWorld world;
         world.add(mesh, Mat4(1.0), world.material(Colour(0.0), 0.5));
         world.scene.background = Colour(0.25, 0.5, 1.0);
-        world.build(chapter4Features(), 5);
+        world.build(chapters(4), 5);
         for (const double side : {1.0, -1.0}) {
             WHEN("a ray meets it at 45° from the " + std::string(side > 0 ? "front" : "back")) {
                 rb::RayCounters counters;
@@ -632,7 +446,7 @@ SCENARIO("1000 bounces between perfect mirrors end, with a finite colour", "[ch0
         TestWorld world;
         addCorridor(world, 1.0, kd);
         world.scene.ambient = kAmbient;
-        world.build(chapter4Features(), 1000);
+        world.build(chapters(4), 1000);
         WHEN("a ray runs along their normal") {
             rb::RayCounters counters;
             const Colour L = world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, 0.0, 0.0)}, counters);
@@ -649,7 +463,7 @@ SCENARIO("1000 bounces between perfect mirrors end, with a finite colour", "[ch0
         TestWorld world;
         addCorridor(world, 1.0);
         world.scene.ambient = kAmbient;
-        world.build(chapter4Features(), 1000);
+        world.build(chapters(4), 1000);
         THEN("the ray zig-zags 1000 times and returns black, not NaN") {
             rb::RayCounters counters;
             // Slope 0.01: 1000 legs climb about 20 units, still inside the 100-unit mirrors.
@@ -667,7 +481,7 @@ SCENARIO("a ray that meets a mirror exactly on its edge reflects once, cleanly",
         TestWorld world;
         world.addBox(Mat4(1.0), world.material(Colour(0.0), 0.5));
         world.scene.background = Colour(0.25, 0.5, 1.0);
-        world.build(chapter4Features(), 5);
+        world.build(chapters(4), 5);
         // Points on edges and corners, and directions towards them: head-on to the edge,
         // oblique, and grazing (parallel to one of the two faces).
         struct Case {
@@ -720,10 +534,10 @@ SCENARIO("a reflected ray never hits the mirror it leaves, at scene scales 1e-3 
                 else
                     world.addBox(m, mirror);
                 world.scene.background = Colour(0.25, 0.5, 1.0);
-                world.build(chapter4Features(), 5);
+                world.build(chapters(4), 5);
                 const rb::AABB bounds = world.scene.instances[0].worldBounds;
                 WHEN("2000 random rays from all around hit it") {
-                    TestRng rng(static_cast<std::uint64_t>(1000 * std::log10(scale) + 7));
+                    rbtest::Rng rng(static_cast<std::uint64_t>(1000 * std::log10(scale) + 7));
                     const Vec3 centre = 0.5 * (bounds.lo + bounds.hi);
                     const double radius = glm::length(bounds.hi - bounds.lo);
                     int hits = 0, clean = 0;
@@ -758,7 +572,7 @@ SCENARIO("a reflected ray never hits the mirror it leaves, at scene scales 1e-3 
 
 // [ch04-lua]
 SCENARIO("the seeds' material calls and raybook's named field all set `reflect`", "[ch04]") {
-    const rb::FeatureSet features = chapter4Features();
+    const rb::FeatureSet features = chapters(4);
     GIVEN("raybook's gr.material{kd = ..., ks = ..., shininess = 25, reflect = 0.4}") {
         const rb::Material m = materialOf(
             "gr.material{kd = {0.1, 0.2, 0.3}, ks = {0.5, 0.5, 0.5}, shininess = 25, "
@@ -808,9 +622,9 @@ SCENARIO("the seeds' material calls and raybook's named field all set `reflect`"
 // [ch04-lua]
 
 SCENARIO("a chapter-4 build names the chapter a later material field needs", "[ch04]") {
-    const rb::FeatureSet features = chapter4Features();
+    const rb::FeatureSet features = chapters(4);
     const auto fails = [&](const std::string& material) {
-        return [=] { loadLua(oneMaterialScene(material), features); };
+        return [=] { loadSceneText(oneMaterialScene(material), features); };
     };
     GIVEN("refraction fields (chapter 5)") {
         THEN("each form of asking for them fails with 'needs chapter 5'") {
@@ -846,8 +660,8 @@ SCENARIO("a chapter-4 build names the chapter a later material field needs", "[c
     GIVEN("a ball light (chapter 6)") {
         THEN("gr.ball_light fails with 'needs chapter 6'") {
             REQUIRE_THROWS_WITH(
-                loadLua("local l = gr.ball_light({0, 5, 0}, {1, 1, 1}, {1, 0, 0}, 0.5)\n",
-                        features),
+                loadSceneText("local l = gr.ball_light({0, 5, 0}, {1, 1, 1}, {1, 0, 0}, 0.5)\n",
+                              features),
                 Contains("needs chapter 6"));
         }
     }
@@ -875,7 +689,7 @@ SCENARIO("seed 000's \"refract\", 0 means no refraction, as \"reflect\", 0 means
         WHEN("a chapter-4 build loads it") {
             THEN("it loads, with reflect = 0.5 and no ior or transparency") {
                 rb::Material m;
-                REQUIRE_NOTHROW(m = materialOf(material, chapter4Features()));
+                REQUIRE_NOTHROW(m = materialOf(material, chapters(4)));
                 REQUIRE(m.param("reflect") == 0.5);
                 REQUIRE(m.params.count("ior") == 0);
                 REQUIRE(m.params.count("transparency") == 0);
@@ -885,29 +699,32 @@ SCENARIO("seed 000's \"refract\", 0 means no refraction, as \"reflect\", 0 means
 }
 
 SCENARIO("a chapter-3 build names chapter 4 when a scene asks for a mirror", "[ch04]") {
-    const rb::FeatureSet features = chapter3Features();
+    const rb::FeatureSet features = chapters(3);
     THEN("reflect, seed 000's keyword form, gr.phongMat and gr.fancy_material name chapter 4") {
         REQUIRE_THROWS_WITH(
-            loadLua(oneMaterialScene("gr.material{kd = {1, 1, 1}, reflect = 0.5}"), features),
+            loadSceneText(oneMaterialScene("gr.material{kd = {1, 1, 1}, reflect = 0.5}"), features),
             Contains("needs chapter 4"));
         REQUIRE_THROWS_WITH(
-            loadLua(oneMaterialScene("gr.material({1, 1, 1}, {0, 0, 0}, 1, \"reflect\", 0.5)"),
-                    features),
+            loadSceneText(
+                oneMaterialScene("gr.material({1, 1, 1}, {0, 0, 0}, 1, \"reflect\", 0.5)"),
+                features),
             Contains("chapter 4"));
         REQUIRE_THROWS_WITH(
-            loadLua(oneMaterialScene("gr.phongMat({1, 1, 1}, {0, 0, 0}, 1, 0.5, 0)"), features),
+            loadSceneText(oneMaterialScene("gr.phongMat({1, 1, 1}, {0, 0, 0}, 1, 0.5, 0)"),
+                          features),
             Contains("needs chapter 4"));
         REQUIRE_THROWS_WITH(
-            loadLua(oneMaterialScene("gr.fancy_material({1, 1, 1}, {0, 0, 0}, 1, 0.5, 1, 0, 0)"),
-                    features),
+            loadSceneText(
+                oneMaterialScene("gr.fancy_material({1, 1, 1}, {0, 0, 0}, 1, 0.5, 1, 0, 0)"),
+                features),
             Contains("needs chapter 4"));
     }
 }
 
 SCENARIO("seed 000's keyword form rejects what it does not know", "[ch04]") {
-    const rb::FeatureSet features = chapter4Features();
+    const rb::FeatureSet features = chapters(4);
     const auto load = [&](const std::string& material) {
-        loadLua(oneMaterialScene(material), features);
+        loadSceneText(oneMaterialScene(material), features);
     };
     GIVEN("an unknown keyword") {
         THEN("the error names it and lists the known ones") {

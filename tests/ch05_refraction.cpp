@@ -24,35 +24,38 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <deque>
-#include <filesystem>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <map>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
-#include "core/box.h"
-#include "core/camera.h"
-#include "core/chapter_features.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/lua_scene.h"
 #include "core/phong.h"
 #include "core/render.h"
-#include "core/render_context.h"
-#include "core/sphere.h"
+#include "core/world.h"
 #include "reflection/reflection.h"
 #include "refraction/fresnel.h"
 #include "refraction/refraction.h"
+#include "test_helpers.h"
 
 using Catch::Contains;
 using rb::Colour;
 using rb::Mat4;
 using rb::Vec3;
+using rbtest::allFiniteNonNegative;
+using rbtest::bitIdentical;
+using rbtest::boxFromTo;
+using rbtest::chapters;
+using rbtest::finiteNonNegative;
+using rbtest::loadSceneText;
+using rbtest::materialOf;
+using rbtest::oneMaterialScene;
+using rbtest::renderSmall;
+using rbtest::TestWorld;
 
 namespace {
 
@@ -66,41 +69,6 @@ double degrees(double radians) {
     return radians * 180.0 / kPi;
 }
 
-/// Uniform numbers from a fixed seed, taken from the raw std::mt19937_64 stream (which the
-/// standard fixes), so every platform draws the same test directions.
-class TestRng {
-  public:
-    explicit TestRng(std::uint64_t seed) : engine_(seed) {}
-    /// A uniform double in [0, 1).
-    double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-    /// A uniform double in [lo, hi).
-    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-    /// A uniform unit vector. Source: Archimedes' hat-box theorem (z and φ uniform).
-    Vec3 unitVector() {
-        const double z = 1.0 - 2.0 * uniform();
-        const double phi = 2.0 * kPi * uniform();
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        return {r * std::cos(phi), r * std::sin(phi), z};
-    }
-
-  private:
-    std::mt19937_64 engine_;
-};
-
-/// Chapters 1–5 as a chapter-5 binary holds them, switched on by `spec`.
-rb::FeatureSet chapter5Features(const std::string& spec = "all") {
-    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature(),
-                           rb::reflectionFeature(), rb::refractionFeature()},
-                          spec);
-}
-
-/// Chapters 1–4: a build without this chapter.
-rb::FeatureSet chapter4Features() {
-    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature(),
-                           rb::reflectionFeature()},
-                          "all");
-}
-
 /// A material: Phong kd (no specular), and the chapter parameters given.
 rb::Material makeMaterial(const Colour& kd, const std::map<std::string, double>& params = {}) {
     rb::Material m;
@@ -109,83 +77,14 @@ rb::Material makeMaterial(const Colour& kd, const std::map<std::string, double>&
     return m;
 }
 
-/// A world assembled in code and put together the way `rt` does it (src/core/main.cpp):
-/// every enabled feature installs itself into the pipeline, then the aggregate is built.
-/// Not movable: the aggregate refers to scene.instances.
-class TestWorld {
-  public:
-    TestWorld() = default;
-    TestWorld(const TestWorld&) = delete;
-    TestWorld& operator=(const TestWorld&) = delete;
-
-    /// A material that lives as long as the world.
-    const rb::Material* material(const rb::Material& m) {
-        materials_.push_back(m);
-        return &materials_.back();
-    }
-    /// Place the unit cube [0,1]³ by objectToWorld.
-    void addBox(const Mat4& objectToWorld, const rb::Material* m, const std::string& name = "box") {
-        add(box_, objectToWorld, m, name);
-    }
-    /// Place the unit sphere by objectToWorld.
-    void addSphere(const Mat4& objectToWorld, const rb::Material* m,
-                   const std::string& name = "sphere") {
-        add(sphere_, objectToWorld, m, name);
-    }
-    /// Place a shape.
-    void add(const rb::Shape& shape, const Mat4& objectToWorld, const rb::Material* m,
-             const std::string& name) {
-        rb::Instance instance;
-        instance.shape = &shape;
-        instance.material = m;
-        instance.name = name;
-        instance.setTransform(objectToWorld);
-        scene.instances.push_back(instance);
-    }
-    /// Install the features that `features` switches on (with command-line feature options)
-    /// and build the aggregate.
-    void build(const rb::FeatureSet& features, int maxDepth,
-               const std::map<std::string, std::string>& commandLine = {}) {
-        scene.maxDepth = maxDepth;
-        const rb::RenderJob job;
-        const rb::RenderContext context{scene.instances, job, commandLine};
-        for (const rb::Feature& f : features.on())
-            if (f.install) f.install(pipeline, scene, context);
-        scene.aggregate = pipeline.buildAggregate(scene.instances);
-    }
-    /// The radiance the integrator returns along one ray; counts rays into `counters`.
-    Colour trace(const rb::Ray& ray, rb::RayCounters& counters) const {
-        const rb::Integrator integrator(scene, pipeline);
-        rb::Sampler sampler(0, 0, 0);
-        return integrator.trace(ray, sampler, counters, 0);
-    }
-    Colour trace(const rb::Ray& ray) const {
-        rb::RayCounters counters;
-        return trace(ray, counters);
-    }
-
-    rb::Scene scene;
-    rb::Pipeline pipeline;
-
-  private:
-    std::deque<rb::Material> materials_;  // a deque never moves its elements
-    rb::Box box_;
-    rb::Sphere sphere_;
-};
-
-/// The unit cube stretched into the box [lo, hi].
-Mat4 boxFromTo(const Vec3& lo, const Vec3& hi) {
-    return glm::scale(glm::translate(Mat4(1.0), lo), hi - lo);
+/// A clear dielectric: index of refraction `ior`, fully transparent, kd black unless given.
+rb::Material dielectric(double ior, const Colour& kd = Colour(0.0)) {
+    return makeMaterial(kd, {{"ior", ior}, {"transparency", 1.0}});
 }
 
 /// The unit sphere moved to `centre` with radius r.
 Mat4 sphereAt(const Vec3& centre, double r) {
     return glm::scale(glm::translate(Mat4(1.0), centre), Vec3(r));
-}
-
-/// True when every channel is a finite, non-negative number.
-bool finiteNonNegative(const Colour& c) {
-    return rb::isFinite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0;
 }
 
 /// One surface a followed path met: where, and what the module decided there.
@@ -228,101 +127,6 @@ FollowedPath followRefractedPath(const rb::Scene& scene, rb::Ray ray, int maxEve
 double distanceToLine(const Vec3& p, const Vec3& o, const Vec3& d) {
     const Vec3 v = p - o;
     return glm::length(v - glm::dot(v, d) * d);
-}
-
-/// Write a scene script into a fresh temporary folder and run it through rb::loadScene.
-std::vector<rb::LoadedRender> loadLua(const std::string& lua, const rb::FeatureSet& features) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("raybook-ch05-" + std::to_string(std::random_device{}()));
-    std::filesystem::create_directories(dir);
-    const auto file = dir / "scene.lua";
-    {
-        std::ofstream out(file);
-        out << lua;
-    }
-    struct Cleanup {
-        std::filesystem::path p;
-        ~Cleanup() {
-            std::error_code ec;
-            std::filesystem::remove_all(p, ec);
-        }
-    } cleanup{dir};
-    return rb::loadScene(file.string(), features, rb::SceneLoadOptions{});
-}
-
-/// The gr.render line most Lua tests end with.
-const std::string kRenderLine =
-    "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50, {0.1, 0.1, 0.1},"
-    " {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0})})\n";
-
-/// A scene whose only object carries the material made by the Lua expression `material`.
-std::string oneMaterialScene(const std::string& material) {
-    return "local m = " + material +
-           "\n"
-           "root = gr.node('root')\n"
-           "local s = gr.sphere('s')\n"
-           "s:set_material(m)\n"
-           "root:add_child(s)\n" +
-           kRenderLine;
-}
-
-/// The material of the first instance of the first render of a scene.
-rb::Material materialOf(const std::string& material, const rb::FeatureSet& features) {
-    const auto renders = loadLua(oneMaterialScene(material), features);
-    REQUIRE(renders.size() == 1);
-    REQUIRE(renders[0].instances.size() == 1);
-    REQUIRE(renders[0].instances[0].material != nullptr);
-    return *renders[0].instances[0].material;
-}
-
-/// A world built from one loaded render request the way `rt` builds it.
-struct LoadedWorld {
-    rb::LoadedRender loaded;  ///< Keeps the scene graph (shapes and materials) alive.
-    rb::Scene scene;
-    rb::Pipeline pipeline;
-    LoadedWorld() = default;
-    LoadedWorld(const LoadedWorld&) = delete;
-    LoadedWorld& operator=(const LoadedWorld&) = delete;
-};
-
-std::unique_ptr<LoadedWorld> buildLoaded(rb::LoadedRender render, const rb::FeatureSet& features,
-                                         const std::map<std::string, std::string>& cli = {}) {
-    auto w = std::make_unique<LoadedWorld>();
-    w->loaded = std::move(render);
-    rb::Scene& scene = w->scene;
-    scene.instances = std::move(w->loaded.instances);
-    scene.lights = w->loaded.job.lights;
-    scene.ambient = w->loaded.job.ambient;
-    const auto& options = w->loaded.job.options;
-    if (options.count("max_depth")) scene.maxDepth = static_cast<int>(options.at("max_depth"));
-    const rb::RenderContext context{scene.instances, w->loaded.job, cli};
-    for (const rb::Feature& f : features.on())
-        if (f.install) f.install(w->pipeline, scene, context);
-    scene.aggregate = w->pipeline.buildAggregate(scene.instances);
-    return w;
-}
-
-/// Render a loaded world small, on one thread.
-rb::Image renderSmall(const LoadedWorld& w, int width, int height, rb::RayCounters& counters,
-                      int spp = 1) {
-    const rb::PinholeCamera camera(w.loaded.job.camera, width, height);
-    rb::RenderSettings settings;
-    settings.threads = 1;
-    settings.samplesPerPixel = spp;
-    return rb::render(w.scene, w.pipeline, camera, width, height, settings, counters);
-}
-
-/// True when two images hold exactly the same bits.
-bool bitIdentical(const rb::Image& a, const rb::Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
-}
-
-/// True when every channel of every pixel is finite and non-negative.
-bool allFiniteNonNegative(const rb::Image& image) {
-    for (float c : image.data())
-        if (!std::isfinite(c) || c < 0.0f) return false;
-    return true;
 }
 
 /// Refraction rays counted.
@@ -520,7 +324,7 @@ SCENARIO("reflected and transmitted power add up to one", "[ch05]") {
 
 SCENARIO("the refracted ray obeys Snell's law in the plane of incidence", "[ch05]") {
     GIVEN("10,000 random unit directions d and unit normals n facing them, and random indices") {
-        TestRng rng(5);
+        rbtest::Rng rng(5);
         THEN(
             "t is unit length, lies in the plane of d and n, on the far side, with "
             "η_i sin θi = η_t sin θt") {
@@ -557,11 +361,9 @@ SCENARIO("a ray through a glass slab leaves parallel to how it entered, shifted 
         TestWorld world;
         const double thickness = 0.4;
         const Mat4 tilt = glm::rotate(Mat4(1.0), 0.6, glm::normalize(Vec3(1.0, 2.0, -0.5)));
-        world.addBox(
-            tilt * boxFromTo({-50.0, -50.0, -thickness}, {50.0, 50.0, 0.0}),
-            world.material(makeMaterial(Colour(0.0), {{"ior", 1.5}, {"transparency", 1.0}})),
-            "slab");
-        world.build(chapter5Features(), 5);
+        world.addBox(tilt * boxFromTo({-50.0, -50.0, -thickness}, {50.0, 50.0, 0.0}),
+                     world.material(dielectric(1.5)), "slab");
+        world.build(chapters(5), 5);
         const Vec3 normal = glm::normalize(rb::transformVector(tilt, Vec3(0.0, 0.0, 1.0)));
         const Vec3 across = glm::normalize(rb::transformVector(tilt, Vec3(1.0, 0.0, 0.0)));
         for (const double thetaDeg : {0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0}) {
@@ -608,15 +410,9 @@ SCENARIO(
         "(n = 1.33)") {
         TestWorld world;
         const Vec3 c(0.25, -0.5, 0.75);
-        world.addSphere(
-            sphereAt(c, 2.0),
-            world.material(makeMaterial(Colour(0.0), {{"ior", 1.5}, {"transparency", 1.0}})),
-            "glass");
-        world.addSphere(
-            sphereAt(c, 1.0),
-            world.material(makeMaterial(Colour(0.0), {{"ior", 1.33}, {"transparency", 1.0}})),
-            "water");
-        world.build(chapter5Features(), 10);
+        world.addSphere(sphereAt(c, 2.0), world.material(dielectric(1.5)), "glass");
+        world.addSphere(sphereAt(c, 1.0), world.material(dielectric(1.33)), "water");
+        world.build(chapters(5), 10);
         WHEN("a ray along +x passes the centre at distance h = 1") {
             const double h = 1.0;
             const Vec3 o = c + Vec3(-10.0, h, 0.0);
@@ -683,15 +479,9 @@ SCENARIO(
     GIVEN("a glass ball of radius 2 with a concentric air bubble of radius 1") {
         TestWorld world;
         const Vec3 c(0.0);
-        world.addSphere(
-            sphereAt(c, 2.0),
-            world.material(makeMaterial(Colour(0.0), {{"ior", 1.5}, {"transparency", 1.0}})),
-            "glass");
-        world.addSphere(
-            sphereAt(c, 1.0),
-            world.material(makeMaterial(Colour(0.0), {{"ior", 1.0}, {"transparency", 1.0}})),
-            "bubble");
-        world.build(chapter5Features(), 10);
+        world.addSphere(sphereAt(c, 2.0), world.material(dielectric(1.5)), "glass");
+        world.addSphere(sphereAt(c, 1.0), world.material(dielectric(1.0)), "bubble");
+        world.build(chapters(5), 10);
         WHEN("a ray passes the centre at h = 0.5") {
             const double h = 0.5;
             const FollowedPath path =
@@ -718,11 +508,8 @@ SCENARIO(
 SCENARIO("a path that starts inside glass it never entered leaves it correctly", "[ch05]") {
     GIVEN("a glass ball (n = 1.5) and a ray from its centre, with an empty stack") {
         TestWorld world;
-        world.addSphere(
-            sphereAt(Vec3(0.0), 1.0),
-            world.material(makeMaterial(Colour(0.0), {{"ior", 1.5}, {"transparency", 1.0}})),
-            "glass");
-        world.build(chapter5Features(), 5);
+        world.addSphere(sphereAt(Vec3(0.0), 1.0), world.material(dielectric(1.5)), "glass");
+        world.build(chapters(5), 5);
         const FollowedPath path =
             followRefractedPath(world.scene, rb::Ray{Vec3(0.0), Vec3(0.0, 0.0, 1.0)});
         THEN("its surface is glass→air (the camera is under glass), and the stack stays empty") {
@@ -840,7 +627,7 @@ SCENARIO("glass shows (1 − τ)·local + τ·(F·L_reflected + (1 − F)·L_tra
     GIVEN("a block of glass with τ = 0.75, a plate inside it and a wall behind the camera") {
         TestWorld world;
         setup.populate(world, {});
-        world.build(chapter5Features(), 5);
+        world.build(chapters(5), 5);
         WHEN("a ray meets the glass head-on") {
             rb::RayCounters counters;
             const Colour L = world.trace(ColourRuleWorld::ray(0.0), counters);
@@ -861,7 +648,7 @@ SCENARIO("glass shows (1 − τ)·local + τ·(F·L_reflected + (1 − F)·L_tra
     GIVEN("the same glass with the material field schlick = true") {
         TestWorld world;
         setup.populate(world, {{"schlick", 1.0}});
-        world.build(chapter5Features(), 5);
+        world.build(chapters(5), 5);
         THEN("at 60° Schlick's F = 0.04 + 0.96·(1 − ½)^5 = 0.07 is used") {
             // Source: Schlick's formula at cos θ = ½.
             requireColour(world.trace(ColourRuleWorld::ray(radians(60.0))), setup.expected(0.07));
@@ -870,7 +657,7 @@ SCENARIO("glass shows (1 − τ)·local + τ·(F·L_reflected + (1 − F)·L_tra
     GIVEN("schlick = true, overridden by --fresnel=exact") {
         TestWorld world;
         setup.populate(world, {{"schlick", 1.0}});
-        world.build(chapter5Features(), 5, {{"fresnel", "exact"}});
+        world.build(chapters(5), 5, {{"fresnel", "exact"}});
         THEN("the exact F(60°) is used") {
             requireColour(world.trace(ColourRuleWorld::ray(radians(60.0))),
                           setup.expected(exactF60()));
@@ -879,7 +666,7 @@ SCENARIO("glass shows (1 − τ)·local + τ·(F·L_reflected + (1 − F)·L_tra
     GIVEN("an exact material, overridden by --fresnel=schlick") {
         TestWorld world;
         setup.populate(world, {});
-        world.build(chapter5Features(), 5, {{"fresnel", "schlick"}});
+        world.build(chapters(5), 5, {{"fresnel", "schlick"}});
         THEN("Schlick's 0.07 is used") {
             requireColour(world.trace(ColourRuleWorld::ray(radians(60.0))), setup.expected(0.07));
         }
@@ -894,7 +681,7 @@ SCENARIO("a material with both `reflect` and `transparency` gets both terms, mir
     GIVEN("the glass block with reflect = 0.5 as well") {
         TestWorld world;
         setup.populate(world, {{"reflect", 0.5}});
-        world.build(chapter5Features(), 5);
+        world.build(chapters(5), 5);
         THEN("the mirror term belongs to the opaque part: (1 − τ)(local + r·L_mirror) + τ(...)") {
             // Source: chapter 4's term gives local + r·L_mirror; this chapter's term then
             // scales everything so far by (1 − τ), as seed 001's rule does to the "material
@@ -912,7 +699,7 @@ SCENARIO("at the depth limit glass shows its local colour, unchanged", "[ch05]")
     GIVEN("the glass block and maxDepth = 0") {
         TestWorld world;
         setup.populate(world, {});
-        world.build(chapter5Features(), 0);
+        world.build(chapters(5), 0);
         rb::RayCounters counters;
         const Colour L = world.trace(ColourRuleWorld::ray(0.0), counters);
         THEN("the colour is kd · ambient and no refracted ray is traced") {
@@ -931,7 +718,7 @@ SCENARIO("deep in the tree the term follows one ray, chosen so the mean is uncha
     const ColourRuleWorld setup;
     TestWorld world;
     setup.populate(world, {});
-    world.build(chapter5Features(), 20);
+    world.build(chapters(5), 20);
     const rb::Integrator integrator(world.scene, world.pipeline);
     // At 80° F = 0.3877, so both branches are common. From height 1 the ray meets the glass at
     // x = tan 80° = 5.7, and both its branches stay on the plate and the wall.
@@ -981,10 +768,10 @@ SCENARIO("with --features=all,-refraction glass shades as plain Phong", "[ch05]"
     GIVEN("the chapter scene, loaded by a chapter-5 build") {
         const std::string path = std::string(RB_SOURCE_DIR) + "/scenes/chapter05-refraction.lua";
         WHEN("it renders with refraction off, and with the refraction fields deleted instead") {
-            auto off = buildLoaded(
-                std::move(rb::loadScene(path, chapter5Features("all,-refraction"), {})[0]),
-                chapter5Features("all,-refraction"));
-            auto renders = rb::loadScene(path, chapter5Features(), {});
+            auto off = rb::buildWorld(
+                std::move(rb::loadScene(path, chapters(5, "all,-refraction"), {})[0]),
+                chapters(5, "all,-refraction"));
+            auto renders = rb::loadScene(path, chapters(5), {});
             // Strip ior, transparency and schlick from every material of the second copy.
             for (rb::Instance& i : renders[0].instances)
                 if (i.material) {
@@ -992,7 +779,7 @@ SCENARIO("with --features=all,-refraction glass shades as plain Phong", "[ch05]"
                     for (const char* field : {"ior", "transparency", "schlick"})
                         m->params.erase(field);
                 }
-            auto stripped = buildLoaded(std::move(renders[0]), chapter5Features());
+            auto stripped = rb::buildWorld(std::move(renders[0]), chapters(5));
             rb::RayCounters c1, c2;
             const rb::Image a = renderSmall(*off, 64, 48, c1);
             const rb::Image b = renderSmall(*stripped, 64, 48, c2);
@@ -1005,8 +792,8 @@ SCENARIO("with --features=all,-refraction glass shades as plain Phong", "[ch05]"
                         REQUIRE(dynamic_cast<const rb::RefractionTerm*>(term.get()) == nullptr);
             }
             THEN("with refraction on the image differs (the test can fail)") {
-                auto on = buildLoaded(std::move(rb::loadScene(path, chapter5Features(), {})[0]),
-                                      chapter5Features());
+                auto on =
+                    rb::buildWorld(std::move(rb::loadScene(path, chapters(5), {})[0]), chapters(5));
                 rb::RayCounters c3;
                 REQUIRE_FALSE(bitIdentical(a, renderSmall(*on, 64, 48, c3)));
                 REQUIRE(refractions(c3) > 0);
@@ -1019,7 +806,7 @@ SCENARIO("with --features=all,-refraction glass shades as plain Phong", "[ch05]"
 
 // [ch05-lua]
 SCENARIO("raybook's named fields and seed 001's gr.transMat make glass", "[ch05]") {
-    const rb::FeatureSet features = chapter5Features();
+    const rb::FeatureSet features = chapters(5);
     GIVEN("gr.material{kd = ..., ior = 1.5, transparency = 0.9, schlick = true}") {
         const rb::Material m = materialOf(
             "gr.material{kd = {0.1, 0.1, 0.1}, ior = 1.5, transparency = 0.9, schlick = true}",
@@ -1058,9 +845,9 @@ SCENARIO("raybook's named fields and seed 001's gr.transMat make glass", "[ch05]
 // [ch05-lua]
 
 SCENARIO("gr.transMat rejects what seed 001 does not allow", "[ch05]") {
-    const rb::FeatureSet features = chapter5Features();
+    const rb::FeatureSet features = chapters(5);
     const auto load = [&](const std::string& material) {
-        loadLua(oneMaterialScene(material), features);
+        loadSceneText(oneMaterialScene(material), features);
     };
     THEN("bad values are named with the call and the argument") {
         REQUIRE_THROWS_WITH(load("gr.transMat({1, 1, 1}, 1.5, 1.5, 0)"),
@@ -1078,19 +865,20 @@ SCENARIO("gr.transMat rejects what seed 001 does not allow", "[ch05]") {
     }
     THEN("a chapter-4 build names chapter 5 for gr.transMat and the fields") {
         REQUIRE_THROWS_WITH(
-            loadLua(oneMaterialScene("gr.transMat({1, 1, 1}, 1.5, 0.9, 0)"), chapter4Features()),
+            loadSceneText(oneMaterialScene("gr.transMat({1, 1, 1}, 1.5, 0.9, 0)"), chapters(4)),
             Contains("needs chapter 5"));
-        REQUIRE_THROWS_WITH(loadLua(oneMaterialScene("gr.material{kd = {1, 1, 1}, schlick = true}"),
-                                    chapter4Features()),
-                            Contains("needs chapter 5"));
+        REQUIRE_THROWS_WITH(
+            loadSceneText(oneMaterialScene("gr.material{kd = {1, 1, 1}, schlick = true}"),
+                          chapters(4)),
+            Contains("needs chapter 5"));
     }
 }
 
 SCENARIO("bad transparency, ior or --fresnel stop the render with a clear message", "[ch05]") {
-    const rb::FeatureSet features = chapter5Features();
+    const rb::FeatureSet features = chapters(5);
     const auto install = [&](const std::string& material,
                              const std::map<std::string, std::string>& cli = {}) {
-        buildLoaded(std::move(loadLua(oneMaterialScene(material), features)[0]), features, cli);
+        rbtest::worldFromLua(oneMaterialScene(material), features, cli);
     };
     THEN("transparency outside [0, 1] and a non-positive ior are refused, naming the object") {
         REQUIRE_THROWS_WITH(install("gr.material{kd = {1, 1, 1}, transparency = 1.5}"),
@@ -1144,7 +932,7 @@ SCENARIO("with the same index on both sides nothing bends and nothing reflects",
          "[ch05][stability]") {
     GIVEN("η_i = η_t = 1 (and 1.5) at every angle, grazing included") {
         THEN("F = 0, T = 1, and the refracted direction is the incoming one") {
-            TestRng rng(11);
+            rbtest::Rng rng(11);
             for (const double eta : {1.0, 1.5}) {
                 for (int k = 0; k <= 90; ++k) {
                     const double c = std::cos(radians(k));
@@ -1175,10 +963,10 @@ SCENARIO("with the same index on both sides nothing bends and nothing reflects",
                        with.material(makeMaterial(Colour(1.0, 0.0, 0.0),
                                                   {{"ior", 1.0}, {"transparency", 1.0}})),
                        "air");
-        with.build(chapter5Features(), 5);
-        without.build(chapter5Features(), 5);
+        with.build(chapters(5), 5);
+        without.build(chapters(5), 5);
         THEN("the ball is invisible") {
-            TestRng rng(12);
+            rbtest::Rng rng(12);
             for (int i = 0; i < 100; ++i) {
                 const rb::Ray ray{Vec3(0, 0, 5),
                                   Vec3(rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2), -1)};
@@ -1216,8 +1004,7 @@ SCENARIO("very high and very low indices stay finite", "[ch05][stability]") {
                 "gr.option('max_depth', 12)\n"
                 "gr.render(root, 'out.png', 32, 24, {0, 1, 6}, {0, -0.2, -1}, {0, 1, 0}, 50,"
                 " {0.2, 0.2, 0.2}, {gr.light({3, 5, 5}, {1, 1, 1}, {1, 0, 0})})\n";
-            auto w =
-                buildLoaded(std::move(loadLua(lua, chapter5Features())[0]), chapter5Features());
+            auto w = rbtest::worldFromLua(lua, chapters(5));
             rb::RayCounters counters;
             const rb::Image image = renderSmall(*w, 32, 24, counters);
             THEN("every pixel is finite and non-negative") {
@@ -1243,11 +1030,11 @@ SCENARIO("a ray that starts exactly on a glass surface gives a finite colour",
         rb::PointLight light;
         light.position = Vec3(2, 5, 5);
         world.scene.lights.push_back(light);
-        world.build(chapter5Features(), 8);
+        world.build(chapters(5), 8);
         THEN(
             "inward, outward and tangent rays, with the stack empty or holding the ball, "
             "return finite non-negative colours") {
-            TestRng rng(13);
+            rbtest::Rng rng(13);
             const rb::Integrator integrator(world.scene, world.pipeline);
             for (int i = 0; i < 2000; ++i) {
                 const Vec3 n = rng.unitVector();
@@ -1271,13 +1058,10 @@ SCENARIO("a refracted ray never hits the surface it leaves, at scene scales 1e-3
         GIVEN("a glass ball of radius " + std::to_string(scale) + " far from the origin") {
             TestWorld world;
             const Vec3 c = scale * Vec3(3.0, -2.0, 5.0);
-            world.addSphere(
-                sphereAt(c, scale),
-                world.material(makeMaterial(Colour(0.0), {{"ior", 1.5}, {"transparency", 1.0}})),
-                "glass");
-            world.build(chapter5Features(), 5);
+            world.addSphere(sphereAt(c, scale), world.material(dielectric(1.5)), "glass");
+            world.build(chapters(5), 5);
             THEN("the refracted ray's next hit is the far side, a full chord away") {
-                TestRng rng(14);
+                rbtest::Rng rng(14);
                 for (int i = 0; i < 500; ++i) {
                     const Vec3 o = c + 4.0 * scale * rng.unitVector();
                     const Vec3 target = c + 0.9 * scale * rng.unitVector();
@@ -1338,7 +1122,7 @@ gr.option('max_depth', 1000)
 gr.render(root, 'out.png', 24, 18, {0, 1, 6}, {0, -0.2, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2},
           {gr.light({3, 5, 5}, {1, 1, 1}, {1, 0, 0})})
 )";
-        auto w = buildLoaded(std::move(loadLua(lua, chapter5Features())[0]), chapter5Features());
+        auto w = rbtest::worldFromLua(lua, chapters(5));
         REQUIRE(w->scene.maxDepth == 1000);
         WHEN("it is rendered at 24×18 with 2 samples per pixel") {
             rb::RayCounters counters;
@@ -1356,12 +1140,10 @@ gr.render(root, 'out.png', 24, 18, {0, 1, 6}, {0, -0.2, -1}, {0, 1, 0}, 50, {0.2
         "a ray trapped by total internal reflection: from near the centre of a glass cube along "
         "(1, 1, 1), with maxDepth = 1000") {
         TestWorld world;
-        world.addBox(
-            boxFromTo({-1, -1, -1}, {1, 1, 1}),
-            world.material(makeMaterial(Colour(0.1), {{"ior", 1.5}, {"transparency", 1.0}})),
-            "cube");
+        world.addBox(boxFromTo({-1, -1, -1}, {1, 1, 1}),
+                     world.material(dielectric(1.5, Colour(0.1))), "cube");
         world.scene.ambient = Colour(0.2);
-        world.build(chapter5Features(), 1000);
+        world.build(chapters(5), 1000);
         rb::RayCounters counters;
         const Colour L =
             world.trace(rb::Ray{Vec3(0.13, -0.21, 0.07), Vec3(1.0, 1.0, 1.0)}, counters);

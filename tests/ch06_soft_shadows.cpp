@@ -22,9 +22,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
+#include <cstdio>
 #include <glm/gtc/constants.hpp>
 #include <map>
 #include <memory>
@@ -32,15 +30,15 @@
 #include <vector>
 
 #include "core/chapter_features.h"
-#include "core/error.h"
-#include "core/lua_scene.h"
-#include "core/render_context.h"
+#include "core/world.h"
 #include "soft_shadows/soft_shadows.h"
+#include "test_helpers.h"
 
 using Catch::Contains;
 using rb::Colour;
 using rb::Vec2;
 using rb::Vec3;
+using rbtest::zCritical;
 
 namespace {
 
@@ -49,8 +47,7 @@ namespace {
 /// The seed of every random stream in this file: 1, or RB_CH06_SEED to re-run the statistical
 /// tests on other streams.
 std::uint64_t seed() {
-    const char* s = std::getenv("RB_CH06_SEED");
-    return s ? std::strtoull(s, nullptr, 10) : 1;
+    return rbtest::seedFromEnv("RB_CH06_SEED");
 }
 
 constexpr double kPi = glm::pi<double>();
@@ -62,51 +59,12 @@ rb::FeatureSet features(const std::string& spec = "all") {
                           spec);
 }
 
-/// A scene loaded from Lua and set up the way `rt` sets it up (src/core/main.cpp).
-struct World {
-    std::vector<rb::LoadedRender> renders;
-    rb::Pipeline pipeline;
-    rb::Scene scene;
-    World() = default;
-    World(const World&) = delete;
-    World& operator=(const World&) = delete;
-};
-
-/// Run `lua` (written to a temporary file) through rb::loadScene.
-std::vector<rb::LoadedRender> loadLua(const std::string& lua,
-                                      const rb::FeatureSet& set = features()) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("raybook-ch06-" + std::to_string(reinterpret_cast<std::uintptr_t>(&lua)));
-    std::filesystem::create_directories(dir);
-    const auto path = dir / "scene.lua";
-    std::ofstream(path) << lua;
-    struct Cleanup {
-        std::filesystem::path dir;
-        ~Cleanup() {
-            std::error_code ec;
-            std::filesystem::remove_all(dir, ec);
-        }
-    } cleanup{dir};
-    return rb::loadScene(path.string(), set, rb::SceneLoadOptions{});
-}
-
-/// Build the world of the first gr.render call, installing the enabled features with the
-/// given command-line feature options.
-std::unique_ptr<World> worldFromLua(const std::string& lua,
-                                    const std::map<std::string, std::string>& cli = {},
-                                    const std::string& spec = "all") {
-    auto world = std::make_unique<World>();
-    const rb::FeatureSet set = features(spec);
-    world->renders = loadLua(lua, set);
-    rb::LoadedRender& r = world->renders.front();
-    world->scene.instances = std::move(r.instances);
-    world->scene.lights = r.job.lights;
-    world->scene.ambient = r.job.ambient;
-    const rb::RenderContext context{world->scene.instances, r.job, cli};
-    for (const rb::Feature& f : set.on())
-        if (f.install) f.install(world->pipeline, world->scene, context);
-    world->scene.aggregate = world->pipeline.buildAggregate(world->scene.instances);
-    return world;
+/// Build the world of the first gr.render call in `lua` as `rt` does, with the given
+/// command-line feature options and --features list.
+std::unique_ptr<rb::World> worldFromLua(const std::string& lua,
+                                        const std::map<std::string, std::string>& cli = {},
+                                        const std::string& spec = "all") {
+    return rbtest::worldFromLua(lua, features(spec), cli);
 }
 
 /// A white floor (kd = 1, ks = 0, top face y = 0) under the given lights, plus `extra` Lua,
@@ -135,7 +93,7 @@ std::string lua3(const Vec3& v) {
 
 /// The floor's radiance at floor point p (y = 0), seen from straight above, with the random
 /// stream of estimate `index`.
-Colour floorRadiance(const World& world, const Vec3& p, std::uint64_t index,
+Colour floorRadiance(const rb::World& world, const Vec3& p, std::uint64_t index,
                      std::uint64_t stream = 0) {
     const rb::Integrator integrator(world.scene, world.pipeline);
     rb::Sampler sampler(seed(), index, stream);
@@ -155,17 +113,6 @@ Moments moments(const std::vector<double>& x) {
     for (double v : x) ss += (v - m.mean) * (v - m.mean);
     m.sd = std::sqrt(ss / (x.size() - 1));
     return m;
-}
-
-/// The two-sided critical value z with P(|Z| > z) = alpha for a standard normal Z.
-/// Source: P(|Z| > z) = erfc(z/√2); solved by bisection.
-double zCritical(double alpha) {
-    double lo = 0, hi = 40;
-    for (int i = 0; i < 200; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (std::erfc(mid / std::sqrt(2.0)) > alpha ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
 }
 
 /// The upper critical value of a chi-square distribution with k degrees of freedom at level
@@ -579,7 +526,7 @@ struct SlopeFit {
 /// 8, 16 (N = n² = 1 … 256), against `expected`; then the least-squares slope of ln RMSE on
 /// ln N. Standard errors by the delta method: Var(MSE^) = Var(e²)/T, so
 /// SE(ln RMSE) = ½·SD(e²)/(√T·MSE), and Var(slope) = Σ(x − x̄)²·Var(yᵢ) / (Σ(x − x̄)²)².
-SlopeFit convergence(World& world, const Vec3& p, double expected, int trials) {
+SlopeFit convergence(rb::World& world, const Vec3& p, double expected, int trials) {
     std::vector<double> x, y, varY;
     SlopeFit fit;
     for (int n : {1, 2, 4, 8, 16}) {
@@ -693,18 +640,8 @@ namespace {
 
 /// The shape of light `index` of the first render in `lua`.
 template <class Shape>
-const Shape* shapeOf(const World& world, size_t index = 0) {
+const Shape* shapeOf(const rb::World& world, size_t index = 0) {
     return dynamic_cast<const Shape*>(world.scene.lights.at(index).shape.get());
-}
-
-/// The InputError message that loading `lua` raises ("" if none).
-std::string loadError(const std::string& lua) {
-    try {
-        loadLua(lua);
-    } catch (const rb::InputError& e) {
-        return e.what();
-    }
-    return "";
 }
 
 }  // namespace
@@ -759,8 +696,10 @@ SCENARIO("the seeds' light calls and raybook's named forms build the same lights
 SCENARIO("bad light calls fail with a message that names the call and the line", "[ch06]") {
     const auto fails = [](const std::string& call, const std::string& expected) {
         // The bad call is on line 1 of the scene, before the floor and the render.
-        const std::string message = loadError(floorScene(
-            "gr.light({0, 1, 0}, {1, 1, 1}, {1, 0, 0})", "", "local bad = " + call + "\n"));
+        const std::string message =
+            rbtest::loadError(floorScene("gr.light({0, 1, 0}, {1, 1, 1}, {1, 0, 0})", "",
+                                         "local bad = " + call + "\n"),
+                              features());
         INFO(call);
         REQUIRE_THAT(message, Contains(expected));
         REQUIRE_THAT(message, Contains("scene.lua:1:"));

@@ -25,9 +25,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -36,23 +33,23 @@
 #include <string>
 #include <vector>
 
-#include "core/chapter_features.h"
-#include "core/error.h"
 #include "core/image.h"
 #include "core/lua_scene.h"
 #include "core/material.h"
 #include "core/render.h"
 #include "core/render_context.h"
+#include "core/world.h"
 #include "glossy/glossy.h"
 #include "glossy/lobe_samplers.h"
-#include "reflection/reflection.h"
-#include "refraction/refraction.h"
-#include "soft_shadows/soft_shadows.h"
+#include "test_helpers.h"
 
 using Catch::Contains;
 using rb::Colour;
 using rb::Vec2;
 using rb::Vec3;
+using rbtest::bitIdentical;
+using rbtest::chapters;
+using rbtest::zCritical;
 
 namespace {
 
@@ -62,8 +59,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// The seed of every random stream in this file: 1, or RB_CH07_SEED.
 std::uint64_t testSeed() {
-    const char* s = std::getenv("RB_CH07_SEED");
-    return s ? std::strtoull(s, nullptr, 10) : 1;
+    return rbtest::seedFromEnv("RB_CH07_SEED");
 }
 
 /// Q(a, x) = Γ(a, x) / Γ(a), the regularised upper incomplete gamma function.
@@ -100,16 +96,6 @@ double upperGammaQ(double a, double x) {
 /// P(χ²_dof > x): the p-value of a chi-square statistic.
 double chiSquareTail(double x, int dof) {
     return upperGammaQ(0.5 * dof, 0.5 * x);
-}
-
-/// The z with P(|Z| > z) = alpha for a standard normal Z, by bisection on erfc.
-double zCritical(double alpha) {
-    double lo = 0.0, hi = 40.0;
-    for (int i = 0; i < 200; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (std::erfc(mid / std::sqrt(2.0)) > alpha ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
 }
 
 /// Šidák's per-test level for k independent tests at family-wise level alpha.
@@ -261,70 +247,18 @@ Vec3 tiltedFrom(const Vec3& n, double theta) {
 
 // ---- Worlds ---------------------------------------------------------------------------------
 
-/// Chapters 1–7 as the chapter-7 binary holds them, switched on by `spec`.
-rb::FeatureSet glossyFeatures(const std::string& spec = "all") {
-    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature(),
-                           rb::reflectionFeature(), rb::refractionFeature(),
-                           rb::softShadowsFeature(), rb::glossyFeature()},
-                          spec);
-}
-
-/// Write a scene script into a fresh temporary folder and run it through rb::loadScene.
-std::vector<rb::LoadedRender> loadLua(const std::string& lua, const rb::FeatureSet& features) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("raybook-ch07-" + std::to_string(std::random_device{}()));
-    std::filesystem::create_directories(dir);
-    struct Cleanup {
-        std::filesystem::path p;
-        ~Cleanup() {
-            std::error_code ec;
-            std::filesystem::remove_all(p, ec);
-        }
-    } cleanup{dir};
-    const auto file = dir / "scene.lua";
-    std::ofstream(file) << lua;
-    return rb::loadScene(file.string(), features, rb::SceneLoadOptions{});
-}
-
-/// One render request built into a world the way `rt` builds it (src/core/main.cpp).
-struct LoadedWorld {
-    rb::LoadedRender loaded;  ///< Keeps the scene graph (shapes and materials) alive.
-    rb::Scene scene;
-    rb::Pipeline pipeline;
-    LoadedWorld() = default;
-    LoadedWorld(const LoadedWorld&) = delete;
-    LoadedWorld& operator=(const LoadedWorld&) = delete;
-};
-
-/// Install the enabled features with the given command-line feature options.
-std::unique_ptr<LoadedWorld> buildWorld(const std::string& lua, const rb::FeatureSet& features,
-                                        const std::map<std::string, std::string>& cli = {}) {
-    auto renders = loadLua(lua, features);
+/// One render request built into a world the way `rt` builds it, with the given command-line
+/// feature options.
+std::unique_ptr<rb::World> buildWorld(const std::string& lua, const rb::FeatureSet& features,
+                                      const std::map<std::string, std::string>& cli = {}) {
+    auto renders = rbtest::loadSceneText(lua, features);
     REQUIRE(renders.size() == 1);
-    auto w = std::make_unique<LoadedWorld>();
-    w->loaded = std::move(renders[0]);
-    rb::Scene& scene = w->scene;
-    scene.instances = std::move(w->loaded.instances);
-    scene.lights = w->loaded.job.lights;
-    scene.ambient = w->loaded.job.ambient;
-    if (w->loaded.job.options.count("max_depth"))
-        scene.maxDepth = static_cast<int>(w->loaded.job.options.at("max_depth"));
-    const rb::RenderContext context{scene.instances, w->loaded.job, cli};
-    for (const rb::Feature& f : features.on())
-        if (f.install) f.install(w->pipeline, scene, context);
-    scene.aggregate = w->pipeline.buildAggregate(scene.instances);
-    return w;
+    return rb::buildWorld(std::move(renders[0]), features, cli);
 }
 
 /// Render a world at its own size, one ray per pixel centre, on two threads.
-rb::Image renderWorld(const LoadedWorld& w) {
-    const rb::PinholeCamera camera(w.loaded.job.camera, w.loaded.job.width, w.loaded.job.height);
-    rb::RenderSettings settings;
-    settings.threads = 2;
-    settings.seed = testSeed();
-    rb::RayCounters counters;
-    return rb::render(w.scene, w.pipeline, camera, w.loaded.job.width, w.loaded.job.height,
-                      settings, counters);
+rb::Image renderWorld(const rb::World& w) {
+    return rbtest::renderWorld(w, {.threads = 2, .seed = testSeed()});
 }
 
 /// Root-mean-square difference over all channels of two images of one size.
@@ -335,12 +269,6 @@ double rmse(const rb::Image& a, const rb::Image& b) {
         sum += d * d;
     }
     return std::sqrt(sum / a.data().size());
-}
-
-/// True when two images hold exactly the same bits.
-bool bitIdentical(const rb::Image& a, const rb::Image& b) {
-    return a.data().size() == b.data().size() &&
-           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
 }
 
 /// A small scene: a mirror ball of the given glossiness (none when `glossiness` is empty)
@@ -745,7 +673,7 @@ SCENARIO(
                 "root:add_child(f)\n"
                 "gr.render(root, 'out.png', 8, 8, {0, 1, 0}, {0, -1, 1}, {0, 1, 0}, 50,"
                 " {1, 1, 1}, {gr.light({0, 50, 0}, {0, 0, 0}, {1, 0, 0})})\n";
-            const auto w = buildWorld(lua, glossyFeatures());
+            const auto w = buildWorld(lua, chapters(7));
             REQUIRE(w->pipeline.lobe != nullptr);
             const rb::Integrator integrator(w->scene, w->pipeline);
             // A view ray meeting the floor (normal +y) 80° from the normal.
@@ -777,14 +705,14 @@ SCENARIO(
 // [ch07-to-mirror]
 SCENARIO("as glossiness falls to 0 the image tends to chapter 4's sharp mirror", "[ch07]") {
     GIVEN("a mirror ball between striped walls, rendered 48×36 with 16 directions per pixel") {
-        const rb::Image sharp = renderWorld(*buildWorld(stripedRoom(""), glossyFeatures()));
+        const rb::Image sharp = renderWorld(*buildWorld(stripedRoom(""), chapters(7)));
         for (const std::string sampler : {"0", "1"}) {
             const std::string prelude = "gr.option('glossy_sampler', " + sampler + ")\n";
             WHEN("glossiness is 0.1, 0.01 and 0.001 (sampler " +
                  std::string(sampler == "0" ? "fuzz" : "lobe") + ")") {
                 std::vector<double> error;
                 for (const std::string g : {"0.1", "0.01", "0.001"}) {
-                    const auto world = buildWorld(stripedRoom(g, prelude), glossyFeatures());
+                    const auto world = buildWorld(stripedRoom(g, prelude), chapters(7));
                     error.push_back(rmse(renderWorld(*world), sharp));
                 }
                 // A pixel differs from the sharp image where its lobe straddles an edge of a
@@ -836,7 +764,7 @@ SCENARIO(
                " {1, 1, 1}, {gr.light({0, 0, 2}, {0, 0, 0}, {1, 0, 0})})\n";
     };
     GIVEN("a frosted pane (glossiness 0.1)") {
-        const auto w = buildWorld(paneScene("0.1"), glossyFeatures());
+        const auto w = buildWorld(paneScene("0.1"), chapters(7));
         WHEN("one ray is traced through it") {
             rb::Sampler sampler(testSeed(), 41, 0);
             rb::RayCounters counters;
@@ -858,10 +786,10 @@ SCENARIO(
         }
     }
     GIVEN("the pane rendered 32×24 with glossiness 0.1, 0.01 and 0.001, and clear") {
-        const rb::Image clear = renderWorld(*buildWorld(paneScene(""), glossyFeatures()));
+        const rb::Image clear = renderWorld(*buildWorld(paneScene(""), chapters(7)));
         std::vector<double> error;
         for (const std::string g : {"0.1", "0.01", "0.001"}) {
-            const auto world = buildWorld(paneScene(g), glossyFeatures());
+            const auto world = buildWorld(paneScene(g), chapters(7));
             error.push_back(rmse(renderWorld(*world), clear));
         }
         THEN("the RMSE to clear glass falls by more than 2 per decade of g, to below 0.03") {
@@ -882,10 +810,10 @@ SCENARIO("with --features=all,-glossy a glossy material reflects as chapter 4's 
     GIVEN("the striped room with a glossy ball (glossiness 0.2)") {
         const std::string glossy = stripedRoom("0.2");
         WHEN("it is rendered with chapter 7 switched off") {
-            const auto off = buildWorld(glossy, glossyFeatures("all,-glossy"));
+            const auto off = buildWorld(glossy, chapters(7, "all,-glossy"));
             THEN("no lobe is installed, and the image equals the sharp mirror's bit for bit") {
                 CHECK(off->pipeline.lobe == nullptr);
-                const auto sharp = buildWorld(stripedRoom(""), glossyFeatures());
+                const auto sharp = buildWorld(stripedRoom(""), chapters(7));
                 CHECK(bitIdentical(renderWorld(*off), renderWorld(*sharp)));
             }
         }
@@ -896,18 +824,18 @@ SCENARIO("with --features=all,-glossy a glossy material reflects as chapter 4's 
 SCENARIO("a scene without glossy materials pays nothing for chapter 7", "[ch07]") {
     GIVEN("the striped room with a sharp mirror ball") {
         WHEN("it is rendered with chapter 7 on") {
-            const auto on = buildWorld(stripedRoom(""), glossyFeatures());
+            const auto on = buildWorld(stripedRoom(""), chapters(7));
             THEN("no lobe is installed, and the image equals chapter 4's bit for bit") {
                 CHECK(on->pipeline.lobe == nullptr);
-                const auto ch4 = buildWorld(stripedRoom(""), glossyFeatures("all,-glossy"));
+                const auto ch4 = buildWorld(stripedRoom(""), chapters(7, "all,-glossy"));
                 CHECK(bitIdentical(renderWorld(*on), renderWorld(*ch4)));
             }
         }
     }
     GIVEN("glossiness 0, or --glossy-samples=0") {
         THEN("no lobe is installed either") {
-            CHECK(buildWorld(stripedRoom("0"), glossyFeatures())->pipeline.lobe == nullptr);
-            CHECK(buildWorld(stripedRoom("0.2"), glossyFeatures(), {{"glossy-samples", "0"}})
+            CHECK(buildWorld(stripedRoom("0"), chapters(7))->pipeline.lobe == nullptr);
+            CHECK(buildWorld(stripedRoom("0.2"), chapters(7), {{"glossy-samples", "0"}})
                       ->pipeline.lobe == nullptr);
         }
     }
@@ -979,16 +907,8 @@ SCENARIO("--glossy-sampler and gr.option('glossy_sampler') choose the fuzz spher
 
 /// The material of the only instance of a scene whose object uses the Lua expression.
 rb::Material materialOf(const std::string& material, const rb::FeatureSet& features) {
-    const auto renders = loadLua("local m = " + material +
-                                     "\nroot = gr.node('root')\n"
-                                     "local s = gr.sphere('s')\n"
-                                     "s:set_material(m)\n"
-                                     "root:add_child(s)\n"
-                                     "gr.option('glossy_samples', 4)\n"
-                                     "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1},"
-                                     " {0, 1, 0}, 50, {0.1, 0.1, 0.1},"
-                                     " {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0})})\n",
-                                 features);
+    const auto renders = rbtest::loadSceneText(
+        rbtest::oneMaterialScene(material, "gr.option('glossy_samples', 4)\n"), features);
     REQUIRE(renders.size() == 1);
     REQUIRE(renders[0].job.options.at("glossy_samples") == 4);
     REQUIRE(renders[0].instances.size() == 1);
@@ -996,7 +916,7 @@ rb::Material materialOf(const std::string& material, const rb::FeatureSet& featu
 }
 
 SCENARIO("raybook's named field and the seeds' glossy calls all set `glossiness`", "[ch07]") {
-    const rb::FeatureSet features = glossyFeatures();
+    const rb::FeatureSet features = chapters(7);
     GIVEN("gr.material{..., glossiness = 0.2}") {
         THEN("glossiness is 0.2") {
             const rb::Material m = materialOf(
@@ -1022,9 +942,7 @@ SCENARIO("raybook's named field and the seeds' glossy calls all set `glossiness`
         }
     }
     GIVEN("a chapter-4 build") {
-        const rb::FeatureSet ch4({rb::chapter01Feature(), rb::chapter02Feature(),
-                                  rb::chapter03Feature(), rb::reflectionFeature()},
-                                 "all");
+        const rb::FeatureSet ch4 = chapters(4);
         THEN("a glossy material or option is an error that names chapter 7") {
             CHECK_THROWS_WITH(materialOf("gr.material{kd = {1, 0, 0}, glossiness = 0.2}", ch4),
                               Contains("chapter 7"));
@@ -1116,17 +1034,13 @@ SCENARIO("the chapter scene renders finite, non-negative and the same on 1 and 2
         std::ifstream in(std::string(RB_SOURCE_DIR) + "/scenes/chapter07-glossy.lua");
         const std::string lua((std::istreambuf_iterator<char>(in)), {});
         REQUIRE(!lua.empty());
-        const auto w = buildWorld(lua, glossyFeatures(), {{"glossy-samples", "4"}});
+        const auto w = buildWorld(lua, chapters(7), {{"glossy-samples", "4"}});
         REQUIRE(w->pipeline.lobe != nullptr);
-        const rb::PinholeCamera camera(w->loaded.job.camera, 48, 36);
         rb::Image images[2] = {rb::Image(1, 1), rb::Image(1, 1)};
         for (int threads : {1, 2}) {
-            rb::RenderSettings settings;
-            settings.threads = threads;
-            settings.seed = testSeed();
             rb::RayCounters counters;
             images[threads - 1] =
-                rb::render(w->scene, w->pipeline, camera, 48, 36, settings, counters);
+                rbtest::renderAt(*w, 48, 36, {.threads = threads, .seed = testSeed()}, counters);
             CHECK(counters.count[static_cast<int>(rb::RayKind::Glossy)] > 0);
         }
         THEN("every pixel is finite and non-negative, and the bits agree") {

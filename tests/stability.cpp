@@ -28,6 +28,7 @@
 
 using Catch::Contains;
 using rb::Vec3;
+using rbtest::loadError;
 
 namespace {
 
@@ -60,24 +61,10 @@ std::shared_ptr<rb::Mesh> latLongSphere(int bands, int segments) {
     return rbtest::makeMesh(positions, triangles, "lat-long-sphere");
 }
 
-/// The message of the InputError that loading `lua` throws, or "" if it loads.
-std::string loadError(const std::string& lua, const std::string& fileName) {
-    try {
-        rbtest::loadSceneText(lua, fileName);
-    } catch (const rb::InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-/// Render the first gr.render request of a world with the given samples per pixel.
-rb::Image renderWorld(const rbtest::World& world, int spp, int threads = 2) {
-    rb::RenderSettings settings;
-    settings.threads = threads;
-    settings.samplesPerPixel = spp;
-    rb::RayCounters counters;
-    return rb::render(world.scene, world.pipeline, world.camera(), world.loaded.job.width,
-                      world.loaded.job.height, settings, counters);
+/// Render the first gr.render request of a world on two threads with the given samples per
+/// pixel.
+rb::Image renderWorld(const rb::World& world, int spp) {
+    return rbtest::renderWorld(world, {.threads = 2, .samplesPerPixel = spp});
 }
 
 /// A chapter 1–3 scene scaled by s: a floor, a ball resting on it, a crate standing on it
@@ -170,11 +157,11 @@ SCENARIO("a scene scaled from 1e-3 to 1e4 renders the same picture and shows no 
     // would show up as speckled lit surfaces at some scales. Rounding may still flip a pixel
     // whose centre lies within ~1e-15 of a silhouette or a shadow edge; we allow 1 % of pixels
     // to differ by more than 1e-5 (well above float storage, 6e-8 relative).
-    const auto reference = rbtest::buildWorld(rbtest::loadSceneText(scaledScene(1.0)));
+    const auto reference = rbtest::worldFromLua(scaledScene(1.0));
     const rb::Image expected = renderWorld(*reference, 1);
     for (const double scale : {1e-3, 1e-1, 1e2, 1e4}) {
         GIVEN("the scene scaled by " + std::to_string(scale)) {
-            const auto world = rbtest::buildWorld(rbtest::loadSceneText(scaledScene(scale)));
+            const auto world = rbtest::worldFromLua(scaledScene(scale));
             const rb::Image image = renderWorld(*world, 1);
             THEN("every pixel is finite and non-negative, and at most 1 % differ from scale 1") {
                 CHECK(rbtest::allFiniteNonNegative(image));
@@ -195,7 +182,7 @@ SCENARIO("a scene scaled from 1e-3 to 1e4 renders the same picture and shows no 
         THEN("every pixel is still finite and non-negative") {
             for (const double scale : {1e-8, 1e12}) {
                 CAPTURE(scale);
-                const auto world = rbtest::buildWorld(rbtest::loadSceneText(scaledScene(scale)));
+                const auto world = rbtest::worldFromLua(scaledScene(scale));
                 CHECK(rbtest::allFiniteNonNegative(renderWorld(*world, 1)));
             }
         }
@@ -600,7 +587,8 @@ SCENARIO("coincident surfaces never render NaN, Inf or negative pixels", "[stabi
             for (size_t view = 0; view < 2; ++view) {
                 for (const int spp : {1, 4}) {
                     CAPTURE(view, spp);
-                    const auto world = rbtest::buildWorld(rbtest::loadSceneText(scene), view);
+                    const auto world = rb::buildWorld(
+                        std::move(rbtest::loadSceneText(scene).at(view)), rbtest::coreFeatures());
                     const rb::Image image = renderWorld(*world, spp);
                     CHECK(rbtest::allFiniteNonNegative(image));
                 }

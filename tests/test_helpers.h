@@ -1,15 +1,20 @@
 /// \file
-/// Helpers shared by the chapter 1–3 tests and the stability suite: a portable random stream,
-/// temporary folders, loading Lua scenes written inline, building a renderable world the way
-/// `rt` does, and the self-intersection probe used by the "no shadow acne" tests.
+/// Helpers shared by the chapter tests and the stability suite: a portable random stream, the
+/// feature sets of the chapter binaries, temporary folders, loading Lua scenes written inline,
+/// worlds built from Lua (with rb::buildWorld, as `rt` builds them) or in code, small renders
+/// and their comparison, a normal critical value, and the self-intersection probe used by the
+/// "no shadow acne" tests.
 #pragma once
 
 #include <stdlib.h>
 
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/constants.hpp>
@@ -23,14 +28,23 @@
 #include <utility>
 #include <vector>
 
+#include "core/box.h"
 #include "core/chapter_features.h"
+#include "core/error.h"
 #include "core/image.h"
 #include "core/instance.h"
 #include "core/integrator.h"
 #include "core/lua_scene.h"
 #include "core/mesh.h"
 #include "core/obj.h"
+#include "core/render.h"
 #include "core/render_context.h"
+#include "core/sphere.h"
+#include "core/world.h"
+#include "glossy/glossy.h"
+#include "reflection/reflection.h"
+#include "refraction/refraction.h"
+#include "soft_shadows/soft_shadows.h"
 
 namespace rbtest {
 
@@ -70,10 +84,24 @@ class Rng {
     std::mt19937_64 engine_;
 };
 
+/// Chapters 1 to `last`, switched on by `spec` as --features does: what `rt_ch<last>` runs with.
+inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
+    const std::vector<rb::Feature> all = {rb::chapter01Feature(),  rb::chapter02Feature(),
+                                          rb::chapter03Feature(),  rb::reflectionFeature(),
+                                          rb::refractionFeature(), rb::softShadowsFeature(),
+                                          rb::glossyFeature()};
+    return rb::FeatureSet(std::vector<rb::Feature>(all.begin(), all.begin() + last), spec);
+}
+
 /// The three core chapters, all switched on: what `rt_ch3 --features=all` runs with.
 inline rb::FeatureSet coreFeatures() {
-    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature()},
-                          "all");
+    return chapters(3);
+}
+
+/// 1, or the value of the environment variable `variable`: the seed of a file's random streams.
+inline std::uint64_t seedFromEnv(const char* variable) {
+    const char* s = std::getenv(variable);
+    return s ? std::strtoull(s, nullptr, 10) : 1;
 }
 
 /// A fresh folder under the system's temporary directory, deleted with everything in it when
@@ -107,6 +135,8 @@ class TempDir {
     std::filesystem::path path_;
 };
 
+// ---- Lua scenes written inline --------------------------------------------------------------
+
 /// A gr.render call for `root` with a small image and one white light: most scene tests only
 /// care about the graph, so they end with this line.
 inline std::string renderLine(const std::string& root = "root") {
@@ -115,67 +145,81 @@ inline std::string renderLine(const std::string& root = "root") {
            " {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0})})\n";
 }
 
-/// Write `lua` to `fileName` in a fresh temporary folder and run it through rb::loadScene with
-/// the core chapters. Throws what loadScene throws.
+/// A scene whose one object, the sphere 's', has the Lua material `material`; `extra` runs last.
+inline std::string oneMaterialScene(const std::string& material, const std::string& extra = "") {
+    return "local m = " + material +
+           "\n"
+           "root = gr.node('root')\n"
+           "local s = gr.sphere('s')\n"
+           "s:set_material(m)\n"
+           "root:add_child(s)\n" +
+           extra + renderLine();
+}
+
+/// Write `lua` to `fileName` in a fresh temporary folder and run rb::loadScene on it.
 inline std::vector<rb::LoadedRender> loadSceneText(const std::string& lua,
+                                                   const rb::FeatureSet& features,
                                                    const std::string& fileName = "scene.lua",
                                                    bool legacy = false) {
     TempDir dir;
     rb::SceneLoadOptions options;
     options.legacy = legacy;
-    return rb::loadScene(dir.write(fileName, lua), coreFeatures(), options);
+    return rb::loadScene(dir.write(fileName, lua), features, options);
 }
 
-/// A renderable world put together the way `rt` does it (src/core/main.cpp): the pipeline of
-/// the enabled features, the instances of one gr.render call, their aggregate and lights.
-/// Not movable: the aggregate refers to `scene.instances`.
-struct World {
-    rb::LoadedRender loaded;  ///< Keeps the scene graph (and so the shapes) alive.
-    rb::Pipeline pipeline;
-    rb::Scene scene;
-    World() = default;
-    World(const World&) = delete;
-    World& operator=(const World&) = delete;
-    /// The camera of the gr.render call.
-    rb::PinholeCamera camera() const {
-        return rb::PinholeCamera(loaded.job.camera, loaded.job.width, loaded.job.height);
+/// loadSceneText with the core chapters.
+inline std::vector<rb::LoadedRender> loadSceneText(const std::string& lua,
+                                                   const std::string& fileName = "scene.lua",
+                                                   bool legacy = false) {
+    return loadSceneText(lua, coreFeatures(), fileName, legacy);
+}
+
+/// The message of the InputError that loading `lua` throws, or "" if it loads.
+inline std::string loadError(const std::string& lua, const rb::FeatureSet& features,
+                             const std::string& fileName = "scene.lua") {
+    try {
+        loadSceneText(lua, features, fileName);
+    } catch (const rb::InputError& e) {
+        return e.what();
     }
-};
-
-/// Install the enabled core features into a pipeline for one render, as `rt` does, with no
-/// command-line feature options.
-inline void installCore(rb::Pipeline& pipeline, rb::Scene& scene, const rb::RenderJob& job) {
-    static const std::map<std::string, std::string> kNoOptions;
-    const rb::RenderContext context{scene.instances, job, kNoOptions};
-    const rb::FeatureSet features = coreFeatures();  // outlives the loop over its list
-    for (const rb::Feature& f : features.on())
-        if (f.install) f.install(pipeline, scene, context);
+    return "";
 }
 
-/// Build the world of render request `index` from loaded scene requests, in the order of
-/// src/core/main.cpp: instances, lights and ambient; the features plug in; the aggregate.
-inline std::unique_ptr<World> buildWorld(std::vector<rb::LoadedRender> renders, size_t index = 0) {
-    auto world = std::make_unique<World>();
-    world->loaded = std::move(renders.at(index));
-    world->scene.instances = std::move(world->loaded.instances);
-    world->scene.lights = world->loaded.job.lights;
-    world->scene.ambient = world->loaded.job.ambient;
-    installCore(world->pipeline, world->scene, world->loaded.job);
-    world->scene.aggregate = world->pipeline.buildAggregate(world->scene.instances);
-    return world;
+/// loadError with the core chapters.
+inline std::string loadError(const std::string& lua, const std::string& fileName = "scene.lua") {
+    return loadError(lua, coreFeatures(), fileName);
 }
 
-/// Load a scene written inline and build the world of its first gr.render call.
-inline std::unique_ptr<World> worldFromLua(const std::string& lua) {
-    return buildWorld(loadSceneText(lua));
+/// The material of the only object of oneMaterialScene(material), loaded with `features`.
+inline rb::Material materialOf(const std::string& material, const rb::FeatureSet& features) {
+    const auto renders = loadSceneText(oneMaterialScene(material), features);
+    REQUIRE(renders.size() == 1);
+    REQUIRE(renders[0].instances.size() == 1);
+    REQUIRE(renders[0].instances[0].material != nullptr);
+    return *renders[0].instances[0].material;
+}
+
+// ---- Worlds ---------------------------------------------------------------------------------
+
+/// The world of the first gr.render call in `lua`, built by rb::buildWorld as `rt` builds it.
+inline std::unique_ptr<rb::World> worldFromLua(
+    const std::string& lua, const rb::FeatureSet& features = coreFeatures(),
+    const std::map<std::string, std::string>& featureOptions = {}) {
+    return rb::buildWorld(std::move(loadSceneText(lua, features).at(0)), features, featureOptions);
+}
+
+/// The radiance the integrator returns along one ray, with sampler stream 0; counts rays.
+inline rb::Colour traceOne(const rb::Scene& scene, const rb::Pipeline& pipeline, const rb::Ray& ray,
+                           rb::RayCounters& counters) {
+    const rb::Integrator integrator(scene, pipeline);
+    rb::Sampler sampler(0, 0, 0);
+    return integrator.trace(ray, sampler, counters, 0);
 }
 
 /// The radiance the integrator returns along one ray of a world.
-inline rb::Colour traceOne(const World& world, const rb::Ray& ray) {
-    const rb::Integrator integrator(world.scene, world.pipeline);
-    rb::Sampler sampler(0, 0, 0);
+inline rb::Colour traceOne(const rb::World& world, const rb::Ray& ray) {
     rb::RayCounters counters;
-    return integrator.trace(ray, sampler, counters, 0);
+    return traceOne(world.scene, world.pipeline, ray, counters);
 }
 
 /// An instance of `shape` placed by `objectToWorld`, with an optional material.
@@ -201,6 +245,114 @@ inline std::shared_ptr<rb::Mesh> makeMesh(const std::vector<Vec3>& positions,
     return std::make_shared<rb::Mesh>(data, name);
 }
 
+/// A world assembled in code and built as `rt` builds one; not movable (see scene.aggregate).
+class TestWorld {
+  public:
+    TestWorld() = default;
+    TestWorld(const TestWorld&) = delete;
+    TestWorld& operator=(const TestWorld&) = delete;
+
+    /// A copy of `m` that lives as long as the world.
+    const rb::Material* material(const rb::Material& m) {
+        materials_.push_back(m);
+        return &materials_.back();
+    }
+    /// Place the unit cube [0,1]³ by objectToWorld.
+    void addBox(const rb::Mat4& objectToWorld, const rb::Material* m,
+                const std::string& name = "box") {
+        add(box_, objectToWorld, m, name);
+    }
+    /// Place the unit sphere by objectToWorld.
+    void addSphere(const rb::Mat4& objectToWorld, const rb::Material* m,
+                   const std::string& name = "sphere") {
+        add(sphere_, objectToWorld, m, name);
+    }
+    /// Place any shape (which must outlive the world).
+    void add(const rb::Shape& shape, const rb::Mat4& objectToWorld, const rb::Material* m,
+             const std::string& name = "test") {
+        scene.instances.push_back(makeInstance(shape, objectToWorld, m, name));
+    }
+    /// Let the enabled features install themselves, then build the aggregate (`rt`'s order).
+    void build(const rb::FeatureSet& features, int maxDepth = -1,
+               const std::map<std::string, std::string>& featureOptions = {}) {
+        if (maxDepth >= 0) scene.maxDepth = maxDepth;  // as --max-depth
+        const rb::RenderJob job;
+        const rb::RenderContext context{scene.instances, job, featureOptions};
+        for (const rb::Feature& f : features.on())
+            if (f.install) f.install(pipeline, scene, context);
+        scene.aggregate = pipeline.buildAggregate(scene.instances);
+    }
+    /// The radiance the integrator returns along one ray; counts rays into `counters`.
+    rb::Colour trace(const rb::Ray& ray, rb::RayCounters& counters) const {
+        return traceOne(scene, pipeline, ray, counters);
+    }
+    /// The radiance the integrator returns along one ray.
+    rb::Colour trace(const rb::Ray& ray) const {
+        rb::RayCounters counters;
+        return trace(ray, counters);
+    }
+
+    rb::Scene scene;        ///< Its aggregate refers to scene.instances.
+    rb::Pipeline pipeline;  ///< What the features installed.
+
+  private:
+    std::deque<rb::Material> materials_;  // a deque never moves its elements
+    rb::Box box_;
+    rb::Sphere sphere_;
+};
+
+/// The unit cube stretched into the box [lo, hi].
+inline rb::Mat4 boxFromTo(const Vec3& lo, const Vec3& hi) {
+    return glm::scale(glm::translate(rb::Mat4(1.0), lo), hi - lo);
+}
+
+// ---- Renders and what they return -----------------------------------------------------------
+
+/// Render a world through the camera of its gr.render call at width × height; counts rays.
+inline rb::Image renderAt(const rb::World& world, int width, int height,
+                          const rb::RenderSettings& settings, rb::RayCounters& counters) {
+    const rb::PinholeCamera camera(world.source.job.camera, width, height);
+    return rb::render(world.scene, world.pipeline, camera, width, height, settings, counters);
+}
+
+/// Render a world at the size its gr.render call asks for.
+inline rb::Image renderWorld(const rb::World& world, const rb::RenderSettings& settings) {
+    rb::RayCounters counters;
+    return renderAt(world, world.source.job.width, world.source.job.height, settings, counters);
+}
+
+/// Render a world on one thread at width × height with `spp` samples per pixel; counts rays.
+inline rb::Image renderSmall(const rb::World& world, int width, int height,
+                             rb::RayCounters& counters, int spp = 1) {
+    return renderAt(world, width, height, {.threads = 1, .samplesPerPixel = spp}, counters);
+}
+
+/// renderSmall at 64 × 48 unless told, one ray through each pixel centre.
+inline rb::Image renderSmall(const rb::World& world, int width = 64, int height = 48) {
+    rb::RayCounters counters;
+    return renderSmall(world, width, height, counters);
+}
+
+/// True when two images have the same size and hold exactly the same bits (NaN included).
+inline bool bitIdentical(const rb::Image& a, const rb::Image& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
+}
+
+/// True when every channel of every pixel is a finite, non-negative number.
+inline bool allFiniteNonNegative(const rb::Image& image) {
+    for (float c : image.data())
+        if (!std::isfinite(c) || c < 0.0f) return false;
+    return true;
+}
+
+/// True when every channel is a finite, non-negative number.
+inline bool finiteNonNegative(const rb::Colour& c) {
+    return rb::isFinite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0;
+}
+
+// ---- Numbers --------------------------------------------------------------------------------
+
 /// How many representable doubles lie between a and b (0 when equal). Both must be finite and
 /// of the same sign.
 inline std::uint64_t ulpDistance(double a, double b) {
@@ -211,11 +363,14 @@ inline std::uint64_t ulpDistance(double a, double b) {
     return ia > ib ? static_cast<std::uint64_t>(ia - ib) : static_cast<std::uint64_t>(ib - ia);
 }
 
-/// True when every channel of every pixel is a finite, non-negative number.
-inline bool allFiniteNonNegative(const rb::Image& image) {
-    for (float c : image.data())
-        if (!std::isfinite(c) || c < 0.0f) return false;
-    return true;
+/// The z with P(|Z| > z) = alpha for a standard normal Z: erfc(z/√2) = alpha, by bisection.
+inline double zCritical(double alpha) {
+    double lo = 0, hi = 40;
+    for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (std::erfc(mid / std::sqrt(2.0)) > alpha ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
 }
 
 // ---- The self-intersection probe ------------------------------------------------------------

@@ -17,8 +17,6 @@
 // MSE. Error is in displayed units (each channel clamped to [0, 1], as the PNG shows it). Time
 // is the process's CPU time for the render (both threads), the fastest of 3 runs: a busy
 // shared machine disturbs it less than wall-clock time.
-#include <time.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,63 +24,30 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "chart_helpers.h"
 #include "core/chapter_features.h"
 #include "core/image.h"
-#include "core/lua_scene.h"
-#include "core/render.h"
-#include "core/render_context.h"
 #include "soft_shadows/soft_shadows.h"
+
+using rbchart::renderTimed;
+using rbchart::sideBySide;
 
 namespace {
 
 constexpr int kWidth = 128, kHeight = 96;
 
-double cpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-/// A scene built as `rt` builds it (src/core/main.cpp), with chapter 6's command-line options.
-struct World {
-    rb::LoadedRender loaded;
-    rb::Scene scene;
-    rb::Pipeline pipeline;
-};
-
-std::unique_ptr<World> buildWorld(const std::string& path,
-                                  const std::map<std::string, std::string>& cli,
-                                  const std::string& spec = "all") {
+/// The scene file `path` built as `rt` builds it, with chapters 1–3 and 6 switched on by `spec`
+/// and chapter 6's command-line options.
+std::unique_ptr<rb::World> buildWorld(const std::string& path,
+                                      const std::map<std::string, std::string>& cli,
+                                      const std::string& spec = "all") {
     const rb::FeatureSet features({rb::chapter01Feature(), rb::chapter02Feature(),
                                    rb::chapter03Feature(), rb::softShadowsFeature()},
                                   spec);
-    auto renders = rb::loadScene(path, features, rb::SceneLoadOptions{});
-    auto w = std::make_unique<World>();
-    w->loaded = std::move(renders.at(0));
-    w->scene.instances = std::move(w->loaded.instances);
-    w->scene.lights = w->loaded.job.lights;
-    w->scene.ambient = w->loaded.job.ambient;
-    const rb::RenderContext context{w->scene.instances, w->loaded.job, cli};
-    for (const rb::Feature& f : features.on())
-        if (f.install) f.install(w->pipeline, w->scene, context);
-    w->scene.aggregate = w->pipeline.buildAggregate(w->scene.instances);
-    return w;
-}
-
-/// Render at width × height with the given seed and pixel samples; `seconds` gets the CPU time.
-rb::Image renderTimed(const World& w, int width, int height, std::uint64_t seed, int spp,
-                      double& seconds) {
-    const rb::PinholeCamera camera(w.loaded.job.camera, width, height);
-    rb::RenderSettings settings;
-    settings.seed = seed;
-    settings.samplesPerPixel = spp;
-    rb::RayCounters counters;
-    const double t0 = cpuSeconds();
-    rb::Image image = rb::render(w.scene, w.pipeline, camera, width, height, settings, counters);
-    seconds = cpuSeconds() - t0;
-    return image;
+    return rbchart::loadWorld(path, features, cli);
 }
 
 /// Mean squared difference of displayed values (each channel clamped to [0, 1]).
@@ -94,20 +59,6 @@ double meanSquaredError(const rb::Image& a, const rb::Image& b) {
         sum += d * d;
     }
     return sum / a.data().size();
-}
-
-/// Two renders side by side, with a white gap, written as a PNG.
-void sideBySide(const rb::Image& left, const rb::Image& right, const std::string& path) {
-    const int w = left.width(), h = left.height(), gap = 4;
-    rb::Image both(2 * w + gap, h);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            both.set(x, y, left.get(x, y));
-            both.set(w + gap + x, y, right.get(x, y));
-        }
-        for (int x = w; x < w + gap; ++x) both.set(x, y, rb::Colour(1.0));
-    }
-    rb::writePng(both, path);
 }
 
 }  // namespace
@@ -125,9 +76,7 @@ int main(int argc, char** argv) {
     const auto refWorld = buildWorld(scene, {{"light-samples", "64"}});
     const rb::Image a = renderTimed(*refWorld, kWidth, kHeight, 101, 1, t);
     const rb::Image b = renderTimed(*refWorld, kWidth, kHeight, 202, 1, t);
-    rb::Image reference(kWidth, kHeight);
-    for (size_t i = 0; i < a.data().size(); ++i)
-        reference.data()[i] = 0.5f * (a.data()[i] + b.data()[i]);
+    const rb::Image reference = rbchart::meanImage(a, b);
     const double referenceVariance = meanSquaredError(a, b) / 4.0;
     std::printf("reference: 2 x 64x64 samples per light, %.1f s each, RMSE of the mean %.6f\n", t,
                 std::sqrt(referenceVariance));

@@ -16,8 +16,6 @@
 // glossy bounces, so the cost is linear in N and a converged reference is affordable. Time is
 // the process's CPU time (both threads), which a busy shared machine disturbs less than
 // wall-clock time; each point is the fastest of 3 runs.
-#include <time.h>
-
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -26,11 +24,9 @@
 #include <string>
 #include <vector>
 
+#include "chart_helpers.h"
 #include "core/chapter_features.h"
 #include "core/image.h"
-#include "core/lua_scene.h"
-#include "core/render.h"
-#include "core/render_context.h"
 #include "glossy/glossy.h"
 #include "glossy/lobe_samplers.h"
 #include "reflection/reflection.h"
@@ -42,53 +38,21 @@ namespace {
 constexpr int kWidth = 128, kHeight = 96;
 constexpr double kPi = 3.14159265358979323846;
 
-double cpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
 /// The chapter scene built as `rt` builds it, with the given glossy options.
-struct World {
-    rb::LoadedRender loaded;
-    rb::Scene scene;
-    rb::Pipeline pipeline;
-};
-
-std::unique_ptr<World> buildWorld(const std::string& path, const std::string& sampler,
-                                  int samples) {
+std::unique_ptr<rb::World> buildWorld(const std::string& path, const std::string& sampler,
+                                      int samples) {
     const rb::FeatureSet features(
         {rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature(),
          rb::reflectionFeature(), rb::refractionFeature(), rb::softShadowsFeature(),
          rb::glossyFeature()},
         "all");
-    auto renders = rb::loadScene(path, features, rb::SceneLoadOptions{});
-    auto w = std::make_unique<World>();
-    w->loaded = std::move(renders.at(0));
-    w->scene.instances = std::move(w->loaded.instances);
-    w->scene.lights = w->loaded.job.lights;
-    w->scene.ambient = w->loaded.job.ambient;
-    const auto& options = w->loaded.job.options;
-    if (options.count("max_depth")) w->scene.maxDepth = static_cast<int>(options.at("max_depth"));
-    const std::map<std::string, std::string> cli = {{"glossy-sampler", sampler},
-                                                    {"glossy-samples", std::to_string(samples)}};
-    const rb::RenderContext context{w->scene.instances, w->loaded.job, cli};
-    for (const rb::Feature& f : features.on())
-        if (f.install) f.install(w->pipeline, w->scene, context);
-    w->scene.aggregate = w->pipeline.buildAggregate(w->scene.instances);
-    return w;
+    return rbchart::loadWorld(
+        path, features, {{"glossy-sampler", sampler}, {"glossy-samples", std::to_string(samples)}});
 }
 
-/// Render at 128×96 with the given seed; returns the image and adds the CPU time taken.
-rb::Image renderTimed(const World& w, std::uint64_t seed, double& seconds) {
-    const rb::PinholeCamera camera(w.loaded.job.camera, kWidth, kHeight);
-    rb::RenderSettings settings;
-    settings.seed = seed;
-    rb::RayCounters counters;
-    const double t0 = cpuSeconds();
-    rb::Image image = rb::render(w.scene, w.pipeline, camera, kWidth, kHeight, settings, counters);
-    seconds = cpuSeconds() - t0;
-    return image;
+/// Render at 128×96 with the given seed, one ray per pixel centre; `seconds` gets the CPU time.
+rb::Image renderTimed(const rb::World& w, std::uint64_t seed, double& seconds) {
+    return rbchart::renderTimed(w, kWidth, kHeight, seed, 1, seconds);
 }
 
 double meanSquaredError(const rb::Image& a, const rb::Image& b) {
@@ -143,9 +107,7 @@ int main(int argc, char** argv) {
         const auto refWorld = buildWorld(scene, sampler, 1024);
         const rb::Image a = renderTimed(*refWorld, 101, t);
         const rb::Image b = renderTimed(*refWorld, 202, t);
-        rb::Image reference(kWidth, kHeight);
-        for (size_t i = 0; i < a.data().size(); ++i)
-            reference.data()[i] = 0.5f * (a.data()[i] + b.data()[i]);
+        const rb::Image reference = rbchart::meanImage(a, b);
         const double referenceVariance = meanSquaredError(a, b) / 4.0;
         double logEfficiency = 0.0;
         int points = 0;
@@ -190,24 +152,11 @@ int main(int argc, char** argv) {
 
     // ---- The two lobes' look: the chapter scene as it is (16 directions per glossy surface),
     // 192×144 with 8 jittered samples per pixel, fuzz | lobe ----
-    const int lookWidth = 192, lookHeight = 144;
-    rb::Image both(2 * lookWidth + 4, lookHeight);
-    for (int y = 0; y < lookHeight; ++y)
-        for (int x = lookWidth; x < lookWidth + 4; ++x) both.set(x, y, rb::Colour(1.0));
-    for (int k = 0; k < 2; ++k) {
-        const auto w = buildWorld(scene, k == 0 ? "fuzz" : "lobe", 16);
-        const rb::PinholeCamera camera(w->loaded.job.camera, lookWidth, lookHeight);
-        rb::RenderSettings settings;
-        settings.seed = 1;
-        settings.samplesPerPixel = 8;
-        rb::RayCounters counters;
-        const rb::Image image =
-            rb::render(w->scene, w->pipeline, camera, lookWidth, lookHeight, settings, counters);
-        for (int y = 0; y < lookHeight; ++y)
-            for (int x = 0; x < lookWidth; ++x)
-                both.set(k * (lookWidth + 4) + x, y, image.get(x, y));
-    }
-    rb::writePng(both, out + "/lobes.png");
+    double unused = 0.0;
+    rbchart::sideBySide(
+        rbchart::renderTimed(*buildWorld(scene, "fuzz", 16), 192, 144, 1, 8, unused),
+        rbchart::renderTimed(*buildWorld(scene, "lobe", 16), 192, 144, 1, 8, unused),
+        out + "/lobes.png");
 
     // ---- Energy lost below the surface near grazing ----
     std::ofstream grazing(out + "/grazing.dat");
