@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 
 namespace rb {
 
@@ -196,6 +198,65 @@ void BVH::build(const std::vector<AABB>& primitiveBounds, const BVHBuildOptions&
     order_.reserve(s.refs.size());
     for (const PrimRef& r : s.refs) order_.push_back(r.index);
     nodes_.shrink_to_fit();
+    buildWide();
+}
+
+namespace {
+/// The largest float not above x, and the smallest not below: bounds rounded outwards.
+float roundDown(double x) {
+    float f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float roundUp(double x) {
+    float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+}  // namespace
+
+void BVH::buildWide() {
+    wide_.clear();
+    if (nodes_.empty()) return;
+    wide_.reserve(nodes_.size() / 2 + 1);
+    if (nodes_[0].count > 0) {
+        // A single leaf: one compact node whose second child is an empty box.
+        WideNode n{};
+        for (int axis = 0; axis < 3; ++axis) {
+            n.lo[axis][0] = roundDown(nodes_[0].bounds.lo[axis]);
+            n.hi[axis][0] = roundUp(nodes_[0].bounds.hi[axis]);
+            n.lo[axis][1] = std::numeric_limits<float>::infinity();
+            n.hi[axis][1] = -std::numeric_limits<float>::infinity();
+        }
+        n.child[0] = nodes_[0].offset;
+        n.count[0] = nodes_[0].count;
+        n.count[1] = 1;  // an empty leaf range is never reached: its box is empty
+        n.child[1] = 0;
+        wide_.push_back(n);
+        return;
+    }
+    convert(0);
+}
+
+std::uint32_t BVH::convert(std::uint32_t i) {
+    // The build tree keeps an interior node's first child at i + 1 and its second at offset.
+    const std::uint32_t index = static_cast<std::uint32_t>(wide_.size());
+    wide_.emplace_back();
+    const std::uint32_t children[2] = {i + 1, nodes_[i].offset};
+    for (int c = 0; c < 2; ++c) {
+        const BVHNode& child = nodes_[children[c]];
+        for (int axis = 0; axis < 3; ++axis) {
+            wide_[index].lo[axis][c] = roundDown(child.bounds.lo[axis]);
+            wide_[index].hi[axis][c] = roundUp(child.bounds.hi[axis]);
+        }
+        if (child.count > 0) {
+            wide_[index].child[c] = child.offset;
+            wide_[index].count[c] = child.count;
+        } else {
+            const std::uint32_t converted = convert(children[c]);
+            wide_[index].child[c] = converted;
+            wide_[index].count[c] = 0;
+        }
+    }
+    return index;
 }
 
 }  // namespace rb
