@@ -73,7 +73,7 @@ double degrees(double radians) {
 rb::Material makeMaterial(const Colour& kd, const std::map<std::string, double>& params = {}) {
     rb::Material m;
     m.kd = kd;
-    m.params = params;
+    m.params.insert(params.begin(), params.end());
     return m;
 }
 

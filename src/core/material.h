@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 
 #include "core/vec.h"
 
@@ -15,10 +16,12 @@ struct Material {
     Colour kd{0.0};                        ///< Diffuse reflectance.
     Colour ks{0.0};                        ///< Specular reflectance.
     double shininess = 1.0;                ///< Phong exponent.
-    std::map<std::string, double> params;  ///< Chapter parameters by name, e.g. "reflect".
+    /// Chapter parameters by name, e.g. "reflect". std::less<> lets a lookup compare a string
+    /// literal directly, without building a std::string on every hit.
+    std::map<std::string, double, std::less<>> params;
 
     /// A chapter parameter, or fallback when the scene did not set it.
-    double param(const std::string& name, double fallback = 0.0) const {
+    double param(std::string_view name, double fallback = 0.0) const {
         auto it = params.find(name);
         return it == params.end() ? fallback : it->second;
     }
