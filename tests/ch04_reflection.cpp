@@ -181,6 +181,7 @@ SCENARIO("light that bounced k times between mirrors of reflectivity r carries r
                 world.addBox(boxFromTo({-0.9, y, -2.0}, {0.9, y + 1.0, 2.0}),
                              world.material(Colour(1.0)));
                 world.scene.ambient = kAmbient;
+                world.scene.minWeight = 0.0;  // no adaptive depth control: the exact r^k
                 world.build(chapters(4), /*maxDepth=*/20);
                 WHEN("a ray leaves the middle of the corridor along (1, s, 0)") {
                     rb::RayCounters counters;
@@ -243,6 +244,7 @@ SCENARIO("a ray trapped between two facing mirrors sums a geometric series cut a
                 TestWorld world;
                 addCorridor(world, r, kd);
                 world.scene.ambient = kAmbient;
+                world.scene.minWeight = 0.0;  // no adaptive depth control: the exact series
                 world.build(chapters(4), maxDepth);
                 WHEN("a ray runs along the mirrors' normal, bouncing back and forth forever") {
                     rb::RayCounters counters;
@@ -264,6 +266,35 @@ SCENARIO("a ray trapped between two facing mirrors sums a geometric series cut a
     }
 }
 // [ch04-depth-series]
+
+// [ch04-adaptive-depth]
+SCENARIO("adaptive depth control stops a path once its light could no longer change a pixel",
+         "[ch04]") {
+    GIVEN("the trapped ray between grey mirrors of reflectivity 1/2, depth limit 20") {
+        const double r = 0.5;
+        const Colour kd(0.5);
+        TestWorld world;
+        addCorridor(world, r, kd);
+        world.scene.ambient = kAmbient;
+        world.build(chapters(4), 20);
+        WHEN("the scene keeps the default minimum weight of 1/256") {
+            rb::RayCounters counters;
+            const Colour L = world.trace(rb::Ray{Vec3(0.0), Vec3(1.0, 0.0, 0.0)}, counters);
+            THEN("reflections stop after the 8th, whose weight 2^-8 is the last at or above 1/256") {
+                // Source: the j-th reflection has weight r^j = 2^-j in the pixel; it is traced
+                // while 2^-j ≥ 1/256, i.e. for j = 1 … 8, so the sum ends at j = 8.
+                REQUIRE(world.scene.minWeight == 1.0 / 256.0);
+                REQUIRE(reflections(counters) == 8u);
+                const double sum = (1.0 - std::pow(r, 9)) / (1.0 - r);
+                const Colour expected = sum * kd * kAmbient;
+                CHECK(L.r == Approx(expected.r).epsilon(1e-12));
+                // What is dropped, r^9/(1 − r)·kd·a, is below one 8-bit level.
+                CHECK(std::pow(r, 9) / (1.0 - r) * kd.r * kAmbient.r < 1.0 / 255.0);
+            }
+        }
+    }
+}
+// [ch04-adaptive-depth]
 
 // ---- When the chapter changes nothing ---------------------------------------------------------
 

@@ -731,7 +731,7 @@ SCENARIO("deep in the tree the term follows one ray, chosen so the mean is uncha
         rb::Sampler sampler(/*seed=*/1, /*pixel=*/0, sample);
         rb::RayCounters counters;
         const rb::MediumStack media{};
-        const rb::ShadeContext ctx{world.scene, integrator, sampler, counters, depth, media};
+        const rb::ShadeContext ctx{world.scene, integrator, sampler, counters, depth, media, 1.0};
         return term.apply(ctx, ray, hit, world.pipeline.surface(ctx, ray, hit));
     };
     const double F = 0.387704354691473;  // Source: DESIGN.md §5, F(80°; 1 → 1.5)

@@ -4,12 +4,12 @@ namespace rb {
 
 // [trace]
 Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth,
-                         const MediumStack& media) const {
+                         const MediumStack& media, double weight) const {
     Hit hit;
     if (!scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit))
         return scene_.background;
     // Local shading, then each chapter's secondary term.
-    const ShadeContext ctx{scene_, *this, sampler, counters, depth, media};
+    const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight};
     Colour colour = pipeline_.surface(ctx, ray, hit);
     for (const auto& term : pipeline_.terms) colour = term->apply(ctx, ray, hit, colour);
     return colour;

@@ -25,6 +25,10 @@ struct Scene {
     int maxDepth = 5;      ///< Recursion limit for secondary rays (chapters 4–7).
     int lightSamples = 0;  ///< Samples per axis for every area light (0: each light's own).
     bool sampleAreaLights = false;  ///< Chapter 6 on: lights with a shape are sampled.
+    /// Adaptive depth control: a secondary ray whose weight in the pixel would fall below this
+    /// is not traced (its light could not change an 8-bit pixel by a whole level). 0 traces
+    /// everything up to maxDepth. Source: POV-Ray's adc_bailout, default 1/255.
+    double minWeight = 1.0 / 256.0;
 };
 
 class Integrator;
@@ -39,6 +43,7 @@ struct ShadeContext {
     RayCounters& counters;
     int depth;
     const MediumStack& media;
+    double weight;  ///< How much this surface's colour counts in the pixel (1 at the camera).
 };
 
 /// The local shading model: chapter 1 has a headlight; chapter 2 replaces it with Phong.
@@ -83,7 +88,7 @@ class Integrator {
     /// Radiance arriving along a ray (reversed): the shaded colour of the first surface, or
     /// the background.
     Colour trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth,
-                 const MediumStack& media = MediumStack{}) const;
+                 const MediumStack& media = MediumStack{}, double weight = 1.0) const;
     /// True when something lies along the ray with t in (0, tMax): the shadow query.
     bool occluded(const Ray& ray, double tMax, RayCounters& counters) const;
     /// The pipeline this integrator runs.

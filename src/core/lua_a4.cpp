@@ -390,6 +390,7 @@ void bindA4(LuaBindings& lua) {
     lua.function("render", luaGuard<grRender>);
     lua.function("option", luaGuard<grOption>);
     lua.option("max_depth", 4, 0, 1000, true);
+    lua.option("min_weight", 4, 0, 1, false);
     lua.nodeMethod("add_child", luaGuard<nodeAddChild>);
     lua.nodeMethod("set_material", luaGuard<nodeSetMaterial>);
     lua.nodeMethod("scale", luaGuard<nodeScale>);

@@ -20,6 +20,8 @@ std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& feature
     auto depth = job.options.find("max_depth");
     if (depth != job.options.end()) scene.maxDepth = static_cast<int>(depth->second);
     if (maxDepth >= 0) scene.maxDepth = maxDepth;
+    auto minWeight = job.options.find("min_weight");
+    if (minWeight != job.options.end()) scene.minWeight = minWeight->second;
     // Each enabled chapter plugs itself in, in chapter order; then the aggregate is built.
     const RenderContext context{scene.instances, job, featureOptions};
     for (const Feature& f : features.on()) {

@@ -19,7 +19,8 @@ struct World {
 };
 
 /// Build the world for a loaded render: take its instances and lights, apply max_depth (the
-/// scene's gr.option, then `maxDepth` when ≥ 0, as --max-depth), let every enabled feature
+/// scene's gr.option, then `maxDepth` when ≥ 0, as --max-depth) and min_weight (gr.option;
+/// adaptive depth control, 0 turns it off), let every enabled feature
 /// install itself, then build the aggregate. `featureOptions` are the chapters' --name=value.
 std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& features,
                                   const std::map<std::string, std::string>& featureOptions = {},

@@ -9,7 +9,10 @@ void bindReflection(LuaBindings& lua);
 
 // [trace-specular]
 Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, const Vec3& side,
-                     RayKind kind, const MediumStack& media) {
+                     RayKind kind, const MediumStack& media, double weight) {
+    // Adaptive depth control: light this faint could not move the pixel by one 8-bit level.
+    const double pathWeight = ctx.weight * weight;
+    if (pathWeight < ctx.scene.minWeight) return Colour(0.0);
     const Vec3 origin = offsetRayOrigin(hit.p, hit.ng, side);
     const LobeSampler* lobe = ctx.integrator.pipeline().lobe.get();
     int samples = lobe && hit.material ? lobe->sampleCount(*hit.material) : 0;
@@ -20,7 +23,7 @@ Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, 
         // One sharp ray.
         ctx.counters.add(kind);
         return ctx.integrator.trace(Ray{origin, axis}, ctx.sampler, ctx.counters, ctx.depth + 1,
-                                    media);
+                                    media, pathWeight);
     }
     // A glossy surface: average the lobe's directions; those that fall below the surface
     // carry nothing.
@@ -30,7 +33,7 @@ Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, 
         if (!lobe->sample(*hit.material, axis, side, ctx.sampler, direction)) continue;
         ctx.counters.add(RayKind::Glossy);
         sum += ctx.integrator.trace(Ray{origin, direction}, ctx.sampler, ctx.counters,
-                                    ctx.depth + 1, media);
+                                    ctx.depth + 1, media, pathWeight);
     }
     return sum / static_cast<double>(samples);
 }
@@ -46,7 +49,7 @@ Colour ReflectionTerm::apply(const ShadeContext& ctx, const Ray& ray, const Hit&
     const Vec3 n = faceForward(hit.ns, -d);
     const Vec3 mirror = glm::normalize(reflect(d, n));
     return colour + r * traceSpecular(ctx, hit, mirror, faceForward(hit.ng, -d),
-                                      RayKind::Reflection, ctx.media);
+                                      RayKind::Reflection, ctx.media, r);
 }
 // [reflection-term]
 

@@ -16,8 +16,10 @@ inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - 2.0 * glm::dot(d,
 /// glossy when the lobe spreads them. Only at depth 0 does a glossy surface average many
 /// lobe samples; deeper, it takes one, so the ray count does not grow like N^depth.
 /// Shared by reflection and refraction.
+/// `weight` is what the caller will multiply the result by; a ray whose weight in the pixel
+/// (ctx.weight · weight) falls below the scene's minWeight is not traced and returns black.
 Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, const Vec3& side,
-                     RayKind kind, const MediumStack& media);
+                     RayKind kind, const MediumStack& media, double weight);
 
 /// Mirror reflection: colour + reflect · L(mirror direction), where `reflect` is the
 /// material's reflectivity. Beyond the scene's maximum depth it adds nothing.

@@ -110,23 +110,25 @@ Colour RefractionTerm::apply(const ShadeContext& ctx, const Ray& ray, const Hit&
     // refracted ray leaves on the far side and carries the stack with this object entered or
     // left. Both go through traceSpecular, so chapter 7 can spread them into lobes.
     const Vec3 incidentSide = faceForward(hit.ng, -d);
-    auto reflected = [&] {
-        return traceSpecular(ctx, hit, s.reflected, incidentSide, RayKind::Reflection, ctx.media);
+    // Each ray's weight in this surface's colour, for adaptive depth control.
+    auto reflected = [&](double weight) {
+        return traceSpecular(ctx, hit, s.reflected, incidentSide, RayKind::Reflection, ctx.media,
+                             weight);
     };
-    auto transmitted = [&] {
+    auto transmitted = [&](double weight) {
         return traceSpecular(ctx, hit, s.transmitted, -incidentSide, RayKind::Refraction,
-                             s.media.beyond);
+                             s.media.beyond, weight);
     };
     Colour split(0.0);
     if (ctx.depth < kFullSplitDepth) {
         // Whitted: follow both rays, weighted by Fresnel.
-        if (s.F > 0.0) split += s.F * reflected();
-        if (s.F < 1.0) split += (1.0 - s.F) * transmitted();
+        if (s.F > 0.0) split += s.F * reflected(transparency * s.F);
+        if (s.F < 1.0) split += (1.0 - s.F) * transmitted(transparency * (1.0 - s.F));
     } else {
         // Deep in the tree: follow one ray, the mirror one with probability F. Its expected
         // value is F·L_r + (1 − F)·L_t, as above, at the cost of one ray instead of two.
         const bool mirror = s.F >= 1.0 || (s.F > 0.0 && ctx.sampler.next1D() < s.F);
-        split = mirror ? reflected() : transmitted();
+        split = mirror ? reflected(transparency) : transmitted(transparency);
     }
     // Seed 001: only the transparent fraction is split; the rest is the opaque surface.
     return (1.0 - transparency) * colour + transparency * split;
