@@ -8,9 +8,12 @@ namespace rb {
 Colour phongBrdfTerm(const Material& m, const Vec3& n, const Vec3& l, const Vec3& v) {
     const double nDotL = glm::dot(n, l);
     if (nDotL <= 0.0) return Colour(0.0);  // light is behind the surface
-    const Vec3 r = 2.0 * nDotL * n - l;    // l mirrored about n
+    const Colour diffuse = m.kd * nDotL;
+    if (m.ks == Colour(0.0)) return diffuse;  // no highlight: skip the costly pow
+    const Vec3 r = 2.0 * nDotL * n - l;       // l mirrored about n
     const double rDotV = std::max(0.0, glm::dot(r, v));
-    return m.kd * nDotL + m.ks * std::pow(rDotV, m.shininess);
+    if (rDotV == 0.0 && m.shininess > 0.0) return diffuse;  // 0^s = 0: skip the pow
+    return diffuse + m.ks * std::pow(rDotV, m.shininess);
 }
 // [phong-term]
 
