@@ -1,115 +1,214 @@
 #!/usr/bin/env bash
-# make bench: raybook against POV-Ray 3.7 on equivalent scenes, in one run, alternating.
+# make bench: raybook against POV-Ray 3.7 on equivalent scenes, and raybook's BVH against
+# Embree 3, on the same machine in one run. A benchmark, not a test: nothing here gates CI.
 #
-# usage: bench.sh BUILD_DIR        (BENCH_RUNS=N sets the runs per scene and thread count, default 5)
+# usage: bench.sh BUILD_DIR
+#   BENCH_RUNS=N   runs per scene and thread count (default 5)
+#   RB_SHARED=DIR  the shared folder (default: ../shared beside the repository)
 #
-# raybook's time is the "render" phase that ./rt --stats prints (after the scene is loaded and
-# the BVH built); POV-Ray's is its own "Trace Time" line, because its process has a fixed idle
-# floor of about 0.69 s (see ../shared/peers/README.md). Runs alternate raybook, POV-Ray,
-# raybook, ... so both see the same machine load. This is a benchmark, not a test: nothing here
-# gates CI. The table also goes to BUILD_DIR/bench/bench.txt.
+# Times: raybook's is the "render" phase that ./rt --stats prints (after the Lua script ran, the
+# meshes loaded and the BVHs built; PNG writing excluded). POV-Ray's is its own "Trace Time"
+# line, because its process has a fixed idle wall-time floor of about 0.69 s (see
+# ../shared/peers/README.md). Setup (raybook's Lua, load and build phases against POV-Ray's
+# Parse Time) is reported apart. Runs alternate raybook, POV-Ray, raybook, ... so both see the
+# same machine load; each time is the median of the runs, with min-max beside it. Ratios are
+# raybook/POV-Ray: below 1 means raybook is faster. Images go to a temporary folder under /tmp.
+# Everything printed also goes to BUILD_DIR/bench/bench.txt.
 set -euo pipefail
 build=$(cd "${1:?usage: bench.sh BUILD_DIR}" && pwd)
-runs=${BENCH_RUNS:-5}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-peers=$root/../shared/peers/povray
-rt=$build/rt_ch7
+shared=${RB_SHARED:-$root/../shared}
+[ -d "$shared/peers/povray" ] || { echo "bench: $shared/peers/povray not found (shared/ must sit beside the repository)"; exit 1; }
+shared=$(cd "$shared" && pwd)
+peers=$shared/peers/povray
+runs=${BENCH_RUNS:-5}
 out=$build/bench
+rt=$(ls "$build"/rt_ch[0-9]* | sort -V | tail -1)  # the newest chapter binary
 mkdir -p "$out"
-[ -d "$peers" ] || { echo "bench: $peers not found (shared/ must sit beside the repository)"; exit 1; }
 command -v povray >/dev/null || { echo "bench: povray is not installed (make bench installs it)"; exit 1; }
+tmp=$(mktemp -d /tmp/raybook-bench.XXXXXX)
+trap 'rm -rf "$tmp"' EXIT
 
-# One line per scene: name | raybook scene | POV-Ray scene | size | target ratio (raybook/POV).
-# Adding a chapter's benchmark scene is one line here.
+# ---- The scenes ----------------------------------------------------------------------------
+# One line per scene; adding a scene is one line. Fields, separated by |:
+#   name | raybook scene (from the repository root) | POV-Ray scene (a bare name is in
+#   ../shared/peers/povray/, a path is from the repository root) | size WxH | target ratio
+#   (raybook/POV-Ray at most this; - for none) | extra ./rt arguments | extra povray arguments
+# Targets: the mesh scene <= 0.2; Whitted scenes (Phong, shadows, mirrors, glass) <= 0.5.
+# The chapter scenes render at 4x their own size so that a render takes long enough to time.
 scenes=(
-  "spheres      | tests/perf/scenes/spheres.lua      | spheres.pov      | 512 | 0.5"
-  "mirror_glass | tests/perf/scenes/mirror_glass.lua | mirror_glass.pov | 512 | 0.5"
-  "soft         | tests/perf/scenes/soft.lua         | soft.pov         | 512 | 0.5"
-  "mesh_L0      | tests/perf/scenes/mesh_L0.lua      | mesh_L0.pov      | 512 | 0.5"
-  "mesh         | tests/perf/scenes/mesh.lua         | mesh.pov         | 512 | 0.2"
+  "spheres      | tests/perf/scenes/spheres.lua      | spheres.pov                           | 512x512  | 0.5 | |"
+  "mirror_glass | tests/perf/scenes/mirror_glass.lua | mirror_glass.pov                      | 512x512  | 0.5 | |"
+  "soft         | tests/perf/scenes/soft.lua         | soft.pov                              | 512x512  | 0.5 | |"
+  "mesh_L0      | tests/perf/scenes/mesh_L0.lua      | mesh_L0.pov                           | 512x512  | 0.5 | |"
+  "mesh         | tests/perf/scenes/mesh.lua         | mesh.pov                              | 512x512  | 0.2 | |"
+  "ch02-phong   | scenes/chapter02-phong.lua         | tests/perf/povray/chapter02-phong.pov | 1024x768 | 0.5 | |"
+  "ch03-mesh    | scenes/chapter03-mesh.lua          | tests/perf/povray/chapter03-mesh.pov  | 1024x640 | 0.5 | |"
+  "empty        | tests/perf/scenes/empty.lua        | empty.pov                             | 512x512  | -   | |"
 )
 
+# ---- Helpers -------------------------------------------------------------------------------
 trim() { local s=$1; s=${s#"${s%%[![:space:]]*}"}; echo "${s%"${s##*[![:space:]]}"}"; }
 
-# raybook's render seconds for one run.
-rb_time() {  # scene threads
-  (cd "$root" && "$rt" --quiet --stats --threads "$2" --output "$out/rb.png" "$1" 2>&1) |
-    sed -n 's/.*render \([0-9.]*\) s.*/\1/p' | head -1
+# One raybook run. Prints: render_s setup_s primary_rays shadow_rays.
+rb_run() {  # scene size threads [extra args...]
+  local scene=$1 size=$2 threads=$3 log
+  shift 3
+  if ! log=$(cd "$root" && "$rt" --quiet --stats --threads "$threads" --size "$size" \
+                 --output "$tmp/rb.png" "$@" "$scene" 2>&1); then
+    echo "bench: $rt failed on $scene:" >&2; echo "$log" >&2; exit 1
+  fi
+  # "time  lua 0.001 s, load 0.000 s, mesh bvh 0.000 s" / "time  build ..., render 0.085 s, ..."
+  # "rays  camera 262144 shadow 350104 reflection ... (total 612248)"
+  awk '$1 == "time" { for (i = 2; i < NF; i++) if ($i ~ /^[0-9.]+$/ && $(i + 1) ~ /^s/) {
+                        if ($(i - 1) == "render") r = $i; else if ($(i - 1) != "write") setup += $i } }
+       $1 == "rays" { for (i = 2; i < NF; i++) if ($(i + 1) ~ /^[0-9]+$/) {
+                        if ($i == "shadow") s += $(i + 1); else if ($i != "(total") p += $(i + 1) } }
+       END { if (r == "") exit 1; printf "%s %.4f %d %d\n", r, setup, p, s }' <<<"$log" ||
+    { echo "bench: no render time in the output of $rt $scene" >&2; exit 1; }
 }
-# POV-Ray's trace seconds for one run.
-pov_time() {  # pov threads size
-  (cd "$peers" && povray +I"$1" +O"$out/pov.png" +W"$3" +H"$3" -D -GR -A +WT"$2" 2>&1) |
-    sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' | head -1
+
+# One POV-Ray run. Prints: trace_s parse_s rays shadow_ray_tests.
+pov_run() {  # scene.pov size threads [extra args...]
+  local pov=$1 size=$2 threads=$3 log
+  shift 3
+  if ! log=$(cd "$tmp" && povray +I"$pov" +O"$tmp/pov.png" +W"${size%x*}" +H"${size#*x}" -D -GR -A \
+                 +WT"$threads" +L"$peers" "$@" 2>&1); then
+    echo "bench: povray failed on $pov:" >&2; echo "$log" | tail -20 >&2; exit 1
+  fi
+  awk '/Trace Time:/ { t = $0; sub(/.*\(/, "", t); sub(/ seconds.*/, "", t) }
+       /Parse Time:/ { p = $0; sub(/.*\(/, "", p); sub(/ seconds.*/, "", p) }
+       $1 == "Rays:" { rays = $2 }
+       /^Shadow Ray Tests:/ { shadow = $4 }
+       END { if (t == "") exit 1; printf "%s %s %d %d\n", t, (p == "" ? 0 : p), rays, shadow }' <<<"$log" ||
+    { echo "bench: no Trace Time in POV-Ray's output for $pov" >&2; exit 1; }
 }
-# median, min and max of the numbers on stdin.
-stats() { sort -g | awk '{v[NR]=$1} END {m = NR%2 ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2; printf "%.4f %.4f %.4f\n", m, v[1], v[NR]}'; }
+
+# Median, min and max of the numbers on stdin: "median min max".
+stats() { sort -g | awk '{ v[NR] = $1 } END { m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
+                                              printf "%.4f %.4f %.4f\n", m, v[1], v[NR] }'; }
+# "median (min-max)" of the numbers on stdin, 3 decimals.
+spread() { stats | awk '{ printf "%.3f (%.3f-%.3f)\n", $1, $2, $3 }'; }
+# a / b with 2 decimals.
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0 ? a / b : 0) }'; }
 
 report=$out/bench.txt
-{
-  echo "raybook vs POV-Ray 3.7, $runs alternating runs each, $(nproc) cores, $(date -u +%F)"
-  echo "raybook: render phase of ./rt --stats; POV-Ray: its Trace Time. Ratio = median/median."
-  echo
-  printf "%-13s %3s  %-26s %-26s %7s %7s %s\n" scene thr "raybook s (min-max)" "POV-Ray trace s (min-max)" ratio target met
-} | tee "$report"
-declare -A rb_median
+: >"$report"
+say() { printf "%s\n" "$*" | tee -a "$report"; }
+progress() { printf "bench: %s\n" "$*" >&2; }
+
+# ---- raybook against POV-Ray ---------------------------------------------------------------
+say "raybook against POV-Ray, $(date -u '+%F %H:%M UTC'), $(nproc) cores ($(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1))"
+say "raybook $(basename "$rt") (git $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')$(git -C "$root" diff --quiet HEAD 2>/dev/null || echo ', modified')), $(povray --version 2>&1 | grep -m1 '^POV-Ray')"
+say "$runs alternating runs per scene and thread count. raybook s = render phase of ./rt --stats;"
+say "POV-Ray s = its own Trace Time. Each: median (min-max). ratio = raybook median / POV-Ray median."
+
+declare -A rbm pvm rbsetup pvparse rbrays pvrays
 for threads in 1 2; do
-  for line in "${scenes[@]}"; do
-    IFS='|' read -r name lua pov size target <<<"$line"
-    name=$(trim "$name"); lua=$(trim "$lua"); pov=$(trim "$pov"); size=$(trim "$size"); target=$(trim "$target")
-    rb=(); pv=()
+  say ""
+  say "$threads thread$([ "$threads" = 1 ] || echo s):"
+  line=$(printf "%-22s %-22s %-26s %6s %7s %s" scene "raybook s (min-max)" "POV-Ray trace s (min-max)" ratio target "")
+  say "$line"
+  for entry in "${scenes[@]}"; do
+    IFS='|' read -r name lua pov size target rbargs povargs <<<"$entry"
+    name=$(trim "$name"); lua=$(trim "$lua"); pov=$(trim "$pov"); size=$(trim "$size")
+    target=$(trim "$target"); rbargs=$(trim "$rbargs"); povargs=$(trim "$povargs")
+    [[ $pov == */* ]] && pov=$root/$pov || pov=$peers/$pov
+    progress "$name $size, $threads thread(s)"
+    rb=(); pv=(); setup=(); parse=()
     for ((i = 0; i < runs; i++)); do
-      rb+=("$(rb_time "$lua" "$threads")")
-      pv+=("$(pov_time "$pov" "$threads" "$size")")
+      # shellcheck disable=SC2086  # the extra arguments are meant to split
+      read -r t s p sh < <(rb_run "$lua" "$size" "$threads" $rbargs)
+      rb+=("$t"); setup+=("$s"); rbrays[$name]="$p $sh"
+      # shellcheck disable=SC2086
+      read -r t s p sh < <(pov_run "$pov" "$size" "$threads" $povargs)
+      pv+=("$t"); parse+=("$s"); pvrays[$name]="$p $sh"
     done
-    read -r rm rlo rhi < <(printf "%s\n" "${rb[@]}" | stats)
-    read -r pm plo phi < <(printf "%s\n" "${pv[@]}" | stats)
-    rb_median[$name.$threads]=$rm
-    ratio=$(awk -v a="$rm" -v b="$pm" 'BEGIN {printf "%.2f", a / b}')
-    met=$(awk -v r="$ratio" -v t="$target" 'BEGIN {print (r <= t) ? "met" : "MISSED"}')
-    printf "%-13s %3s  %-26s %-26s %7s %7s %s\n" "$name" "$threads" \
-      "$rm ($rlo-$rhi)" "$pm ($plo-$phi)" "$ratio" "<= $target" "$met" | tee -a "$report"
+    read -r rm _ < <(printf "%s\n" "${rb[@]}" | stats)
+    read -r pm _ < <(printf "%s\n" "${pv[@]}" | stats)
+    rbm[$name.$threads]=$rm; pvm[$name.$threads]=$pm
+    if [ "$threads" = 1 ]; then
+      read -r "rbsetup[$name]" _ < <(printf "%s\n" "${setup[@]}" | stats)
+      read -r "pvparse[$name]" _ < <(printf "%s\n" "${parse[@]}" | stats)
+    fi
+    r=$(ratio "$rm" "$pm")
+    if [ "$target" = - ]; then verdict="(no target)"; tgt="-"
+    else verdict=$(awk -v r="$r" -v t="$target" 'BEGIN { print (r <= t) ? "met" : "MISSED" }'); tgt="<= $target"; fi
+    line=$(printf "%-22s %-22s %-26s %6s %7s %s" "$name $size" "$(printf "%s\n" "${rb[@]}" | spread)" \
+                  "$(printf "%s\n" "${pv[@]}" | spread)" "$r" "$tgt" "$verdict")
+    say "$line"
   done
 done
 
-{
-  echo
-  echo "raybook's 2-thread speedup (median 1-thread / median 2-thread render; target >= 1.9):"
-  for line in "${scenes[@]}"; do
-    IFS='|' read -r name _ <<<"$line"; name=$(trim "$name")
-    awk -v n="$name" -v a="${rb_median[$name.1]}" -v b="${rb_median[$name.2]}" \
-      'BEGIN {s = a / b; printf "  %-13s %.2fx %s\n", n, s, (s >= 1.9) ? "met" : "MISSED"}'
-  done
-} | tee -a "$report"
-
-# Features a scene does not use cost nothing: the chapter-2 scene rendered by the chapter-3
-# binary (the whole core, no optional chapter) and by the full binary with every feature on,
-# alternating. (The chapter-2 binary itself is slower: it has no BVH yet, chapter 3 adds it.)
-render_s() { (cd "$root" && "$@" --quiet --stats --threads 1 --size 1024x768 scenes/chapter02-phong.lua 2>&1) | sed -n 's/.*render \([0-9.]*\) s.*/\1/p'; }
-c3=(); c7=(); c2=()
-for ((i = 0; i < runs; i++)); do
-  c3+=("$(render_s "$build/rt_ch3" --output "$out/c3.png")")
-  c7+=("$(render_s "$rt" --features=all --output "$out/c7.png")")
-  c2+=("$(render_s "$build/rt_ch2" --output "$out/c2.png")")
+say ""
+say "2-thread speedup = median 1-thread time / median 2-thread time (raybook target >= 1.9):"
+line=$(printf "  %-14s %8s %8s  %s" scene raybook POV-Ray "")
+say "$line"
+for entry in "${scenes[@]}"; do
+  IFS='|' read -r name _ _ _ target _ <<<"$entry"; name=$(trim "$name"); target=$(trim "$target")
+  a=$(ratio "${rbm[$name.1]}" "${rbm[$name.2]}"); b=$(ratio "${pvm[$name.1]}" "${pvm[$name.2]}")
+  if [ "$target" = - ]; then verdict="(no target: too little work)"
+  else verdict=$(awk -v s="$a" 'BEGIN { print (s >= 1.9) ? "met" : "MISSED" }'); fi
+  line=$(printf "  %-14s %7sx %7sx  %s" "$name" "$a" "$b" "$verdict")
+  say "$line"
 done
-read -r m3 lo3 hi3 < <(printf "%s\n" "${c3[@]}" | stats)
-read -r m7 lo7 hi7 < <(printf "%s\n" "${c7[@]}" | stats)
-read -r m2 lo2 hi2 < <(printf "%s\n" "${c2[@]}" | stats)
-{
-  echo
-  echo "Unused features cost nothing: scenes/chapter02-phong.lua at 1024x768, 1 thread (target within 2%):"
-  awk -v a="$m3" -v b="$m7" -v la="$lo3" -v ha="$hi3" -v lb="$lo7" -v hb="$hi7" 'BEGIN {
-    d = (b / a - 1) * 100;
-    printf "  rt_ch3 %.4f s (%.4f-%.4f), rt_ch7 --features=all %.4f s (%.4f-%.4f): %+.1f%% %s\n",
-           a, la, ha, b, lb, hb, d, (d <= 2 && d >= -2) ? "met" : "MISSED" }'
-  echo "  rt_ch2 (no BVH yet) $m2 s ($lo2-$hi2)"
-  cmp -s "$out/c3.png" "$out/c7.png" && cmp -s "$out/c2.png" "$out/c7.png" &&
-    echo "  (the three images are byte-identical)"
-} | tee -a "$report"
 
-# BVH against Embree, when its benchmark program was built.
+say ""
+say "Same work? Rays per image (1 thread): primary = camera + reflected + refracted, shadow = shadow rays;"
+say "setup = raybook's Lua + load + build phases, POV-Ray's Parse Time (medians, s):"
+line=$(printf "  %-14s %21s %21s %21s %21s" scene "primary raybook/POV" "shadow raybook/POV" "setup raybook" "parse POV-Ray")
+say "$line"
+for entry in "${scenes[@]}"; do
+  IFS='|' read -r name _ <<<"$entry"; name=$(trim "$name")
+  read -r rp rs <<<"${rbrays[$name]}"; read -r pp ps <<<"${pvrays[$name]}"
+  line=$(printf "  %-14s %21s %21s %21.3f %21.3f" "$name" "$rp/$pp" "$rs/$ps" "${rbsetup[$name]}" "${pvparse[$name]}")
+  say "$line"
+done
+
+# ---- Features a scene does not use cost nothing --------------------------------------------
+# The chapter-2 scene rendered by the chapter-3 binary (the whole core, no optional chapter) and
+# by the newest binary with every feature on, alternating, 1 thread, at 1600x1200 so a render
+# takes about 0.2 s. A 2% difference needs more runs than the table above: 3 x BENCH_RUNS. The
+# chapter-2 binary is shown too: it is slower, having no BVH yet (chapter 3 adds the BVH over
+# instances).
+progress "unused features"
+feature_runs=$((3 * runs))
+render_s() { (cd "$root" && "$@" --quiet --stats --threads 1 --size 1600x1200 scenes/chapter02-phong.lua 2>&1) |
+               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }'; }
+c3=(); cn=(); c2=()
+for ((i = 0; i < feature_runs; i++)); do
+  c3+=("$(render_s "$build/rt_ch3" --output "$tmp/c3.png")")
+  cn+=("$(render_s "$rt" --features=all --output "$tmp/cn.png")")
+  c2+=("$(render_s "$build/rt_ch2" --output "$tmp/c2.png")")
+done
+read -r m3 _ < <(printf "%s\n" "${c3[@]}" | stats)
+read -r mn _ < <(printf "%s\n" "${cn[@]}" | stats)
+say ""
+say "Unused features cost nothing: scenes/chapter02-phong.lua at 1600x1200, 1 thread, $feature_runs alternating runs,"
+say "render s, ratio of medians (target within 2%):"
+line=$(awk -v a="$m3" -v b="$mn" -v sa="$(printf "%s\n" "${c3[@]}" | spread)" -v sb="$(printf "%s\n" "${cn[@]}" | spread)" \
+         -v n="$(basename "$rt")" 'BEGIN { d = (b / a - 1) * 100
+           printf "  rt_ch3 %s, %s --features=all %s: ratio %.3f (%+.1f%%) %s", sa, n, sb, b / a, d,
+                  (d <= 2 && d >= -2) ? "met" : "MISSED" }')
+say "$line"
+say "  rt_ch2 (no BVH over instances yet) $(printf "%s\n" "${c2[@]}" | spread)"
+if cmp -s "$tmp/c3.png" "$tmp/cn.png" && cmp -s "$tmp/c2.png" "$tmp/cn.png"; then
+  say "  (the three images are byte-identical)"
+else
+  say "  (the images DIFFER)"
+fi
+
+# ---- raybook's BVH against Embree ----------------------------------------------------------
 if [ -x "$build/tests/perf/bvh_vs_embree" ]; then
-  echo | tee -a "$report"
-  (cd "$root" && "$build/tests/perf/bvh_vs_embree" ../shared/assets/bunny_L2.obj) | tee -a "$report"
+  for threads in 1 2; do
+    progress "BVH against Embree, $threads thread(s)"
+    say ""
+    (cd "$root" && "$build/tests/perf/bvh_vs_embree" "$shared/assets/bunny_L2.obj" --threads "$threads" --runs "$runs") |
+      tee -a "$report"
+  done
+else
+  say ""
+  say "(bvh_vs_embree was not built: Embree 3 is not installed; make bench installs libembree-dev)"
 fi
 echo
-echo "table saved to $report"
+echo "bench: table saved to $report"

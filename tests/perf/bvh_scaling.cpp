@@ -1,16 +1,31 @@
-// bvh_scaling: how BVH build time and time per ray grow with the triangle count, against brute
-// force on the small sizes. The meshes are the bunny and its Loop subdivisions (3.7k, 15k, 59k,
-// 235k triangles), made here. A benchmark for `make charts`, not a test.
+// bvh_scaling: how BVH build time, time per ray and memory grow with the triangle count, against
+// brute force on small meshes. Measures one OBJ per process, so the peak resident memory it
+// reports belongs to that mesh alone. `make charts` runs it on the bunny and its Loop
+// subdivisions (tests/perf/subdivide.cpp: 3.7k, 15k, 59k and 235k triangles) and draws
+// docs/charts/ch03-bvh-scaling.svg. A benchmark, not a test.
 //
-// usage: bvh_scaling bunny_L0.obj out.dat
+// usage: bvh_scaling file.obj [--rays N] [--brute-rays N] [--runs N] [--header]
+//   --rays N        incoherent rays through the BVH (default 2^18)
+//   --brute-rays N  the first N of them also through a loop over every triangle (default 0: off)
+//   --runs N        repeats of each timing; the median is reported (default 3)
+//   --header        print the column names first
+// Prints one line: triangles, Mesh construction ms, BVH::build ms, BVH µs/ray, brute-force
+// µs/ray (-1 when off), mesh bytes/triangle, BVH bytes/triangle, peak RSS after loading the OBJ
+// and building the mesh (MiB), peak RSS at the end (MiB, with the rays and the timed rebuilds),
+// brute-force rays whose hit differs from the BVH's, peak RSS after loading the OBJ alone (MiB).
+// One thread.
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
-#include <map>
-#include <set>
+#include <cstdlib>
+#include <limits>
+#include <memory>
+#include <string>
 
+#include "core/error.h"
 #include "core/mesh.h"
 #include "core/obj.h"
 #include "core/triangle.h"
@@ -19,142 +34,154 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// Seconds since t0.
 double seconds(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// [loop-subdivision]
-/// One step of Loop subdivision: every triangle becomes four; new edge points are
-/// 3/8·(a + b) + 1/8·(c + d) (the two ends and the two opposite corners), old vertices move to
-/// (1 − nβ)·v + β·Σ neighbours with β = 3/16 for n = 3 and 3/(8n) otherwise. Boundary edges
-/// take their midpoint and boundary vertices stay put. Source: C. Loop, "Smooth Subdivision
-/// Surfaces Based on Triangles", M.S. thesis, University of Utah, 1987.
-rb::ObjData loopSubdivide(const rb::ObjData& in) {
-    using Edge = std::pair<int, int>;
-    auto key = [](int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; };
-    std::map<Edge, std::vector<int>> opposite;  // edge → corners opposite it
-    for (const auto& t : in.triangles)
-        for (int k = 0; k < 3; ++k)
-            opposite[key(t[k].v, t[(k + 1) % 3].v)].push_back(t[(k + 2) % 3].v);
-
-    rb::ObjData out;
-    // Move the old vertices.
-    std::vector<std::set<int>> neighbours(in.positions.size());
-    std::vector<bool> boundary(in.positions.size(), false);
-    for (const auto& [e, opp] : opposite) {
-        neighbours[e.first].insert(e.second);
-        neighbours[e.second].insert(e.first);
-        if (opp.size() != 2) boundary[e.first] = boundary[e.second] = true;
-    }
-    for (size_t v = 0; v < in.positions.size(); ++v) {
-        const size_t n = neighbours[v].size();
-        if (boundary[v] || n < 3) {
-            out.positions.push_back(in.positions[v]);
-            continue;
-        }
-        const double beta = n == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * n);
-        rb::Vec3 sum(0.0);
-        for (int u : neighbours[v]) sum += in.positions[u];
-        out.positions.push_back((1.0 - n * beta) * in.positions[v] + beta * sum);
-    }
-    // One new point per edge.
-    std::map<Edge, int> edgePoint;
-    for (const auto& [e, opp] : opposite) {
-        const rb::Vec3 a = in.positions[e.first], b = in.positions[e.second];
-        rb::Vec3 p = 0.5 * (a + b);
-        if (opp.size() == 2)
-            p = 0.375 * (a + b) + 0.125 * (in.positions[opp[0]] + in.positions[opp[1]]);
-        edgePoint[e] = static_cast<int>(out.positions.size());
-        out.positions.push_back(p);
-    }
-    // Four triangles for each old one, keeping the winding.
-    for (const auto& t : in.triangles) {
-        const int a = t[0].v, b = t[1].v, c = t[2].v;
-        const int ab = edgePoint[key(a, b)], bc = edgePoint[key(b, c)], ca = edgePoint[key(c, a)];
-        for (const auto& tri : {std::array<int, 3>{a, ab, ca}, std::array<int, 3>{ab, b, bc},
-                                std::array<int, 3>{ca, bc, c}, std::array<int, 3>{ab, bc, ca}})
-            out.triangles.push_back({rb::ObjCorner{tri[0]}, rb::ObjCorner{tri[1]}, rb::ObjCorner{tri[2]}});
-    }
-    return out;
-}
-// [loop-subdivision]
-
-/// Seconds per closest-hit ray through the BVH.
-double bvhTimePerRay(const rb::Mesh& mesh, const std::vector<rbperf::BenchRay>& rays) {
-    size_t hits = 0;
-    const auto t0 = Clock::now();
-    for (const auto& r : rays) {
-        rb::ObjectHit h;
-        hits += mesh.intersect(rb::Ray{r.o, r.d}, r.tMax, h);
-    }
-    const double s = seconds(t0);
-    if (hits == 0) std::fprintf(stderr, "bvh_scaling: no ray hit the mesh\n");
-    return s / rays.size();
+/// The median of v (non-empty).
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/// Seconds per closest-hit ray testing every triangle.
-double bruteTimePerRay(const rb::Mesh& mesh, const std::vector<rbperf::BenchRay>& rays) {
-    size_t hits = 0;
-    const auto t0 = Clock::now();
-    for (const auto& r : rays) {
-        const rb::WatertightRay w(rb::Ray{r.o, r.d});
-        double tMax = r.tMax;
-        bool hit = false;
-        for (size_t i = 0; i < mesh.triangleCount(); ++i) {
-            const auto& v = mesh.triangle(i);
-            rb::TriangleHit th;
-            if (rb::intersectTriangle(w, v[0], v[1], v[2], tMax, th)) {
-                tMax = th.t;
-                hit = true;
-            }
-        }
-        hits += hit;
-    }
-    const double s = seconds(t0);
-    if (hits == 0) std::fprintf(stderr, "bvh_scaling: no ray hit the mesh\n");
-    return s / rays.size();
-}
-
+/// Peak resident set size of this process so far, MiB (getrusage; Linux reports KiB).
 double peakMiB() {
     rusage u{};
     getrusage(RUSAGE_SELF, &u);
     return u.ru_maxrss / 1024.0;
 }
 
+/// Closest-hit distance of every ray through the BVH (infinity on a miss); returns seconds.
+double traceBvh(const rb::Mesh& mesh, const std::vector<rbperf::BenchRay>& rays,
+                std::vector<double>& t) {
+    const auto t0 = Clock::now();
+    for (size_t i = 0; i < rays.size(); ++i) {
+        rb::ObjectHit h;
+        t[i] = mesh.intersect(rb::Ray{rays[i].o, rays[i].d}, rays[i].tMax, h)
+                   ? h.t
+                   : std::numeric_limits<double>::infinity();
+    }
+    return seconds(t0);
+}
+
+/// Closest-hit distance of every ray by testing every triangle (same watertight test); returns
+/// seconds.
+double traceBrute(const rb::Mesh& mesh, const std::vector<rbperf::BenchRay>& rays,
+                  std::vector<double>& t) {
+    const auto t0 = Clock::now();
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const rb::WatertightRay w(rb::Ray{rays[i].o, rays[i].d});
+        double tMax = rays[i].tMax;
+        bool hit = false;
+        for (size_t k = 0; k < mesh.triangleCount(); ++k) {
+            const auto& v = mesh.triangle(k);
+            rb::TriangleHit th;
+            if (rb::intersectTriangle(w, v[0], v[1], v[2], tMax, th)) {
+                tMax = th.t;
+                hit = true;
+            }
+        }
+        t[i] = hit ? tMax : std::numeric_limits<double>::infinity();
+    }
+    return seconds(t0);
+}
+
+/// Command-line settings.
+struct Settings {
+    std::string obj;
+    int rays = 1 << 18;
+    int bruteRays = 0;
+    int runs = 3;
+    bool header = false;
+};
+
+/// Parse the command line (see the file comment).
+Settings parse(int argc, char** argv) {
+    Settings s;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto number = [&]() {
+            if (i + 1 >= argc) throw rb::InputError(a + " needs a number");
+            return std::max(0, std::atoi(argv[++i]));
+        };
+        if (a == "--rays") s.rays = std::max(1, number());
+        else if (a == "--brute-rays") s.bruteRays = number();
+        else if (a == "--runs") s.runs = std::max(1, number());
+        else if (a == "--header") s.header = true;
+        else if (s.obj.empty() && !a.empty() && a[0] != '-') s.obj = a;
+        else throw rb::InputError("unknown argument '" + a + "'");
+    }
+    if (s.obj.empty()) throw rb::InputError("no OBJ file given");
+    return s;
+}
+
+int run(const Settings& s) {
+    // Load and build once, as ./rt does, and take the memory peak there.
+    const rb::ObjData data = rb::loadObj(s.obj);
+    const double peakLoad = peakMiB();
+    auto mesh = std::make_unique<rb::Mesh>(data, s.obj);
+    const double peakBuild = peakMiB();
+
+    // Build times: the whole rb::Mesh (copying triangles into BVH order included), and
+    // BVH::build alone over the triangles' boxes.
+    std::vector<rb::AABB> boxes;
+    boxes.reserve(data.triangles.size());
+    for (const auto& t : data.triangles) {
+        rb::AABB b;
+        for (const auto& c : t) b.extend(data.positions[c.v]);
+        boxes.push_back(b);
+    }
+    std::vector<double> meshMs, bvhMs;
+    for (int i = 0; i < s.runs; ++i) {
+        auto t0 = Clock::now();
+        { const rb::Mesh m(data, s.obj); meshMs.push_back(1e3 * seconds(t0)); }
+        t0 = Clock::now();
+        rb::BVH bvh;
+        bvh.build(boxes);
+        bvhMs.push_back(1e3 * seconds(t0));
+    }
+
+    // Time per ray, incoherent rays (the same generator and seed for every mesh).
+    const auto rays = rbperf::unbounded(rbperf::incoherentRays(mesh->bounds(), s.rays, 11));
+    std::vector<double> tBvh(rays.size()), perRay;
+    for (int i = 0; i < s.runs; ++i) perRay.push_back(traceBvh(*mesh, rays, tBvh) / rays.size());
+    double brute = -1.0;
+    size_t mismatches = 0;
+    if (s.bruteRays > 0) {
+        const std::vector<rbperf::BenchRay> few(rays.begin(),
+                                                rays.begin() + std::min<size_t>(s.bruteRays, rays.size()));
+        std::vector<double> tBrute(few.size()), bruteRay;
+        for (int i = 0; i < s.runs; ++i) bruteRay.push_back(traceBrute(*mesh, few, tBrute) / few.size());
+        brute = median(bruteRay);
+        for (size_t i = 0; i < few.size(); ++i)
+            if (std::isinf(tBrute[i]) != std::isinf(tBvh[i]) ||
+                std::abs(tBrute[i] - tBvh[i]) > 1e-9 * std::max(1.0, std::abs(tBvh[i])))
+                ++mismatches;
+    }
+
+    const double n = static_cast<double>(mesh->triangleCount());
+    if (s.header)
+        std::printf("# triangles mesh_build_ms bvh_build_ms bvh_us_per_ray brute_us_per_ray "
+                    "mesh_B_per_tri bvh_B_per_tri peak_MiB_build peak_MiB_end brute_mismatches "
+                    "peak_MiB_load\n");
+    std::printf("%zu %.3f %.3f %.5f %.3f %.1f %.1f %.1f %.1f %zu %.1f\n", mesh->triangleCount(),
+                median(meshMs), median(bvhMs), 1e6 * median(perRay),
+                brute < 0 ? -1.0 : 1e6 * brute, mesh->triangleBytes() / n,
+                (mesh->bvh().nodeBytes() + mesh->bvh().wideNodeBytes()) / n, peakBuild, peakMiB(),
+                mismatches, peakLoad);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 3) {
-        std::fprintf(stderr, "usage: bvh_scaling bunny_L0.obj out.dat\n");
+    try {
+        return run(parse(argc, argv));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bvh_scaling: %s\n", e.what());
         return 2;
     }
-    rb::ObjData data = rb::loadObj(argv[1]);
-    std::FILE* out = std::fopen(argv[2], "w");
-    if (!out) return 2;
-    std::fprintf(out, "# triangles  build_ms  bvh_us_per_ray  brute_us_per_ray  mesh_B/tri  bvh_B/tri\n");
-    std::printf("%10s %10s %14s %16s %12s %12s %10s\n", "triangles", "build ms", "BVH us/ray",
-                "brute us/ray", "mesh B/tri", "BVH B/tri", "peak MiB");
-    for (int level = 0; level <= 3; ++level) {
-        if (level > 0) data = loopSubdivide(data);
-        const auto t0 = Clock::now();
-        const rb::Mesh mesh(data, "bunny");
-        const double buildMs = 1e3 * seconds(t0);
-        const auto rays = rbperf::incoherentRays(mesh.bounds(), 1 << 18, 11);
-        const double bvh = bvhTimePerRay(mesh, rays);
-        double brute = -1.0;
-        if (level <= 1) {
-            const std::vector<rbperf::BenchRay> few(rays.begin(), rays.begin() + (1 << 11));
-            brute = bruteTimePerRay(mesh, few);
-        }
-        const double n = static_cast<double>(mesh.triangleCount());
-        const double meshB = mesh.triangleBytes() / n;
-        const double bvhB = (mesh.bvh().nodeBytes() + mesh.bvh().wideNodeBytes()) / n;
-        std::fprintf(out, "%zu %.3f %.5f %.5f %.1f %.1f\n", mesh.triangleCount(), buildMs, 1e6 * bvh,
-                     1e6 * brute, meshB, bvhB);
-        std::printf("%10zu %10.1f %14.3f %16s %12.1f %12.1f %10.1f\n", mesh.triangleCount(), buildMs,
-                    1e6 * bvh, brute < 0 ? "-" : std::to_string(1e6 * brute).c_str(), meshB, bvhB,
-                    peakMiB());
-    }
-    std::fclose(out);
-    return 0;
 }

@@ -1,16 +1,28 @@
 // bvh_vs_embree: raybook's mesh BVH against Embree 3 on the same OBJ and the same rays, in one
-// process. Single-ray APIs on both sides (Mesh::intersect / occluded against rtcIntersect1 /
-// rtcOccluded1), one thread, medians of alternating runs. A benchmark, not a test.
+// process. Single-ray APIs on both sides (rb::Mesh::intersect / occluded against rtcIntersect1 /
+// rtcOccluded1), medians of alternating runs, and a per-ray check that both find the same hits.
+// A benchmark for `make bench`, not a test.
 //
-// usage: bvh_vs_embree file.obj [runs]
+// usage: bvh_vs_embree file.obj [--threads N] [--runs N]     (defaults: 1 thread, 5 runs)
+//
+// The ray sets (tests/perf/ray_sets.h): (a) coherent camera rays, 1024x1024, 45° fov, from 1.6
+// bounding radii, looking at the box centre along -z; (b) incoherent rays from a sphere of 2
+// bounding radii towards uniform points in the box, fixed seed, closest hit with no far end;
+// (c) the same rays as any-hit shadow rays ending at their target point. Every ray is rounded to single precision first, so both
+// libraries trace exactly the same rays (Embree takes floats).
 #include <embree3/rtcore.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
+#include "core/error.h"
 #include "core/mesh.h"
 #include "core/obj.h"
 #include "ray_sets.h"
@@ -18,22 +30,59 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr float kMiss = std::numeric_limits<float>::infinity();
+
+/// Seconds since t0.
 double seconds(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
-double median(std::vector<double> v) {
+
+/// Median, minimum and maximum of a set of measurements.
+struct Spread {
+    double median, min, max;
+};
+
+/// The spread of v (non-empty).
+Spread spread(std::vector<double> v) {
     std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+    const size_t n = v.size();
+    return {n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]), v.front(), v.back()};
 }
 
-/// An Embree scene holding one triangle mesh.
+/// "12.34 (12.01-12.80)" with every value scaled by `scale`.
+std::string show(const Spread& s, double scale, const char* format = "%.2f") {
+    char a[32], b[32], c[32], out[128];
+    std::snprintf(a, sizeof a, format, s.median * scale);
+    std::snprintf(b, sizeof b, format, s.min * scale);
+    std::snprintf(c, sizeof c, format, s.max * scale);
+    std::snprintf(out, sizeof out, "%s (%s-%s)", a, b, c);
+    return out;
+}
+
+/// Round a ray set to single precision, so raybook (double) and Embree (float) see the same rays.
+std::vector<rbperf::BenchRay> toFloatPrecision(std::vector<rbperf::BenchRay> rays) {
+    auto f = [](double x) { return static_cast<double>(static_cast<float>(x)); };
+    for (auto& r : rays) {
+        r.o = rb::Vec3(f(r.o.x), f(r.o.y), f(r.o.z));
+        r.d = rb::Vec3(f(r.d.x), f(r.d.y), f(r.d.z));
+        r.tMax = r.tMax >= 1e30 ? std::numeric_limits<double>::infinity() : f(r.tMax);
+    }
+    return rays;
+}
+
+/// An Embree device with a scene holding one triangle mesh (medium build quality).
 struct EmbreeScene {
-    RTCDevice device = rtcNewDevice(nullptr);
+    RTCDevice device = nullptr;
     RTCScene scene = nullptr;
-    explicit EmbreeScene(const rb::ObjData& data) {
+    /// Build from OBJ data with `threads` build threads.
+    EmbreeScene(const rb::ObjData& data, int threads) {
+        const std::string config = "threads=" + std::to_string(threads);
+        device = rtcNewDevice(config.c_str());
+        if (!device) throw std::runtime_error("rtcNewDevice failed");
         scene = rtcNewScene(device);
         rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
         RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_MEDIUM);
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
             geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
             data.positions.size()));
@@ -43,134 +92,223 @@ struct EmbreeScene {
             geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
             data.triangles.size()));
         for (size_t t = 0; t < data.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k) idx[3 * t + k] = static_cast<unsigned>(data.triangles[t][k].v);
+            for (int k = 0; k < 3; ++k)
+                idx[3 * t + k] = static_cast<unsigned>(data.triangles[t][k].v);
         rtcCommitGeometry(geom);
         rtcAttachGeometry(scene, geom);
         rtcReleaseGeometry(geom);
         rtcCommitScene(scene);
     }
+    EmbreeScene(const EmbreeScene&) = delete;
+    EmbreeScene& operator=(const EmbreeScene&) = delete;
     ~EmbreeScene() {
         rtcReleaseScene(scene);
         rtcReleaseDevice(device);
     }
 };
 
-RTCRayHit embreeRay(const rbperf::BenchRay& r) {
-    RTCRayHit rh{};
-    rh.ray.org_x = static_cast<float>(r.o.x);
-    rh.ray.org_y = static_cast<float>(r.o.y);
-    rh.ray.org_z = static_cast<float>(r.o.z);
-    rh.ray.dir_x = static_cast<float>(r.d.x);
-    rh.ray.dir_y = static_cast<float>(r.d.y);
-    rh.ray.dir_z = static_cast<float>(r.d.z);
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = static_cast<float>(std::min(r.tMax, 1e30));
-    rh.ray.mask = 0xFFFFFFFF;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    return rh;
+/// An Embree ray from a benchmark ray.
+RTCRay embreeRay(const rbperf::BenchRay& r) {
+    RTCRay ray{};
+    ray.org_x = static_cast<float>(r.o.x);
+    ray.org_y = static_cast<float>(r.o.y);
+    ray.org_z = static_cast<float>(r.o.z);
+    ray.dir_x = static_cast<float>(r.d.x);
+    ray.dir_y = static_cast<float>(r.d.y);
+    ray.dir_z = static_cast<float>(r.d.z);
+    ray.tnear = 0.0f;
+    ray.tfar = static_cast<float>(r.tMax);
+    ray.mask = 0xFFFFFFFF;
+    return ray;
 }
 
-/// Rays per second of raybook's closest-hit query; counts hits.
-double raybookClosest(const rb::Mesh& mesh, const std::vector<rbperf::BenchRay>& rays, size_t& hits) {
-    hits = 0;
+/// Trace every ray with trace(i) on `threads` OpenMP threads; returns rays per second.
+template <class Trace>
+double traceAll(size_t count, int threads, Trace&& trace) {
     const auto t0 = Clock::now();
-    for (const auto& r : rays) {
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+    for (size_t i = 0; i < count; ++i) trace(i);
+    return count / seconds(t0);
+}
+
+/// One query (closest or any hit) for one library; writes each ray's hit distance (closest;
+/// kMiss when none) or 1/0 (any hit) into out.
+using Query = double (*)(const void* target, const std::vector<rbperf::BenchRay>&, int threads,
+                         std::vector<float>& out);
+
+/// raybook closest hit.
+double raybookClosest(const void* target, const std::vector<rbperf::BenchRay>& rays, int threads,
+                      std::vector<float>& out) {
+    const auto& mesh = *static_cast<const rb::Mesh*>(target);
+    return traceAll(rays.size(), threads, [&](size_t i) {
         rb::ObjectHit h;
-        hits += mesh.intersect(rb::Ray{r.o, r.d}, r.tMax, h);
-    }
-    return rays.size() / seconds(t0);
+        out[i] = mesh.intersect(rb::Ray{rays[i].o, rays[i].d}, rays[i].tMax, h)
+                     ? static_cast<float>(h.t)
+                     : kMiss;
+    });
 }
-double raybookAny(const rb::Mesh& mesh, const std::vector<rbperf::BenchRay>& rays, size_t& hits) {
-    hits = 0;
-    const auto t0 = Clock::now();
-    for (const auto& r : rays) hits += mesh.occluded(rb::Ray{r.o, r.d}, r.tMax * (1 - 1e-9));
-    return rays.size() / seconds(t0);
+
+/// raybook any hit (shadow rays).
+double raybookAny(const void* target, const std::vector<rbperf::BenchRay>& rays, int threads,
+                  std::vector<float>& out) {
+    const auto& mesh = *static_cast<const rb::Mesh*>(target);
+    return traceAll(rays.size(), threads, [&](size_t i) {
+        out[i] = mesh.occluded(rb::Ray{rays[i].o, rays[i].d}, rays[i].tMax) ? 1.0f : 0.0f;
+    });
 }
-double embreeClosest(const EmbreeScene& e, const std::vector<rbperf::BenchRay>& rays, size_t& hits) {
-    hits = 0;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    const auto t0 = Clock::now();
-    for (const auto& r : rays) {
-        RTCRayHit rh = embreeRay(r);
-        rtcIntersect1(e.scene, &context, &rh);
-        hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    }
-    return rays.size() / seconds(t0);
+
+/// Embree closest hit (rtcIntersect1).
+double embreeClosest(const void* target, const std::vector<rbperf::BenchRay>& rays, int threads,
+                     std::vector<float>& out) {
+    const RTCScene scene = static_cast<const EmbreeScene*>(target)->scene;
+    return traceAll(rays.size(), threads, [&](size_t i) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh;
+        rh.ray = embreeRay(rays[i]);
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene, &context, &rh);
+        out[i] = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : kMiss;
+    });
 }
-double embreeAny(const EmbreeScene& e, const std::vector<rbperf::BenchRay>& rays, size_t& hits) {
-    hits = 0;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    const auto t0 = Clock::now();
-    for (const auto& r : rays) {
-        RTCRayHit rh = embreeRay(r);
-        rh.ray.tfar *= 1.0f - 1e-6f;
-        rtcOccluded1(e.scene, &context, &rh.ray);
-        hits += rh.ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+
+/// Embree any hit (rtcOccluded1).
+double embreeAny(const void* target, const std::vector<rbperf::BenchRay>& rays, int threads,
+                 std::vector<float>& out) {
+    const RTCScene scene = static_cast<const EmbreeScene*>(target)->scene;
+    return traceAll(rays.size(), threads, [&](size_t i) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRay ray = embreeRay(rays[i]);
+        rtcOccluded1(scene, &context, &ray);
+        out[i] = ray.tfar < 0.0f ? 1.0f : 0.0f;  // Embree sets tfar to -inf on a hit
+    });
+}
+
+/// How the two libraries' answers differ, ray by ray.
+struct Agreement {
+    size_t hitsA = 0, hitsB = 0;
+    size_t hitMissMismatches = 0;  ///< One library hits, the other misses.
+    size_t distanceMismatches = 0;  ///< Both hit, distances differ by more than 1e-4 relative.
+};
+
+/// Compare per-ray results a (raybook) and b (Embree); any-hit results are 1/0.
+Agreement compare(const std::vector<float>& a, const std::vector<float>& b, bool anyHit) {
+    Agreement g;
+    for (size_t i = 0; i < a.size(); ++i) {
+        const bool ha = anyHit ? a[i] != 0.0f : a[i] != kMiss;
+        const bool hb = anyHit ? b[i] != 0.0f : b[i] != kMiss;
+        g.hitsA += ha;
+        g.hitsB += hb;
+        if (ha != hb) ++g.hitMissMismatches;
+        else if (ha && !anyHit && std::abs(a[i] - b[i]) > 1e-4f * std::max(a[i], b[i]))
+            ++g.distanceMismatches;
     }
-    return rays.size() / seconds(t0);
+    return g;
+}
+
+/// Command-line settings.
+struct Settings {
+    std::string obj;
+    int threads = 1;
+    int runs = 5;
+};
+
+/// Parse `file.obj [--threads N] [--runs N]` (a bare number is the run count).
+Settings parse(int argc, char** argv) {
+    Settings s;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if ((a == "--threads" || a == "--runs") && i + 1 < argc) {
+            const int v = std::max(1, std::atoi(argv[++i]));
+            (a == "--threads" ? s.threads : s.runs) = v;
+        } else if (!a.empty() && std::isdigit(static_cast<unsigned char>(a[0])) && !s.obj.empty()) {
+            s.runs = std::max(1, std::atoi(a.c_str()));
+        } else if (s.obj.empty() && a[0] != '-') {
+            s.obj = a;
+        } else {
+            throw rb::InputError("unknown argument '" + a + "'");
+        }
+    }
+    if (s.obj.empty()) throw rb::InputError("no OBJ file given");
+    return s;
+}
+
+int run(const Settings& s) {
+    const rb::ObjData data = rb::loadObj(s.obj);
+
+    // Build times, alternating raybook and Embree.
+    std::vector<double> rbBuild, emBuild;
+    std::unique_ptr<rb::Mesh> mesh;
+    std::unique_ptr<EmbreeScene> embree;
+    for (int i = 0; i < s.runs; ++i) {
+        mesh.reset();
+        auto t0 = Clock::now();
+        mesh = std::make_unique<rb::Mesh>(data, s.obj);
+        rbBuild.push_back(seconds(t0));
+        embree.reset();
+        t0 = Clock::now();
+        embree = std::make_unique<EmbreeScene>(data, s.threads);
+        emBuild.push_back(seconds(t0));
+    }
+    const Spread rbB = spread(rbBuild), emB = spread(emBuild);
+
+    const rb::AABB box = mesh->bounds();
+    const auto camera = toFloatPrecision(rbperf::cameraRays(box, 1024));
+    const auto shadow = toFloatPrecision(rbperf::incoherentRays(box, 1 << 20, 7));
+    const auto incoherent = rbperf::unbounded(shadow);
+
+    std::printf("BVH against Embree %d.%d.%d on %s (%zu triangles), %d thread%s, %d alternating "
+                "runs: median (min-max)\n",
+                RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, s.obj.c_str(),
+                data.triangles.size(), s.threads, s.threads == 1 ? "" : "s", s.runs);
+    std::printf("  build ms: raybook %s (rb::Mesh: binned SAH in double, 1 thread), Embree %s "
+                "(medium quality, %d thread%s); raybook/Embree %.2f\n",
+                show(rbB, 1e3, "%.1f").c_str(), show(emB, 1e3, "%.1f").c_str(), s.threads,
+                s.threads == 1 ? "" : "s", rbB.median / emB.median);
+    std::printf("  %-24s %-24s %-24s %-8s %s\n", "rays", "raybook Mrays/s", "Embree Mrays/s",
+                "rb/Embree", "agreement (hits raybook/Embree, hit-miss mismatches)");
+    struct Set {
+        const char* name;
+        const std::vector<rbperf::BenchRay>* rays;
+        bool anyHit;
+    } sets[] = {{"coherent camera 1024^2", &camera, false},
+                {"incoherent 2^20", &incoherent, false},
+                {"shadow (any hit) 2^20", &shadow, true}};
+    for (const Set& set : sets) {
+        const Query rbQuery = set.anyHit ? raybookAny : raybookClosest;
+        const Query emQuery = set.anyHit ? embreeAny : embreeClosest;
+        std::vector<float> outA(set.rays->size()), outB(set.rays->size());
+        std::vector<double> a, b;
+        for (int i = 0; i < s.runs; ++i) {
+            a.push_back(rbQuery(mesh.get(), *set.rays, s.threads, outA));
+            b.push_back(emQuery(embree.get(), *set.rays, s.threads, outB));
+        }
+        const Spread sa = spread(a), sb = spread(b);
+        const Agreement g = compare(outA, outB, set.anyHit);
+        char agreement[160];
+        std::snprintf(agreement, sizeof agreement, "%zu/%zu, %zu mismatch%s (%.1f ppm)", g.hitsA,
+                      g.hitsB, g.hitMissMismatches, g.hitMissMismatches == 1 ? "" : "es",
+                      1e6 * g.hitMissMismatches / set.rays->size());
+        std::printf("  %-24s %-24s %-24s %-8.2f %s", set.name, show(sa, 1e-6).c_str(),
+                    show(sb, 1e-6).c_str(), sa.median / sb.median, agreement);
+        if (!set.anyHit) std::printf(", %zu distance%s off by >1e-4", g.distanceMismatches,
+                                     g.distanceMismatches == 1 ? "" : "s");
+        std::printf("\n");
+    }
+    std::printf("  target: raybook/Embree >= 0.5 on coherent and incoherent rays\n");
+    return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: bvh_vs_embree file.obj [runs]\n");
+    try {
+        return run(parse(argc, argv));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bvh_vs_embree: %s\nusage: bvh_vs_embree file.obj [--threads N] "
+                             "[--runs N]\n", e.what());
         return 2;
     }
-    const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
-    const rb::ObjData data = rb::loadObj(argv[1]);
-
-    // Build times, alternating, medians.
-    std::vector<double> rbBuild, emBuild;
-    std::unique_ptr<rb::Mesh> mesh;
-    std::unique_ptr<EmbreeScene> embree;
-    for (int i = 0; i < runs; ++i) {
-        auto t0 = Clock::now();
-        mesh = std::make_unique<rb::Mesh>(data, argv[1]);
-        rbBuild.push_back(seconds(t0));
-        t0 = Clock::now();
-        embree = std::make_unique<EmbreeScene>(data);
-        emBuild.push_back(seconds(t0));
-    }
-    const rb::AABB box = mesh->bounds();
-    const auto camera = rbperf::cameraRays(box, 1024);
-    const auto incoherent = rbperf::incoherentRays(box, 1 << 20, 7);
-
-    std::printf("BVH against Embree %d.%d.%d on %s (%zu triangles), 1 thread, median of %d runs\n",
-                RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, argv[1],
-                data.triangles.size(), runs);
-    std::printf("  build: raybook %.1f ms (SAH, double), Embree %.1f ms (medium quality)\n",
-                1e3 * median(rbBuild), 1e3 * median(emBuild));
-    std::printf("  %-22s %-24s %-24s %6s %s\n", "rays", "raybook Mrays/s (min-max)",
-                "Embree Mrays/s (min-max)", "ratio", "hit agreement");
-    struct Set {
-        const char* name;
-        const std::vector<rbperf::BenchRay>* rays;
-        bool shadow;
-    } sets[] = {{"coherent 1024^2 camera", &camera, false},
-                {"incoherent 2^20", &incoherent, false},
-                {"any-hit (shadow) 2^20", &incoherent, true}};
-    for (const Set& set : sets) {
-        std::vector<double> a, b;
-        size_t hitsA = 0, hitsB = 0;
-        for (int i = 0; i < runs; ++i) {
-            a.push_back(set.shadow ? raybookAny(*mesh, *set.rays, hitsA)
-                                   : raybookClosest(*mesh, *set.rays, hitsA));
-            b.push_back(set.shadow ? embreeAny(*embree, *set.rays, hitsB)
-                                   : embreeClosest(*embree, *set.rays, hitsB));
-        }
-        const double ma = median(a) / 1e6, mb = median(b) / 1e6;
-        char ra[64], rb2[64];
-        std::snprintf(ra, sizeof ra, "%.2f (%.2f-%.2f)", ma, *std::min_element(a.begin(), a.end()) / 1e6,
-                      *std::max_element(a.begin(), a.end()) / 1e6);
-        std::snprintf(rb2, sizeof rb2, "%.2f (%.2f-%.2f)", mb, *std::min_element(b.begin(), b.end()) / 1e6,
-                      *std::max_element(b.begin(), b.end()) / 1e6);
-        std::printf("  %-22s %-24s %-24s %6.2f hits %zu vs %zu (%+.4f%%)\n", set.name, ra, rb2,
-                    ma / mb, hitsA, hitsB,
-                    100.0 * (double(hitsA) - double(hitsB)) / double(set.rays->size()));
-    }
-    std::printf("  target: ratio >= 0.5 on coherent and incoherent rays\n");
-    return 0;
 }

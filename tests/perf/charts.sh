@@ -2,8 +2,8 @@
 # make charts: every chapter's speed-accuracy charts into docs/charts/ (SVG and PNG, gnuplot).
 #
 # usage: charts.sh BUILD_DIR
-# Chapter 3's BVH scaling chart is drawn here; chapters with their own chart programs keep a
-# tests/perf/chNN/charts.sh, which this script runs in order.
+# Chapter 3's BVH scaling chart is drawn here (docs/charts/ch03-bvh-scaling.gp); chapters with
+# their own chart programs keep a tests/perf/chNN/charts.sh, which this script runs in order.
 set -euo pipefail
 build=$(cd "${1:?usage: charts.sh BUILD_DIR}" && pwd)
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -11,29 +11,47 @@ charts=$root/docs/charts
 mkdir -p "$charts" "$build/bench"
 command -v gnuplot >/dev/null || { echo "charts: gnuplot is not installed (make charts installs it)"; exit 1; }
 
-# Chapter 3: time per ray and build time as the triangle count grows (bunny and its Loop
-# subdivisions), BVH against brute force.
-data=$build/bench/ch03-scaling.dat
-"$build/tests/perf/bvh_scaling" "$root/scenes/assets/bunny.obj" "$data" | tee "$charts/ch03-scaling.txt"
-for term in "svg size 760,420 font 'sans,11'" "pngcairo size 760,420 font 'sans,10'"; do
-  ext=${term%% *}; ext=${ext/pngcairo/png}
-  gnuplot <<GP
-set terminal $term
-set output "$charts/ch03-bvh-scaling.$ext"
-set title "Time per ray against triangle count (bunny and its Loop subdivisions, incoherent rays)"
-set logscale xy
-set xlabel "triangles"
-set ylabel "microseconds per ray"
-set key top left
-set grid
-# A c·log2(n) guide through the BVH's first point.
-first_n = real(system("awk 'NR==2 {print \$1}' $data"))
-first_t = real(system("awk 'NR==2 {print \$3}' $data"))
-guide(n) = first_t * log(n) / log(first_n)
-plot "$data" using 1:3 with linespoints lw 2 pt 7 title "BVH", \
-     "$data" using 1:(\$4 > 0 ? \$4 : 1/0) with linespoints lw 2 pt 5 title "brute force (every triangle)", \
-     [3000:300000] guide(x) with lines dt 2 lc rgb "gray40" title "c · log n"
-GP
+# Chapter 3: time per ray, build time and memory as the triangle count grows, BVH against brute
+# force. The bunny (scenes/assets/bunny.obj = bunny_L0, 3,674 triangles) is Loop-subdivided into
+# BUILD/bench/ (15k, 59k, 235k triangles; generated here, never committed), then each size is
+# measured in its own process, so its peak memory is its own. Brute force runs on the two small
+# sizes only, with fewer rays.
+bench=$build/bench
+perf=$build/tests/perf
+l0=$root/scenes/assets/bunny.obj
+"$perf/subdivide" "$l0" "$bench/bunny_L1.obj" 1
+"$perf/subdivide" "$l0" "$bench/bunny_L2.obj" 2
+"$perf/subdivide" "$bench/bunny_L2.obj" "$bench/bunny_L3.obj" 1
+data=$bench/ch03-scaling.dat
+{
+  "$perf/bvh_scaling" --header --brute-rays 2048 "$l0"
+  "$perf/bvh_scaling" --brute-rays 512 "$bench/bunny_L1.obj"
+  "$perf/bvh_scaling" "$bench/bunny_L2.obj"
+  "$perf/bvh_scaling" "$bench/bunny_L3.obj"
+} >"$data"
+awk 'BEGIN {
+       printf "BVH scaling: the bunny and its Loop subdivisions, 2^18 incoherent rays (2048 and 512 for\n"
+       printf "brute force), 1 thread, medians of 3 runs. Peak RSS is the whole process after loading the\n"
+       printf "OBJ and building the mesh (getrusage), one process per size.\n\n"
+       printf "%10s %9s %9s %10s %12s %10s %9s %9s %9s\n", "triangles", "mesh ms", "BVH ms",
+              "BVH us/ray", "brute us/ray", "mesh B/tri", "BVH B/tri", "mesh+BVH", "peak RSS"
+     }
+     /^#/ { next }
+     { mb = $1 * ($6 + $7) / 1048576
+       printf "%10d %9.1f %9.1f %10.3f %12s %10.1f %9.1f %6.1f MiB %5.1f MiB\n", $1, $2, $3, $4,
+              ($5 < 0 ? "-" : sprintf("%.1f", $5)), $6, $7, mb, $8
+       n = $1; peak = $8; load = $11; mbLast = mb; if ($10 > 0) bad += $10 }
+     END {
+       mb = peak * 1.048576
+       printf "\n%d triangles: mesh + BVH %.1f MiB; peak RSS %.1f MiB = %.1f MB (%.1f MiB after loading the\n",
+              n, mbLast, peak, mb, load
+       printf "OBJ, before building the mesh): %s\n",
+              (mb < 80 ? "well under 100 MB" : (mb < 100 ? "under 100 MB, not by much" : "NOT under 100 MB"))
+       if (bad) printf "brute force and BVH disagree on %d rays\n", bad
+       else printf "brute force and BVH agree on every ray\n"
+     }' "$data" | tee "$charts/ch03-scaling.txt"
+for ext in svg png; do
+  gnuplot -e "data='$data'; out='$charts/ch03-bvh-scaling.$ext'" "$charts/ch03-bvh-scaling.gp"
 done
 echo "charts: wrote $charts/ch03-bvh-scaling.svg and .png"
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "core/aabb.h"
@@ -36,8 +37,8 @@ inline std::vector<BenchRay> cameraRays(const rb::AABB& box, int size) {
 }
 
 /// Incoherent rays: origins uniform on a sphere of 2 bounding radii around the centre, each
-/// aimed at a uniform random point in the box. tMax is the distance to that point, so the same
-/// set doubles as shadow rays (any hit before the target).
+/// aimed at a uniform random point in the box. tMax is the distance to that point, so the set
+/// serves as shadow rays (any hit before the target); unbounded() makes closest-hit rays of it.
 inline std::vector<BenchRay> incoherentRays(const rb::AABB& box, int count, std::uint64_t seed) {
     const rb::Vec3 c = box.centre();
     const double radius = 0.5 * glm::length(box.hi - box.lo);
@@ -53,6 +54,13 @@ inline std::vector<BenchRay> incoherentRays(const rb::AABB& box, int count, std:
         const double dist = glm::length(target - o);
         rays.push_back({o, (target - o) / dist, dist});
     }
+    return rays;
+}
+
+/// The same rays with no far end (tMax = infinity): closest-hit rays that go on past their
+/// target point.
+inline std::vector<BenchRay> unbounded(std::vector<BenchRay> rays) {
+    for (auto& r : rays) r.tMax = std::numeric_limits<double>::infinity();
     return rays;
 }
 
