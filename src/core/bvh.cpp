@@ -184,19 +184,23 @@ std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, i
 
 }  // namespace
 
-void BVH::build(const std::vector<AABB>& primitiveBounds, const BVHBuildOptions& options) {
+void BVH::build(std::vector<AABB> primitiveBounds, const BVHBuildOptions& options) {
     nodes_.clear();
     order_.clear();
     if (primitiveBounds.empty()) return;
-    nodes_.reserve(2 * primitiveBounds.size());
+    const size_t n = primitiveBounds.size();
     BuildState s{{}, nodes_, options};
-    s.refs.reserve(primitiveBounds.size());
-    for (std::uint32_t i = 0; i < primitiveBounds.size(); ++i)
+    s.refs.reserve(n);
+    for (std::uint32_t i = 0; i < n; ++i)
         s.refs.push_back({primitiveBounds[i], primitiveBounds[i].centre(), i});
+    // Memory is the limit for big meshes: drop each temporary as soon as it is used up.
+    std::vector<AABB>().swap(primitiveBounds);
+    nodes_.reserve(2 * n);
     buildNode(s, 0, static_cast<std::uint32_t>(s.refs.size()), 0);
     depth_ = s.depth;
     order_.reserve(s.refs.size());
     for (const PrimRef& r : s.refs) order_.push_back(r.index);
+    std::vector<PrimRef>().swap(s.refs);
     nodes_.shrink_to_fit();
     buildWide();
 }

@@ -39,7 +39,8 @@ class BVH {
 
     /// Build over the primitives' bounds. primitiveOrder() then lists the primitive indices in
     /// the order leaves refer to them.
-    void build(const std::vector<AABB>& primitiveBounds, const BVHBuildOptions& options = {});
+    /// The bounds are taken by value: pass them with std::move to free them during the build.
+    void build(std::vector<AABB> primitiveBounds, const BVHBuildOptions& options = {});
     const std::vector<BVHNode>& nodes() const { return nodes_; }
     const std::vector<std::uint32_t>& primitiveOrder() const { return order_; }
     /// Bytes of node storage.

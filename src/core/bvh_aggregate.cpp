@@ -39,7 +39,7 @@ bool BVHAggregate::occluded(const Ray& ray, double tMax) const {
 
 std::string BVHAggregate::statistics() const {
     // Count each mesh once, however many instances share it.
-    size_t nodes = bvh_.nodes().size(), bytes = bvh_.nodeBytes();
+    size_t nodes = bvh_.nodes().size(), bytes = bvh_.nodeBytes() + bvh_.wideNodeBytes();
     size_t triangles = 0, triangleBytes = 0, meshBvhBytes = 0;
     std::vector<const Mesh*> seen;
     for (const Instance* i : ordered_)
@@ -47,7 +47,7 @@ std::string BVHAggregate::statistics() const {
             if (std::find(seen.begin(), seen.end(), mesh) == seen.end()) {
                 seen.push_back(mesh);
                 nodes += mesh->bvh().nodes().size();
-                meshBvhBytes += mesh->bvh().nodeBytes();
+                meshBvhBytes += mesh->bvh().nodeBytes() + mesh->bvh().wideNodeBytes();
                 triangles += mesh->triangleCount();
                 triangleBytes += mesh->triangleBytes();
             }

@@ -26,20 +26,21 @@ Mesh::Mesh(const ObjData& data, const std::string& name) {
         keptSource.push_back(static_cast<std::uint32_t>(i));
     }
     if (kept.empty()) throw InputError(name + ": the mesh has no triangle with non-zero area");
-    // Build the BVH, then store triangles in the order its leaves visit them.
-    bvh_.build(boxes);
+    // Build the BVH (the boxes are freed inside), then store triangles in the order its leaves
+    // visit them.
+    bvh_.build(std::move(boxes));
+    bounds_ = bvh_.nodes().front().bounds;
     const auto& order = bvh_.primitiveOrder();
     triangles_.reserve(order.size());
+    source_.reserve(order.size());
     for (std::uint32_t p : order) {
         triangles_.push_back(kept[p]);
         source_.push_back(keptSource[p]);
-        corners_.push_back(data.triangles[keptSource[p]]);
-        bounds_.extend(boxes[p]);
     }
 }
 
 size_t Mesh::triangleBytes() const {
-    return triangles_.size() * (sizeof(triangles_[0]) + sizeof(source_[0]) + sizeof(corners_[0]));
+    return triangles_.size() * (sizeof(triangles_[0]) + sizeof(source_[0]));
 }
 
 // [mesh-intersect]

@@ -35,13 +35,10 @@ class Mesh final : public Shape {
     const std::array<Vec3, 3>& triangle(size_t i) const { return triangles_[i]; }
     /// The OBJ triangle index of slot i.
     std::uint32_t sourceIndex(size_t i) const { return source_[i]; }
-    /// The OBJ corners of slot i (for normals and texture coordinates in later chapters).
-    const std::array<ObjCorner, 3>& corners(size_t i) const { return corners_[i]; }
 
   private:
     std::vector<std::array<Vec3, 3>> triangles_;     ///< Vertices, BVH order.
     std::vector<std::uint32_t> source_;              ///< OBJ triangle index per slot.
-    std::vector<std::array<ObjCorner, 3>> corners_;  ///< OBJ corners per slot.
     BVH bvh_;
     AABB bounds_;
     size_t dropped_ = 0;
