@@ -300,32 +300,30 @@ int sandboxLoad(lua_State* L) {
     return 1;
 }
 
-/// A node or material method nobody defined: say which chapter provides it.
-int unknownMethod(lua_State* L) {
+/// Raise the error for a name nobody defined (argument 2 of an __index): which chapter provides
+/// it, or that it is unknown. `what` names it in the message ("gr.mesh", "method 'csg'").
+int unknownName(lua_State* L, const char* prefix, const char* suffix, const char* unknown) {
     const char* name = lua_tostring(L, 2);
-    if (!name) return luaL_error(L, "methods are named by strings");
+    if (!name) return luaL_error(L, "%sindex must be a string", prefix);
     std::string title;
     const int chapter = missingChapter(L, name, title);
     if (chapter)
         return luaL_error(L,
-                          "method '%s' needs chapter %d (%s), which this build does not have; "
-                          "build it with make chapter%d or later",
-                          name, chapter, title.c_str(), chapter);
-    return luaL_error(L, "'%s' is not a method of raybook nodes or materials", name);
+                          "%s%s%s needs chapter %d (%s), which this build does not have; build "
+                          "it with make chapter%d or later",
+                          prefix, name, suffix, chapter, title.c_str(), chapter);
+    return luaL_error(L, unknown, name);
 }
 
-/// gr.<name> for a name nobody defined: say which chapter provides it.
+/// A node or material method nobody defined.
+int unknownMethod(lua_State* L) {
+    return unknownName(L, "method '", "'", "'%s' is not a method of raybook nodes or materials");
+}
+
+/// gr.<name> for a name nobody defined.
 int unknownGrCall(lua_State* L) {
-    const char* name = lua_tostring(L, 2);
-    if (!name) return luaL_error(L, "gr: index must be a string");
-    std::string title;
-    const int chapter = missingChapter(L, name, title);
-    if (chapter)
-        return luaL_error(L,
-                          "gr.%s needs chapter %d (%s), which this build does not have; build "
-                          "it with make chapter%d or later",
-                          name, chapter, title.c_str(), chapter);
-    return luaL_error(L, "gr.%s is not a raybook call (see --help and the reference page)", name);
+    return unknownName(L, "gr.", "",
+                       "gr.%s is not a raybook call (see --help and the reference page)");
 }
 
 /// Open only base, math, string and table (all libraries with --unsafe-lua).
