@@ -18,7 +18,7 @@
 #include "core/box.h"
 #include "core/error.h"
 #include "core/light.h"
-#include "core/phong.h"
+#include "phong/phong.h"
 #include "core/render.h"
 #include "core/sphere.h"
 #include "test_helpers.h"

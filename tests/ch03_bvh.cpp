@@ -20,13 +20,13 @@
 
 #include "core/aggregate.h"
 #include "core/box.h"
-#include "core/bvh.h"
-#include "core/bvh_aggregate.h"
+#include "bvh/bvh.h"
+#include "bvh/bvh_aggregate.h"
 #include "core/error.h"
-#include "core/mesh.h"
-#include "core/obj.h"
+#include "bvh/mesh.h"
+#include "bvh/obj.h"
 #include "core/sphere.h"
-#include "core/triangle.h"
+#include "bvh/triangle.h"
 #include "test_helpers.h"
 
 using rb::Vec3;

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/obj.h"
+#include "bvh/obj.h"
 
 using Catch::Contains;
 using Catch::StartsWith;

@@ -30,7 +30,7 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "core/lua_scene.h"
-#include "core/mesh.h"
+#include "bvh/mesh.h"
 #include "core/render.h"
 #include "core/world.h"
 #include "reflection/reflection.h"

@@ -34,7 +34,7 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "core/lua_scene.h"
-#include "core/phong.h"
+#include "phong/phong.h"
 #include "core/render.h"
 #include "core/world.h"
 #include "reflection/reflection.h"

@@ -30,6 +30,8 @@
 #include <vector>
 
 #include "core/chapter_features.h"
+#include "phong/phong.h"
+#include "bvh/bvh_aggregate.h"
 #include "core/world.h"
 #include "soft_shadows/soft_shadows.h"
 #include "test_helpers.h"
@@ -54,7 +56,7 @@ constexpr double kPi = glm::pi<double>();
 
 /// Chapters 1–3 and 6, switched on by `spec`.
 rb::FeatureSet features(const std::string& spec = "all") {
-    return rb::FeatureSet({rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature(),
+    return rb::FeatureSet({rb::chapter01Feature(), rb::phongFeature(), rb::bvhFeature(),
                            rb::softShadowsFeature()},
                           spec);
 }

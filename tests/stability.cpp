@@ -18,12 +18,12 @@
 
 #include "core/aggregate.h"
 #include "core/box.h"
-#include "core/bvh_aggregate.h"
+#include "bvh/bvh_aggregate.h"
 #include "core/error.h"
-#include "core/phong.h"
+#include "phong/phong.h"
 #include "core/render.h"
 #include "core/sphere.h"
-#include "core/triangle.h"
+#include "bvh/triangle.h"
 #include "test_helpers.h"
 
 using Catch::Contains;

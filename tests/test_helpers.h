@@ -30,13 +30,15 @@
 
 #include "core/box.h"
 #include "core/chapter_features.h"
+#include "phong/phong.h"
+#include "bvh/bvh_aggregate.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/instance.h"
 #include "core/integrator.h"
 #include "core/lua_scene.h"
-#include "core/mesh.h"
-#include "core/obj.h"
+#include "bvh/mesh.h"
+#include "bvh/obj.h"
 #include "core/render.h"
 #include "core/render_context.h"
 #include "core/sphere.h"
@@ -86,8 +88,8 @@ class Rng {
 
 /// Chapters 1 to `last`, switched on by `spec` as --features does: what `rt_ch<last>` runs with.
 inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
-    const std::vector<rb::Feature> all = {rb::chapter01Feature(),  rb::chapter02Feature(),
-                                          rb::chapter03Feature(),  rb::reflectionFeature(),
+    const std::vector<rb::Feature> all = {rb::chapter01Feature(),  rb::phongFeature(),
+                                          rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
                                           rb::glossyFeature()};
     return rb::FeatureSet(std::vector<rb::Feature>(all.begin(), all.begin() + last), spec);

@@ -1,6 +1,6 @@
 #include "reflection/reflection.h"
 
-#include "core/phong.h"
+#include "phong/phong.h"
 #include "core/render_context.h"
 
 namespace rb {

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "core/phong.h"
+#include "phong/phong.h"
 #include "core/render_context.h"
 #include "reflection/reflection.h"
 

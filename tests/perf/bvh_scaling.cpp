@@ -26,9 +26,9 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/mesh.h"
-#include "core/obj.h"
-#include "core/triangle.h"
+#include "bvh/mesh.h"
+#include "bvh/obj.h"
+#include "bvh/triangle.h"
 #include "ray_sets.h"
 
 namespace {

@@ -23,8 +23,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/mesh.h"
-#include "core/obj.h"
+#include "bvh/mesh.h"
+#include "bvh/obj.h"
 #include "ray_sets.h"
 
 namespace {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/obj.h"
+#include "bvh/obj.h"
 
 namespace {
 

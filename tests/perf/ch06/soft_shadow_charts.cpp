@@ -29,6 +29,8 @@
 
 #include "chart_helpers.h"
 #include "core/chapter_features.h"
+#include "phong/phong.h"
+#include "bvh/bvh_aggregate.h"
 #include "core/image.h"
 #include "soft_shadows/soft_shadows.h"
 
@@ -44,8 +46,8 @@ constexpr int kWidth = 128, kHeight = 96;
 std::unique_ptr<rb::World> buildWorld(const std::string& path,
                                       const std::map<std::string, std::string>& cli,
                                       const std::string& spec = "all") {
-    const rb::FeatureSet features({rb::chapter01Feature(), rb::chapter02Feature(),
-                                   rb::chapter03Feature(), rb::softShadowsFeature()},
+    const rb::FeatureSet features({rb::chapter01Feature(), rb::phongFeature(),
+                                   rb::bvhFeature(), rb::softShadowsFeature()},
                                   spec);
     return rbchart::loadWorld(path, features, cli);
 }

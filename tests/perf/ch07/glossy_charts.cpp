@@ -26,6 +26,8 @@
 
 #include "chart_helpers.h"
 #include "core/chapter_features.h"
+#include "phong/phong.h"
+#include "bvh/bvh_aggregate.h"
 #include "core/image.h"
 #include "glossy/glossy.h"
 #include "glossy/lobe_samplers.h"
@@ -42,7 +44,7 @@ constexpr double kPi = 3.14159265358979323846;
 std::unique_ptr<rb::World> buildWorld(const std::string& path, const std::string& sampler,
                                       int samples) {
     const rb::FeatureSet features(
-        {rb::chapter01Feature(), rb::chapter02Feature(), rb::chapter03Feature(),
+        {rb::chapter01Feature(), rb::phongFeature(), rb::bvhFeature(),
          rb::reflectionFeature(), rb::refractionFeature(), rb::softShadowsFeature(),
          rb::glossyFeature()},
         "all");

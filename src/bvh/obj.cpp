@@ -2,7 +2,7 @@
 /// The Wavefront OBJ reader. One pass over the lines: split each into tokens, then dispatch on the
 /// statement keyword. Numbers are read with std::from_chars, which is locale-independent and fast
 /// enough for meshes of a few hundred thousand triangles.
-#include "core/obj.h"
+#include "bvh/obj.h"
 
 #include <cerrno>
 #include <charconv>

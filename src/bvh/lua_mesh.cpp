@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "core/lua_scene.h"
-#include "core/mesh.h"
+#include "bvh/mesh.h"
 
 namespace rb {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "core/bvh.h"
-#include "core/obj.h"
+#include "bvh/bvh.h"
+#include "bvh/obj.h"
 #include "core/shape.h"
 
 namespace rb {

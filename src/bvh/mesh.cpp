@@ -1,7 +1,7 @@
-#include "core/mesh.h"
+#include "bvh/mesh.h"
 
 #include "core/error.h"
-#include "core/triangle.h"
+#include "bvh/triangle.h"
 
 namespace rb {
 

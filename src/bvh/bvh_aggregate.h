@@ -3,9 +3,13 @@
 #pragma once
 
 #include "core/aggregate.h"
-#include "core/bvh.h"
+#include "bvh/bvh.h"
+#include "core/feature.h"
 
 namespace rb {
+
+/// Chapter 3: triangle meshes and the two-level BVH.
+Feature bvhFeature();
 
 /// A BVH over instances' world bounds; each instance then uses its shape's own structure.
 class BVHAggregate final : public Aggregate {

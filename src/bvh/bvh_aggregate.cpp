@@ -1,9 +1,9 @@
-#include "core/bvh_aggregate.h"
+#include "bvh/bvh_aggregate.h"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "core/mesh.h"
+#include "bvh/mesh.h"
 
 namespace rb {
 

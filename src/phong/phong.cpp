@@ -1,4 +1,4 @@
-#include "core/phong.h"
+#include "phong/phong.h"
 
 #include "core/material.h"
 

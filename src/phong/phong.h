@@ -4,8 +4,12 @@
 #pragma once
 
 #include "core/integrator.h"
+#include "core/feature.h"
 
 namespace rb {
+
+/// Chapter 2: Phong shading with point lights and hard shadows.
+Feature phongFeature();
 
 /// Phong's diffuse plus specular reflection of one light arriving from unit direction l, seen
 /// from unit direction v, at a surface with unit normal n (already facing v):

@@ -1,6 +1,5 @@
 // Chapter 3 plugs in: gr.mesh and the two-level BVH.
-#include "core/bvh_aggregate.h"
-#include "core/chapter_features.h"
+#include "bvh/bvh_aggregate.h"
 #include "core/integrator.h"
 #include "core/lua_scene.h"
 
@@ -14,7 +13,7 @@ void installChapter03(Pipeline& p, Scene&, const RenderContext&) {
 }
 }  // namespace
 
-Feature chapter03Feature() {
+Feature bvhFeature() {
     return {"bvh", 3,          "OBJ meshes, watertight triangles, two-level binned-SAH BVH",
             false, bindMeshes, installChapter03};
 }

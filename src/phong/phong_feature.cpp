@@ -1,6 +1,6 @@
 // Chapter 2 plugs in: Phong shading with point lights and hard shadows.
-#include "core/chapter_features.h"
-#include "core/phong.h"
+#include "phong/phong.h"
+#include "phong/phong.h"
 
 namespace rb {
 
@@ -10,7 +10,7 @@ void installChapter02(Pipeline& p, Scene&, const RenderContext&) {
 }
 }  // namespace
 
-Feature chapter02Feature() {
+Feature phongFeature() {
     return {"phong", 2,       "A4 scene graph, Phong shading, point lights, hard shadows",
             false,   nullptr, installChapter02};
 }

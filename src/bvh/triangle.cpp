@@ -1,4 +1,4 @@
-#include "core/triangle.h"
+#include "bvh/triangle.h"
 
 namespace rb {
 
