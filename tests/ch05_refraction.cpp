@@ -192,8 +192,8 @@ SCENARIO("at 80° glass reflects 38.77% and bends the ray to 41.036°", "[ch05]"
             REQUIRE(rb::snellCosTheta_t(cosTheta_i, 1.0, 1.5, cosTheta_t));
             const double F = rb::fresnelExact(cosTheta_i, 1.0, 1.5);
             THEN("θt = 41.03641052520335° and F = 0.387704354691473") {
-                // Source: the values in DESIGN.md §5 (chapter 5's row), checked with mpmath at
-                // 40 digits: θt = asin(sin 80°/1.5), F = (rs² + rp²)/2.
+                // Source: computed independently with mpmath at 40 digits:
+                // θt = asin(sin 80°/1.5), F = (rs² + rp²)/2.
                 REQUIRE(degrees(std::acos(cosTheta_t)) == Approx(41.03641052520335).epsilon(1e-12));
                 REQUIRE(F == Approx(0.387704354691473).epsilon(1e-12));
             }
@@ -734,7 +734,7 @@ SCENARIO("deep in the tree the term follows one ray, chosen so the mean is uncha
         const rb::ShadeContext ctx{world.scene, integrator, sampler, counters, depth, media, 1.0};
         return term.apply(ctx, ray, hit, world.pipeline.surface(ctx, ray, hit));
     };
-    const double F = 0.387704354691473;  // Source: DESIGN.md §5, F(80°; 1 → 1.5)
+    const double F = 0.387704354691473;  // F(80°; 1 → 1.5), computed with mpmath at 40 digits
     GIVEN("a ray at 80° onto the glass, shaded at depth kFullSplitDepth − 1") {
         THEN("both rays are traced: the exact Whitted value") {
             requireColour(shadeAt(rb::RefractionTerm::kFullSplitDepth - 1, 0), setup.expected(F));

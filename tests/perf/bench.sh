@@ -8,8 +8,8 @@
 #
 # Times: raybook's is the "render" phase that ./rt --stats prints (after the Lua script ran, the
 # meshes loaded and the BVHs built; PNG writing excluded). POV-Ray's is its own "Trace Time"
-# line, because its process has a fixed idle wall-time floor of about 0.69 s (see
-# ../shared/peers/README.md). Setup (raybook's Lua, load and build phases against POV-Ray's
+# line, because its process has a fixed idle wall-time floor of about 0.69 s, whatever the
+# scene. Setup (raybook's Lua, load and build phases against POV-Ray's
 # Parse Time) is reported apart. Runs alternate raybook, POV-Ray, raybook, ... so both see the
 # same machine load; each time is the median of the runs, with min-max beside it. Ratios are
 # raybook/POV-Ray: below 1 means raybook is faster. Images go to a temporary folder under /tmp.
@@ -32,7 +32,7 @@ trap 'rm -rf "$tmp"' EXIT
 # ---- The scenes ----------------------------------------------------------------------------
 # One line per scene; adding a scene is one line. Fields, separated by |:
 #   name | raybook scene (from the repository root) | POV-Ray scene (a bare name is in
-#   ../shared/peers/povray/, a path is from the repository root) | size WxH | target ratio
+#   $RB_SHARED/peers/povray/, a path is from the repository root) | size WxH | target ratio
 #   (raybook/POV-Ray at most this; - for none) | extra ./rt arguments | extra povray arguments
 # Targets: the mesh scene <= 0.2; Whitted scenes (Phong, shadows, mirrors, glass) <= 0.5.
 # The chapter scenes render at 4x their own size so that a render takes long enough to time.

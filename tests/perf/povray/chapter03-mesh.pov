@@ -1,7 +1,7 @@
 // POV-Ray version of raybook's scenes/chapter03-mesh.lua (three instances of the low-resolution
 // Stanford bunny, 3,674 flat triangles, on a box floor; two point lights, hard shadows), for
-// `make bench`. The mesh is ../shared/peers/povray/bunny_L0.inc (the same vertices as
-// scenes/assets/bunny.obj); give POV-Ray its folder as a library path:
+// `make bench`. The mesh is bunny_L0.inc, POV-Ray's copy of scenes/assets/bunny.obj (the same
+// vertices), from the benchmark's POV-Ray folder; give POV-Ray that folder as a library path:
 //   povray +Ichapter03-mesh.pov +L<shared>/peers/povray +O/tmp/ch03.png +W256 +H160 -D -GR -A File_Gamma=1.0
 //
 // Translation from raybook (right-handed, -z into the screen) to POV-Ray (left-handed, +z into

@@ -1,4 +1,4 @@
--- Benchmark scene "empty": raybook's version of ../shared/peers/povray/empty.pov: a camera and
+-- Benchmark scene "empty": raybook's version of POV-Ray's empty.pov benchmark scene: a camera and
 -- nothing else, 512x512. It measures the fixed cost of a render: every camera ray misses.
 -- POV-Ray's camera: location <0,2.5,-8> look_at <0,1,0> angle 50 (horizontal, = fovy 50° for a
 -- square image), mirrored in z for raybook's right-handed space. The background is black

@@ -1,8 +1,8 @@
--- Benchmark scene "mesh_L0": raybook's version of ../shared/peers/povray/mesh_L0.pov: the Stanford bunny,
+-- Benchmark scene "mesh_L0": raybook's version of POV-Ray's mesh_L0.pov benchmark scene: the Stanford bunny,
 -- bunny_L0 (the original npm 'bunny'), 3,674 flat triangles, on a plane, one point light, hard shadows, 512x512, no AA.
 --
--- The OBJ is read from ../shared/assets/ (the shared folder lives beside the repository; run
--- from the repository root). POV-Ray's bunny_L0.inc holds the same vertices as the OBJ, but in
+-- The OBJ path below is the benchmark's own copy of the bunny, which make bench expects beside
+-- the repository (tests/perf/bench.sh says where); run from the repository root. POV-Ray's bunny_L0.inc holds the same vertices as the OBJ, but in
 -- POV-Ray's left-handed space; raybook is right-handed, so every z changes sign: the camera and
 -- the light are mirrored by hand and the bunny by scale(1, 1, -1).
 --   camera   POV location <0,6,-16> look_at <0,4.5,0> angle 45 (HORIZONTAL fov); A4's fovy is

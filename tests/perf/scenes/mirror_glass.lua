@@ -1,4 +1,4 @@
--- Benchmark scene "mirror_glass": raybook's version of ../shared/peers/povray/mirror_glass.pov
+-- Benchmark scene "mirror_glass": raybook's version of POV-Ray's mirror_glass.pov benchmark scene
 -- (a mirror sphere, a glass sphere of ior 1.5 with Fresnel reflection, a small diffuse sphere
 -- behind them, a plane, two point lights, max_trace_level 10, 512x512, no anti-aliasing).
 -- Camera, lights, finishes and the plane translate as in spheres.lua (z mirrored, fovy 50°).

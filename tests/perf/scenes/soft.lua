@@ -1,4 +1,4 @@
--- Benchmark scene "soft": raybook's version of ../shared/peers/povray/soft.pov: spheres.lua with
+-- Benchmark scene "soft": raybook's version of POV-Ray's soft.pov benchmark scene: spheres.lua with
 -- the first point light replaced by a 2x2 rectangular area light sampled 8x8 with jitter
 -- (all 64 shadow rays, no adaptive sampling), 512x512, no anti-aliasing.
 -- What differs, besides spheres.lua's list: raybook's panel is a one-sided Lambertian emitter

@@ -1,4 +1,4 @@
--- Benchmark scene "spheres": raybook's version of ../shared/peers/povray/spheres.pov (three Phong
+-- Benchmark scene "spheres": raybook's version of POV-Ray's spheres.pov benchmark scene (three Phong
 -- spheres on a plane, two point lights, hard shadows, 512x512, no anti-aliasing).
 --
 -- Translation from POV-Ray (left-handed, z into the screen) to raybook (right-handed, -z into
