@@ -1,13 +1,17 @@
-# raybook's front door. `make demo` and `make test` install what is missing, configure and build.
+# raybook's front door. Every target installs what is missing, configures and builds, so any of
+# them works as the first command on a fresh clone: make demo, make chapterN, make rt, make test.
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
-CHAPTERS   := 1 2 3 4 5 6 7
+# The written chapters: one scene each, scenes/chapterNN-<slug>.lua.
+CHAPTERS   := $(sort $(patsubst 0%,%,$(shell ls scenes 2>/dev/null | sed -n 's/^chapter\([0-9][0-9]\)-.*\.lua$$/\1/p')))
+CHAPTERS   := $(shell echo $(CHAPTERS) | tr ' ' '\n' | sort -n | tr '\n' ' ')
 LAST       := $(lastword $(CHAPTERS))
-DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax
+CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
+DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps bench-deps configure rt test demo docs golden-update bench charts clean $(addprefix chapter,$(CHAPTERS))
+.PHONY: deps bench-deps configure rt test demo docs golden-update bench charts clean $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
 deps:
@@ -25,20 +29,29 @@ $(BUILD)/CMakeCache.txt: CMakeLists.txt
 
 configure: deps $(BUILD)/CMakeCache.txt
 
-# make chapterN: ./rt built from chapters 1..N.
-chapter%: configure
+# make chapterN: ./rt built from chapters 1..N and nothing later. (A static pattern rule: GNU
+# Make never searches plain pattern rules for .PHONY targets.)
+$(CHAPTER_TARGETS): chapter%: configure
 	cmake --build $(BUILD) -j $(JOBS) --target rt_ch$*
-	cp $(BUILD)/rt_ch$* ./rt
+	@cp -f $(BUILD)/rt_ch$* rt.tmp && mv -f rt.tmp rt
+	@./rt --version
+
+# A chapter that is not written yet.
+chapter%:
+	@echo "make: chapter $* is planned but not written yet; the written chapters are $(CHAPTERS)" >&2
+	@exit 1
 
 rt: chapter$(LAST)
 
+# Every test: the unit tests, golden images, scenes and bad input (CTest), then the chapter
+# ladder the way a student climbs it (make chapterN for each N), which leaves ./rt the newest.
 test: configure
 	cmake --build $(BUILD) -j $(JOBS)
-	cp $(BUILD)/rt_ch$(LAST) ./rt
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"
 
 demo: rt
-	./rt --features=all scenes/showcase.lua
+	./rt --features=all --spp 4 scenes/showcase.lua
 	@echo "demo image: $$(pwd)/showcase.png"
 
 docs: configure

@@ -11,7 +11,7 @@ floor:set_material(floorMat)
 scene:add_child(floor)
 
 -- The bunny is about 9.7 units tall, its feet at y = 0 and centred on x = z = 0.
-local bunny = gr.mesh('bunny', 'scenes/assets/bunny.obj')
+local bunny = gr.mesh('bunny', 'assets/bunny.obj')
 
 local placements = {{-2.2, 30, clay}, {0, 0, jade}, {2.2, -30, clay}}
 for i, p in ipairs(placements) do

@@ -29,7 +29,7 @@
 -- calls: the second, from above, is requested after the scene changed (a moon moved, the
 -- plank got a new material); the first image must not show those changes.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/a4/everything.lua
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/a4/everything.lua
 -- (writes everything.png and everything-top.png)
 
 red    = gr.material({0.85, 0.2, 0.15}, {0.7, 0.7, 0.7}, 50)
@@ -57,7 +57,7 @@ cube:translate(-7.4, 0, -0.5)
 cube:set_material(red)
 root:add_child(cube)
 
-quadcube = gr.mesh('quadcube', '../assets/cubeSq.obj')  -- found beside this scene's folder
+quadcube = gr.mesh('quadcube', 'cubeSq.obj')  -- found in this scene's own folder
 quadcube:rotate('Y', 30)
 quadcube:translate(-5.9, 0, -0.5)
 quadcube:set_material(red)
@@ -108,14 +108,15 @@ ball = gr.nh_sphere('ball', {3.5, 0.6, 0.4}, 0.6)
 ball:set_material(gold)
 root:add_child(ball)
 
--- 6. The dodecahedron, named in both path forms: read once, shared by both nodes.
-dodeca1 = gr.mesh('dodeca1', 'scenes/assets/dodeca.obj')
+-- 6. The dodecahedron, named in two spellings ('dodeca.obj' and './dodeca.obj'): read once,
+--    shared by both nodes.
+dodeca1 = gr.mesh('dodeca1', 'dodeca.obj')
 dodeca1:scale(0.45, 0.45, 0.45)
 dodeca1:rotate('X', 20)
 dodeca1:translate(5.3, 0.78, -0.8)
 dodeca1:set_material(gold)
 root:add_child(dodeca1)
-dodeca2 = gr.mesh('dodeca2', '../assets/dodeca.obj')
+dodeca2 = gr.mesh('dodeca2', './dodeca.obj')
 dodeca2:scale(0.25, 0.6, 0.25)
 dodeca2:rotate('z', -25)
 dodeca2:translate(6.9, 1.0, 1.0)
@@ -123,7 +124,7 @@ dodeca2:set_material(blue)
 root:add_child(dodeca2)
 
 -- 7. The face-form octahedron.
-octa = gr.mesh('octa', 'scenes/assets/faceforms.obj')
+octa = gr.mesh('octa', 'faceforms.obj')
 octa:scale(0.6, 0.6, 0.6)
 octa:rotate('y', 20)
 octa:translate(1.5, 0.6, 3.0)

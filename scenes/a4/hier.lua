@@ -3,7 +3,7 @@
 -- subtree below it, through up to five levels of nested transforms. Transforms apply in the
 -- order they are written: scale, then rotate, then translate.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/a4/hier.lua   (writes hier.png)
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/a4/hier.lua   (writes hier.png)
 
 skin  = gr.material({0.95, 0.75, 0.6}, {0.3, 0.3, 0.3}, 20)
 shirt = gr.material({0.2, 0.45, 0.85}, {0.4, 0.4, 0.4}, 40)

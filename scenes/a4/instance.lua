@@ -5,7 +5,7 @@
 -- scene. The graph is a DAG: 4 shapes are drawn as 4 x 8 x 2 x 3 = 192 instances, plus the
 -- roofs and the ground. Each instance's transform lives on the node above the shared subtree.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/a4/instance.lua   (writes instance.png)
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/a4/instance.lua   (writes instance.png)
 
 stone  = gr.material({0.85, 0.82, 0.75}, {0.3, 0.3, 0.3}, 20)
 dark   = gr.material({0.55, 0.5, 0.45}, {0.1, 0.1, 0.1}, 5)
@@ -33,7 +33,7 @@ capital:translate(-0.25, 2.1, -0.25)
 capital:set_material(dark)
 column:add_child(capital)
 
-finial = gr.mesh('finial', 'scenes/assets/icosa.obj')
+finial = gr.mesh('finial', 'icosa.obj')
 finial:scale(0.1, 0.1, 0.1)
 finial:translate(0, 2.5, 0)
 finial:set_material(gem)

@@ -5,7 +5,7 @@
 -- triangles, quads and hexagons), loaded once and instanced as a herd of seven, inside a ring
 -- of stone arches that is itself one arch instanced six times.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/a4/macho-cows.lua   (writes macho-cows.png)
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/a4/macho-cows.lua   (writes macho-cows.png)
 
 stone = gr.material({0.8, 0.7, 0.7}, {0.0, 0.0, 0.0}, 0)
 grass = gr.material({0.1, 0.7, 0.1}, {0.0, 0.0, 0.0}, 0)
@@ -47,9 +47,9 @@ scene:add_child(henge)
 -- Two mesh nodes, one per hide, name the same file: raybook reads it once and both share it.
 -- Each is then instanced several times. The herd: position, heading (degrees about y), size,
 -- cow.
-brown_cow = gr.mesh('brown_cow', 'scenes/assets/cow.obj')
+brown_cow = gr.mesh('brown_cow', 'cow.obj')
 brown_cow:set_material(hide)
-black_cow = gr.mesh('black_cow', 'scenes/assets/cow.obj')
+black_cow = gr.mesh('black_cow', 'cow.obj')
 black_cow:set_material(black)
 herd = {
   {{0.0, 0, 3.0},   -20, 1.6, brown_cow},

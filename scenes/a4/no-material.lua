@@ -5,7 +5,7 @@
 -- specular). Left: a sphere and a box with no material anywhere (default grey). Right: the
 -- same under a group node whose material is blue (inherited). Neither may come out black.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/a4/no-material.lua   (writes no-material.png)
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/a4/no-material.lua   (writes no-material.png)
 
 root = gr.node('root')
 

@@ -2,7 +2,7 @@
 -- gr.nh_box, placed by their own arguments) and one OBJ mesh, the exact dodecahedron. No
 -- node is transformed: everything sits where its arguments put it.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/a4/nonhier.lua   (writes nonhier.png)
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/a4/nonhier.lua   (writes nonhier.png)
 
 gold  = gr.material({0.9, 0.8, 0.4}, {0.8, 0.8, 0.4}, 25)
 grass = gr.material({0.1, 0.7, 0.1}, {0.0, 0.0, 0.0}, 0)
@@ -19,7 +19,7 @@ scene:add_child(ground)
 
 -- The dodecahedron, centred at the origin with circumradius sqrt(3) ~ 1.73, as the file
 -- gives it.
-dodeca = gr.mesh('dodeca', 'scenes/assets/dodeca.obj')
+dodeca = gr.mesh('dodeca', 'dodeca.obj')
 dodeca:set_material(gold)
 scene:add_child(dodeca)
 

@@ -2,7 +2,7 @@
 -- (ten non-hierarchical spheres) is instanced three times, each copy with its own scale,
 -- turn ('Y', the capital form of the axis name) and position, around a stone arch.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/a4/simple-cows.lua   (writes simple-cows.png)
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/a4/simple-cows.lua   (writes simple-cows.png)
 
 stone = gr.material({0.8, 0.7, 0.7}, {0.0, 0.0, 0.0}, 0)
 grass = gr.material({0.1, 0.7, 0.1}, {0.0, 0.0, 0.0}, 0)

@@ -2,7 +2,7 @@
 -- dodecahedron mesh, lit by a white and a magenta point light. Course-sized coordinates
 -- (hundreds of units) on purpose.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/a4/simple.lua   (writes simple.png)
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/a4/simple.lua   (writes simple.png)
 
 mat1 = gr.material({0.7, 1.0, 0.7}, {0.5, 0.7, 0.5}, 25)
 mat2 = gr.material({0.5, 0.5, 0.5}, {0.5, 0.7, 0.5}, 25)
@@ -33,7 +33,7 @@ scene_root:add_child(s4)
 s4:set_material(mat3)
 
 -- The dodecahedron has circumradius sqrt(3); scale it to about 70 units and stand it up.
-poly = gr.mesh('poly', 'scenes/assets/dodeca.obj')
+poly = gr.mesh('poly', 'dodeca.obj')
 scene_root:add_child(poly)
 poly:set_material(mat3)
 poly:scale(40, 40, 40)

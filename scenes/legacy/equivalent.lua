@@ -11,7 +11,7 @@
 -- Every node has at most two non-translation transforms, followed by at most one translation,
 -- so the matrix products are exactly the same in either order of multiplication.
 --
--- Run from the repository root:  ./build/rt_ch3 scenes/legacy/equivalent.lua   (writes village.png)
+-- Run it from any folder, e.g. from the repository root:  ./rt scenes/legacy/equivalent.lua   (writes village.png)
 
 grass  = gr.material({0.3, 0.6, 0.25}, {0.0, 0.0, 0.0}, 0)
 wall   = gr.material({0.9, 0.85, 0.7}, {0.2, 0.2, 0.2}, 10)
@@ -34,7 +34,7 @@ pond:set_material(water)
 root:add_child(pond)
 
 -- The house mesh, painted as a whole.
-house = gr.mesh('house', 'scenes/assets/house.obj')
+house = gr.mesh('house', '../assets/house.obj')
 house:set_material(wall)
 
 -- Three houses along a lane.

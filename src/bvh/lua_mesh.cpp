@@ -5,18 +5,18 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bvh/mesh.h"
 #include "core/error.h"
 #include "core/lua_scene.h"
-#include "bvh/mesh.h"
 
 namespace rb {
 
 namespace {
 
 /// The mesh in `file`, loaded once per scene and shared by every node that names it.
-std::shared_ptr<const Shape> meshFromFile(lua_State* L, const std::string& file) {
+std::shared_ptr<const Shape> meshFromFile(lua_State* L, const std::string& file, const char* call) {
     SceneBuilder& builder = sceneBuilder(L);
-    const std::string path = resolveScenePath(builder, file);
+    const std::string path = findSceneFile(builder, file, call);
     std::error_code ec;
     const std::string key = std::filesystem::weakly_canonical(path, ec).string();
     auto it = builder.meshCache.find(key);
@@ -108,7 +108,7 @@ int grMesh(lua_State* L) {
         }
         node->shape = meshFromTables(L, "gr.mesh");
     } else if (lua_gettop(L) == 2)
-        node->shape = meshFromFile(L, checkString(L, 2, "gr.mesh", "file"));
+        node->shape = meshFromFile(L, checkString(L, 2, "gr.mesh", "file"), "gr.mesh");
     else
         throw InputError("gr.mesh: with 3 arguments, argument 2 (vertices) must be a table");
     pushNode(L, node);
@@ -122,7 +122,7 @@ int grObjMesh(lua_State* L) {
     auto node = std::make_shared<SceneNode>();
     const int fileArg = lua_gettop(L);
     node->name = checkString(L, 1, "gr.obj_mesh", "name");
-    node->shape = meshFromFile(L, checkString(L, fileArg, "gr.obj_mesh", "file"));
+    node->shape = meshFromFile(L, checkString(L, fileArg, "gr.obj_mesh", "file"), "gr.obj_mesh");
     pushNode(L, node);
     return 1;
 }

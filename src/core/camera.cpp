@@ -35,4 +35,28 @@ Ray PinholeCamera::generateRay(double x, double y) const {
 }
 // [camera-ray]
 
+bool PinholeCamera::mayShow(const AABB& box) const {
+    if (box.empty()) return false;
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(box.lo[k]) || !std::isfinite(box.hi[k])) return true;
+    // Count the corners outside each of the view pyramid's five planes, in camera coordinates
+    // (x right, y up, z forward): behind the eye, beyond the left, right, bottom, top edges.
+    int outside[5] = {0, 0, 0, 0, 0};
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 c(corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y,
+                     corner & 4 ? box.hi.z : box.lo.z);
+        const Vec3 d = c - eye_;
+        const double x = glm::dot(d, u_), y = glm::dot(d, v_), z = glm::dot(d, w_);
+        outside[0] += z <= 0.0;
+        outside[1] += x < -halfWidth_ * z;
+        outside[2] += x > halfWidth_ * z;
+        outside[3] += y < -halfHeight_ * z;
+        outside[4] += y > halfHeight_ * z;
+    }
+    // All eight corners beyond one plane: the whole box is.
+    for (int count : outside)
+        if (count == 8) return false;
+    return true;
+}
+
 }  // namespace rb

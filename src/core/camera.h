@@ -2,6 +2,7 @@
 /// The pinhole camera with A4's conventions.
 #pragma once
 
+#include "core/aabb.h"
 #include "core/ray.h"
 
 namespace rb {
@@ -28,6 +29,9 @@ class PinholeCamera {
     Vec3 forward() const { return w_; }
     Vec3 right() const { return u_; }
     Vec3 upVector() const { return v_; }
+    /// False when the box lies wholly behind the eye or wholly beyond one edge of the image,
+    /// so no camera ray can reach it; true otherwise (also for an unbounded box).
+    bool mayShow(const AABB& box) const;
 
   private:
     Vec3 eye_, w_, u_, v_;

@@ -12,8 +12,10 @@ FeatureSet::FeatureSet(const std::vector<Feature>& built, const std::string& spe
     std::set<std::string> on;
     for (const Feature& f : built)
         if (!f.switchable) on.insert(f.name);
-    // Read the comma-separated list left to right: "all", "name" or "-name".
-    std::stringstream list(spec);
+    // Read the comma-separated list left to right: "all", "name" or "-name". A list that
+    // starts by switching something off starts from everything built: "-glossy" means
+    // "all,-glossy", not "nothing but the core".
+    std::stringstream list(spec.rfind('-', 0) == 0 ? "all," + spec : spec);
     std::string item;
     while (std::getline(list, item, ',')) {
         if (item.empty()) continue;
@@ -35,9 +37,8 @@ FeatureSet::FeatureSet(const std::vector<Feature>& built, const std::string& spe
             std::string title;
             const int chapter = chapterProviding(name, title);
             throw InputError("--features: '" + name + "' is not in this build" +
-                             (chapter ? " (it is chapter " + std::to_string(chapter) +
-                                            "; build it with make chapter" +
-                                            std::to_string(chapter) + ")"
+                             (chapter ? " (it is chapter " + std::to_string(chapter) + "; " +
+                                            chapterAdvice(chapter) + ")"
                                       : "") +
                              "; built features: " + known);
         }
@@ -102,6 +103,19 @@ constexpr LaterCall kLaterCalls[] = {
     {"media", 17, "media"},
 };
 }  // namespace
+
+#ifndef RB_NEWEST_CHAPTER
+#error "CMakeLists.txt defines RB_NEWEST_CHAPTER, the newest chapter written"
+#endif
+int newestChapter() {
+    return RB_NEWEST_CHAPTER;
+}
+
+std::string chapterAdvice(int chapter) {
+    const std::string n = std::to_string(chapter);
+    if (chapter > newestChapter()) return "chapter " + n + " is planned but not written yet";
+    return "build it with make chapter" + n + " or later";
+}
 
 int chapterProviding(const std::string& name, std::string& title) {
     for (const LaterCall& c : kLaterCalls)

@@ -17,6 +17,7 @@ struct FeatureOption {
     const char* name;   ///< Written --name=value.
     const char* value;  ///< What the value looks like, for --help.
     const char* help;   ///< One line for --help.
+    const char* defaultValue;  ///< What applies when the option is absent, for --help.
 };
 
 /// One chapter's module as the core sees it.
@@ -55,6 +56,14 @@ class FeatureSet {
     std::vector<Feature> built_;
     std::vector<Feature> on_;
 };
+
+/// The newest chapter written in this source tree (CMakeLists.txt knows it): `make chapterN`
+/// exists for N up to this; later chapters are planned.
+int newestChapter();
+
+/// What a student can do about a missing chapter: "build it with make chapterN or later" for
+/// a written chapter, "chapter N is planned but not written yet" for a later one.
+std::string chapterAdvice(int chapter);
 
 /// The chapter that provides a call or feature this binary lacks, for error messages; 0 if
 /// the name is unknown. `title` receives the chapter's module name.

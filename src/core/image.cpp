@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 #include "core/error.h"
 
@@ -20,6 +21,19 @@ void checkImageSize(long long width, long long height, const std::string& where)
                          std::to_string(height) + " is too large (at most " +
                          std::to_string(kMaxDimension) + " per side and " +
                          std::to_string(kMaxPixels) + " pixels)");
+}
+
+bool hasPngExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".png";
+}
+
+void checkOutputName(const std::string& path, const std::string& where) {
+    if (!hasPngExtension(path))
+        throw InputError(where + ": cannot write '" + path +
+                         "': rt writes PNG images only, so the name must end in .png");
 }
 
 Image::Image(int width, int height) : width_(width), height_(height) {

@@ -17,6 +17,12 @@ inline constexpr int kMaxDimension = 1 << 16;
 /// Throw InputError unless width × height is a sane image size; `where` prefixes the message.
 void checkImageSize(long long width, long long height, const std::string& where);
 
+/// True when `path` ends in .png (any case): the one format rt writes.
+bool hasPngExtension(const std::string& path);
+/// Throw InputError (prefixed by `where`) unless `path` ends in .png; rt never writes PNG data
+/// under another format's name.
+void checkOutputName(const std::string& path, const std::string& where);
+
 /// A width × height image of linear RGB, row 0 at the top.
 class Image {
   public:

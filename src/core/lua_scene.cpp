@@ -1,5 +1,6 @@
 #include "core/lua_scene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -147,12 +148,41 @@ std::shared_ptr<Material> checkMaterial(lua_State* L, int arg, const char* call,
     return *static_cast<std::shared_ptr<Material>*>(p);
 }
 
-std::string resolveScenePath(const SceneBuilder& builder, const std::string& name) {
+std::vector<std::string> sceneFileCandidates(const SceneBuilder& builder, const std::string& name) {
+    if (fs::path(name).is_absolute()) return {name};
+    // The search order: the working directory, the scene's folder, then each --assets folder;
+    // a folder named twice (the scene's folder is often the working directory) counts once.
+    std::vector<std::string> folders = {"", builder.sceneDir};
+    folders.insert(folders.end(), builder.options.assetDirs.begin(),
+                   builder.options.assetDirs.end());
+    std::vector<std::string> places, seen;
     std::error_code ec;
-    if (fs::exists(name, ec) || fs::path(name).is_absolute()) return name;
-    const fs::path besideScene = fs::path(builder.sceneDir) / name;
-    if (fs::exists(besideScene, ec)) return besideScene.string();
-    return name;
+    for (const std::string& folder : folders) {
+        // Compare folders in one spelling: absolute, normalised, with a trailing separator.
+        const fs::path full = folder.empty() ? fs::current_path(ec) : fs::absolute(folder, ec);
+        const std::string key = (full / "").lexically_normal().string();
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+        seen.push_back(key);
+        places.push_back(folder.empty() ? name : (fs::path(folder) / name).string());
+    }
+    return places;
+}
+
+std::string findSceneFile(const SceneBuilder& builder, const std::string& name,
+                          const std::string& call) {
+    const std::vector<std::string> places = sceneFileCandidates(builder, name);
+    std::error_code ec;
+    // The first place that holds something by that name; a folder there fails in the
+    // loader, which says so.
+    for (const std::string& place : places)
+        if (fs::exists(place, ec)) return place;
+    // Name every place, absolute, so the student sees where the file should go.
+    std::string looked;
+    for (const std::string& place : places)
+        looked +=
+            (looked.empty() ? "" : ", ") + fs::absolute(place, ec).lexically_normal().string();
+    throw InputError(call + ": cannot find '" + name + "'; looked in: " + looked +
+                     " (add a folder to the search with --assets DIR)");
 }
 
 // ---- Bindings registry --------------------------------------------------------------------
@@ -202,7 +232,7 @@ void setMaterialParam(lua_State* L, Material& m, const std::string& name, double
         if (chapter)
             throw InputError(std::string(call) + ": material field '" + name + "' needs chapter " +
                              std::to_string(chapter) + " (" + title +
-                             "), which this build does not have");
+                             "), which this build does not have; " + chapterAdvice(chapter));
         std::string known = "kd, ks, shininess";
         for (const auto& [field, ch] : builder.materialFields) known += ", " + field;
         throw InputError(std::string(call) + ": unknown material field '" + name +
@@ -246,7 +276,7 @@ void instructionHook(lua_State* L, lua_Debug* ar) {
                static_cast<lua_Integer>(builder.options.instructionLimit));
 }
 
-/// require(name) limited to name.lua in the scene's own folder (dots become slashes).
+/// require(name): name.lua (dots become slashes) from the places scene files are searched.
 int sandboxRequire(lua_State* L) {
     const char* raw = luaL_checkstring(L, 1);
     std::string name = raw;
@@ -263,13 +293,15 @@ int sandboxRequire(lua_State* L) {
     lua_pop(L, 1);
     for (char& c : name)
         if (c == '.') c = '/';
-    const SceneBuilder& builder = sceneBuilder(L);
-    const std::string file = (fs::path(builder.sceneDir) / (name + ".lua")).string();
+    // Search the same places as meshes and textures; a missing module lists them all.
+    std::string file;
+    try {
+        file = findSceneFile(sceneBuilder(L), name + ".lua", std::string("require('") + raw + "')");
+    } catch (const InputError& e) {
+        return luaL_error(L, "%s", e.what());
+    }
     // Text chunks only: precompiled bytecode can crash the VM.
     const int status = luaL_loadfilex(L, file.c_str(), "t");
-    if (status == LUA_ERRFILE)
-        return luaL_error(L, "require('%s'): there is no %s in the scene's folder", raw,
-                          file.c_str());
     if (status != LUA_OK) return lua_error(L);
     lua_pushstring(L, raw);
     lua_call(L, 1, 1);
@@ -308,10 +340,9 @@ int unknownName(lua_State* L, const char* prefix, const char* suffix, const char
     std::string title;
     const int chapter = missingChapter(L, name, title);
     if (chapter)
-        return luaL_error(L,
-                          "%s%s%s needs chapter %d (%s), which this build does not have; build "
-                          "it with make chapter%d or later",
-                          prefix, name, suffix, chapter, title.c_str(), chapter);
+        return luaL_error(L, "%s%s%s needs chapter %d (%s), which this build does not have; %s",
+                          prefix, name, suffix, chapter, title.c_str(),
+                          chapterAdvice(chapter).c_str());
     return luaL_error(L, unknown, name);
 }
 
@@ -324,6 +355,19 @@ int unknownMethod(lua_State* L) {
 int unknownGrCall(lua_State* L) {
     return unknownName(L, "gr.", "",
                        "gr.%s is not a raybook call (see --help and the reference page)");
+}
+
+/// __index of the sandbox's globals: reading os or io, which the sandbox leaves out, says so;
+/// any other undefined global is nil, as in plain Lua.
+int sandboxGlobal(lua_State* L) {
+    const char* name = lua_tostring(L, 2);
+    if (name && (std::strcmp(name, "os") == 0 || std::strcmp(name, "io") == 0))
+        return luaL_error(L,
+                          "'%s' is not available: scene files run in raybook's Lua sandbox, "
+                          "which leaves out os and io (./rt --unsafe-lua allows them)",
+                          name);
+    lua_pushnil(L);
+    return 1;
 }
 
 /// Open only base, math, string and table (all libraries with --unsafe-lua).
@@ -343,6 +387,13 @@ void openSandbox(lua_State* L, const SceneBuilder& builder) {
         }
         lua_pushcfunction(L, sandboxLoad);
         lua_setglobal(L, "load");
+        // A scene that reaches for os or io learns why it is missing.
+        lua_pushglobaltable(L);
+        lua_newtable(L);
+        lua_pushcfunction(L, sandboxGlobal);
+        lua_setfield(L, -2, "__index");
+        lua_setmetatable(L, -2);
+        lua_pop(L, 1);
     }
     lua_newtable(L);
     lua_setfield(L, LUA_REGISTRYINDEX, "rb.loaded");

@@ -20,6 +20,7 @@ struct SceneLoadOptions {
     bool unsafeLua = false;  ///< Allow os and io.
     long long instructionLimit = 1'000'000'000;  ///< Lua VM instructions before we give up.
     size_t memoryLimit = size_t(2) << 30;        ///< Bytes the script may allocate.
+    std::vector<std::string> assetDirs;          ///< --assets DIR, searched after the scene's folder.
 };
 
 /// A render request after the script ran: the job plus the world it renders.
@@ -141,9 +142,13 @@ std::shared_ptr<Material> checkMaterial(lua_State* L, int arg, const char* call,
 void pushNode(lua_State* L, std::shared_ptr<SceneNode> node);
 /// Push a new material userdata.
 void pushMaterial(lua_State* L, std::shared_ptr<Material> material);
-/// Resolve a file named by the scene: relative to the working directory, then to the
-/// scene's folder. Returns the path that exists, or the name unchanged.
-std::string resolveScenePath(const SceneBuilder& builder, const std::string& name);
+/// The places a file named by the scene is looked for, in order: the working directory, the
+/// scene's folder, then each --assets folder (only the name itself when it is absolute).
+std::vector<std::string> sceneFileCandidates(const SceneBuilder& builder, const std::string& name);
+/// The first of sceneFileCandidates() that exists. Throws InputError naming `call` and
+/// every place searched when none is.
+std::string findSceneFile(const SceneBuilder& builder, const std::string& name,
+                          const std::string& call);
 
 /// Push a light userdata (gr.light's result).
 void pushLight(lua_State* L, const PointLight& light);

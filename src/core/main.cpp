@@ -11,6 +11,8 @@
 #include "core/lua_scene.h"
 #include "core/options.h"
 #include "core/render.h"
+#include "core/render_warnings.h"
+#include "core/version.h"
 #include "core/world.h"
 
 namespace rb {
@@ -52,7 +54,7 @@ int run(int argc, char** argv) {
         return 0;
     }
     if (cl.version) {
-        std::cout << "raybook rt, chapters 1-" << built.back().chapter << "\n";
+        std::cout << versionText(built);
         return 0;
     }
     const FeatureSet features(built, cl.features);
@@ -67,6 +69,7 @@ int run(int argc, char** argv) {
     SceneLoadOptions loadOptions;
     loadOptions.legacy = cl.legacy;
     loadOptions.unsafeLua = cl.unsafeLua;
+    loadOptions.assetDirs = cl.assetDirs;
     SceneLoadTimes loadTimes;
     std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions, &loadTimes);
 
@@ -95,6 +98,10 @@ int run(int argc, char** argv) {
 
         const PinholeCamera camera(world->source.job.camera, world->source.job.width,
                                    world->source.job.height);
+        // Say what would surprise; the image is made all the same.
+        for (const std::string& warning :
+             renderWarnings(world->source.job, scene.instances, camera, features, output))
+            std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());
         RenderSettings settings;
         settings.threads = cl.threads;
         settings.seed = cl.seed;

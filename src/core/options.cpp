@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "core/image.h"
 
 namespace rb {
 
@@ -71,8 +72,11 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             if (x == std::string::npos) throw InputError("--size: expected WxH, got '" + v + "'");
             cl.width = static_cast<int>(parseInteger("--size", v.substr(0, x), 1, 1 << 16));
             cl.height = static_cast<int>(parseInteger("--size", v.substr(x + 1), 1, 1 << 16));
-        } else if (name == "--output" || name == "-o")
+        } else if (name == "--output" || name == "-o") {
             cl.output = next();
+            checkOutputName(cl.output, "--output");
+        } else if (name == "--assets")
+            cl.assetDirs.push_back(next());
         else if (name == "--stats")
             cl.stats = true;
         else if (name == "--quiet" || name == "-q")
@@ -103,18 +107,24 @@ std::string usage(const std::vector<Feature>& built) {
     std::string text = R"(usage: ./rt [options] scene.lua [threads]
 
 Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
-  --features=LIST    switch chapter modules: all, name, -name (e.g. all,-glossy)
+  --features=LIST    switch chapter modules: all, name, -name (e.g. all,-glossy;
+                     -glossy alone means all,-glossy)           default: all
   --list-features    list the chapter modules in this build
-  --threads N        worker threads (default: all cores); also ./rt scene.lua N
+  --threads N        worker threads; also ./rt scene.lua N      default: all cores
   --seed S           random stream (output is bit-identical for a given seed)
-  --spp N            samples per pixel (default 1: one ray through each pixel centre)
-  --max-depth N      recursion limit for secondary rays
-  --size WxH         override the image size
-  --output FILE      override the output PNG
+                                                                default: 0
+  --spp N            samples per pixel                          default: 1, one ray
+                                                                through each pixel centre
+  --max-depth N      recursion limit for secondary rays         default: the scene's
+                                                                max_depth, else 5
+  --size WxH         override the image size                    default: gr.render's
+  --output FILE      override the output image (.png)           default: gr.render's
+  --assets DIR       also look for meshes, textures and require()d files in DIR, after
+                     the working directory and the scene's folder (may be repeated)
   --stats            print ray counts, phase times, Mrays/s and memory
   --quiet            no progress bar or messages
   --legacy           pre-2015 course scenes (transforms post-multiply)
-  --unsafe-lua       let the scene use os and io
+  --unsafe-lua       let the scene use os and io (off: scenes run in a sandbox)
   --help, --version
 )";
     bool first = true;
@@ -126,7 +136,8 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
             std::string left = std::string("  --") + o.name + "=" + o.value;
             left = left.size() < 20 ? left + std::string(21 - left.size(), ' ')
                                     : left + "\n" + std::string(21, ' ');
-            text += left + o.help + " (chapter " + std::to_string(f.chapter) + ")\n";
+            text += left + o.help + " (chapter " + std::to_string(f.chapter) + ")\n" +
+                    std::string(21, ' ') + "default: " + o.defaultValue + "\n";
         }
     return text;
 }

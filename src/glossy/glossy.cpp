@@ -116,8 +116,10 @@ Feature glossyFeature() {
             true,
             bindGlossy,
             installGlossy,
-            {{"glossy-samples", "N", "directions averaged per glossy surface (default 16)"},
-             {"glossy-sampler", "fuzz|lobe", "fuzz sphere (seed 000) or Phong lobe (default)"}}};
+            {{"glossy-samples", "N", "directions averaged per glossy surface",
+              "the scene's glossy_samples or dist, else 16"},
+             {"glossy-sampler", "fuzz|lobe", "fuzz sphere (seed 000) or Phong lobe",
+              "the scene's glossy_sampler, else lobe"}}};
 }
 
 }  // namespace rb

@@ -181,7 +181,8 @@ Feature refractionFeature() {
             true,
             bindRefraction,
             installRefraction,
-            {{"fresnel", "exact|schlick", "Fresnel formula for every transparent material"}}};
+            {{"fresnel", "exact|schlick", "Fresnel formula for every transparent material",
+              "each material's own, else exact"}}};
 }
 
 }  // namespace rb

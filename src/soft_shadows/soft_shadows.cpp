@@ -82,8 +82,10 @@ Feature softShadowsFeature() {
               bindSoftShadows,
               installSoftShadows};
     f.options = {
-        {"light-samples", "N", "samples per axis for every area light (N x N shadow rays)"},
-        {"light-sampling", "stratified|independent", "how points on area lights are chosen"},
+        {"light-samples", "N", "samples per axis for every area light (N x N shadow rays)",
+         "the scene's light_samples or ss, else each light's own"},
+        {"light-sampling", "stratified|independent", "how points on area lights are chosen",
+         "stratified"},
     };
     return f;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every scene renders: the course-style A4 scenes (scenes/a4/), the legacy scenes
 # (scenes/legacy/), the showcase and the chapter scenes, each at a small size, from the
-# repository root (where their mesh paths such as 'scenes/assets/cow.obj' point).
+# repository root. (Each scene names its meshes relative to its own folder; portable.sh checks
+# that they also render from a copy of that folder elsewhere.)
 #
 # Usage: bash tests/scenes/run_all.sh RT_BINARY OUT_DIR
 #

@@ -1,3 +1,5 @@
--- os is not loaded in the sandbox.
--- expect: attempt to index a nil value (global 'os')
+-- os is not loaded in the sandbox, and the message says why and how to allow it.
+-- expect: 'os' is not available
+-- expect: sandbox
+-- expect: --unsafe-lua
 os.execute('touch pwned.txt') --!

@@ -1,0 +1,66 @@
+#include "core/render_warnings.h"
+
+#include <algorithm>
+
+#include "core/image.h"
+
+namespace rb {
+
+namespace {
+
+/// A gr.render argument of seed 001 and the chapter that gives it meaning.
+struct DialectArgument {
+    const char* key;      ///< Its name in RenderJob::options.
+    const char* label;    ///< How the message names it.
+    const char* feature;  ///< The feature that reads it.
+    int chapter;
+};
+constexpr DialectArgument kDialectArguments[] = {
+    {"aa", "aa argument (antialiasing)", "adaptive_aa", 8},
+    {"ss", "ss argument (soft-shadow samples)", "soft_shadows", 6},
+    {"dist", "dist argument (glossy samples)", "glossy", 7},
+    // Seed 001 switches depth of field on with dof > 0; the aperture alone does nothing.
+    {"dof", "dof argument (depth of field)", "dof", 13},
+};
+
+/// Why `feature` (of `chapter`) does nothing in this run.
+std::string whyAbsent(const FeatureSet& features, const char* feature, int chapter) {
+    const bool built =
+        std::any_of(features.built().begin(), features.built().end(),
+                    [&](const Feature& f) { return std::string(feature) == f.name; });
+    if (built) return "--features switched it off";
+    return "this build does not have it; " + chapterAdvice(chapter);
+}
+
+}  // namespace
+
+std::vector<std::string> renderWarnings(const RenderJob& job,
+                                        const std::vector<Instance>& instances,
+                                        const PinholeCamera& camera, const FeatureSet& features,
+                                        const std::string& output) {
+    std::vector<std::string> warnings;
+    // Nothing to see: no shapes at all, or none inside the view.
+    if (instances.empty())
+        warnings.push_back(job.where + ": the root node has no shapes under it, so the image " +
+                           "will be empty (did you add_child?)");
+    else if (std::none_of(instances.begin(), instances.end(),
+                          [&](const Instance& i) { return camera.mayShow(i.worldBounds); }))
+        warnings.push_back(job.where + ": no shape is in front of the camera, so the image " +
+                           "will show only the background (check eye, view, up and fovy)");
+    // Seed 001's arguments that only a chapter not in use would read.
+    for (const DialectArgument& a : kDialectArguments) {
+        const auto it = job.options.find(a.key);
+        if (it == job.options.end() || it->second == 0.0 || features.enabled(a.feature)) continue;
+        warnings.push_back(job.where + ": gr.render's " + a.label +
+                           " is ignored: it needs chapter " + std::to_string(a.chapter) + " (" +
+                           a.feature + "), and " + whyAbsent(features, a.feature, a.chapter));
+    }
+    // The course framework writes PNG data whatever the name says; so does rt, but says so.
+    if (!hasPngExtension(output))
+        warnings.push_back(job.where + ": the output '" + output +
+                           "' does not end in .png; rt writes a PNG image under that name, as " +
+                           "the course framework does");
+    return warnings;
+}
+
+}  // namespace rb
