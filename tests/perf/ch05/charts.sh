@@ -3,7 +3,8 @@
 #   ch05-schlick-error.svg/.png   Schlick − exact Fresnel over angle, n = 1.33, 1.5, 2.4,
 #                                 going in, going out (outside angle) and going out (naive)
 #   ch05-fresnel-time.svg/.png    ns per evaluation of each formula (median of 21 runs)
-#   ch05-finding.txt              both findings, one sentence each, with numbers
+#   ch05-finding.txt              both findings, one sentence each, with numbers; the chapter
+#                                 page includes it as it is (\include{doc}): plain text
 #
 # usage: tests/perf/ch05/charts.sh BUILD_DIR   (run from anywhere; takes a few seconds)
 set -euo pipefail

@@ -4,7 +4,8 @@
 #   ch06-error-vs-time.svg/.png     RMSE against render CPU time, independent and stratified
 #   ch06-hard-vs-soft.png           the chapter scene, point lights | area lights
 #   ch06-highlight.png              a shiny sphere's highlights, point lights | area lights
-#   ch06-finding.txt                the finding in one sentence, with numbers
+#   ch06-finding.txt                the finding in one sentence, with numbers; the chapter page
+#                                   includes it as it is (\include{doc}), so keep it plain text
 #
 # usage: tests/perf/ch06/charts.sh BUILD_DIR   (run from anywhere; takes under a minute)
 set -euo pipefail

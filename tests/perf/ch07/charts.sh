@@ -4,7 +4,8 @@
 #   ch07-grazing-loss.svg/.png  share of lobe samples lost below the surface near grazing
 #   ch07-lobe-shapes.svg/.png   the two lobes' pdfs at matched glossiness
 #   ch07-lobes.png              the converged renders side by side (fuzz | lobe)
-#   ch07-finding.txt            the equal-time finding in one sentence, with numbers
+#   ch07-finding.txt            the equal-time finding in one sentence, with numbers; the
+#                               chapter page includes it as it is (\include{doc}): plain text
 #
 # usage: tests/perf/ch07/charts.sh BUILD_DIR   (run from anywhere; takes under a minute)
 set -euo pipefail
