@@ -2,51 +2,133 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <mutex>
+#include <string>
 #include <vector>
 
 namespace rb {
 
+std::vector<ImageTile> tilesInRenderOrder(int width, int height) {
+    // Step 1: cut the image into tiles in scanline order; the last row and column of tiles
+    // may be narrower.
+    const int tilesX = (width + kTileSize - 1) / kTileSize;
+    const int tilesY = (height + kTileSize - 1) / kTileSize;
+    const int count = tilesX * tilesY;
+    const int strata = std::min(kProgressStrata, count);
+    std::vector<ImageTile> scanline;
+    scanline.reserve(count);
+    for (int i = 0; i < count; ++i) {
+        ImageTile t;
+        t.x0 = (i % tilesX) * kTileSize;
+        t.y0 = (i / tilesX) * kTileSize;
+        t.x1 = std::min(width, t.x0 + kTileSize);
+        t.y1 = std::min(height, t.y0 + kTileSize);
+        // Step 2: band the scanline sequence into equal strata for the progress estimate.
+        t.stratum = static_cast<int>(static_cast<std::int64_t>(i) * strata / count);
+        scanline.push_back(t);
+    }
+    // Step 3: visit them in bit-reversed order, so any prefix is spread over the image.
+    std::vector<ImageTile> tiles;
+    tiles.reserve(count);
+    for (int i : progressiveOrder(count)) tiles.push_back(scanline[i]);
+    return tiles;
+}
+
+std::vector<WorkUnit> workUnits(const std::vector<ImageTile>& tiles) {
+    std::vector<WorkUnit> units;
+    units.reserve(tiles.size());
+    for (const ImageTile& t : tiles) units.push_back({static_cast<double>(t.pixels()), t.stratum});
+    return units;
+}
+
 namespace {
 
-/// Draws "[#####     ] 52% ETA 3.1 s" on stderr. Only thread 0 draws, so no lock is needed.
+/// Seconds on the steady clock since `start`.
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Draws "[#####     ]  48%  elapsed 3.1 s  ETA 3.4 s  12.3 Mrays/s" on stderr, at most ten
+/// times a second. Any thread may report a finished tile; a lock serialises the reports
+/// (one per tile, so it is never contended for long).
 class ProgressBar {
   public:
-    ProgressBar(bool enabled, int total) : enabled_(enabled), total_(total) {}
-    /// Record one finished row, and redraw now and then.
-    void rowDone() {
+    /// A bar for the units of `tiles`; draws nothing unless `enabled`.
+    ProgressBar(bool enabled, const std::vector<ImageTile>& tiles)
+        : enabled_(enabled), estimator_(workUnits(tiles)) {}
+
+    /// Record that a thread starts tile `index`.
+    void tileStarted(int index) {
         if (!enabled_) return;
-        const int done = ++done_;
-        if (omp_get_thread_num() != 0) return;
-        const double elapsed = seconds();
-        if (elapsed - lastDraw_ < 0.2 && done < total_) return;
-        lastDraw_ = elapsed;
-        draw(done, elapsed);
+        const std::lock_guard<std::mutex> lock(mutex_);
+        estimator_.start(index, secondsSince(start_));
     }
-    /// Clear the bar.
+
+    /// Record that tile `index` is finished, having traced `rays` rays.
+    void tileDone(int index, std::uint64_t rays) {
+        if (!enabled_) return;
+        const std::lock_guard<std::mutex> lock(mutex_);
+        const double elapsed = secondsSince(start_);
+        estimator_.finish(index, elapsed);
+        rays_ += rays;
+        if (throttle_.due(elapsed) && elapsed > 0.0) draw(elapsed);
+    }
+
+    /// Clear the line, leaving the cursor where the bar began.
     void finish() {
-        if (enabled_) std::fprintf(stderr, "\r%60s\r", "");
+        if (!enabled_ || width_ == 0) return;
+        std::fprintf(stderr, "\r%*s\r", width_, "");
+        std::fflush(stderr);
     }
 
   private:
-    double seconds() const {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    /// Redraw the line over the previous one.
+    void draw(double elapsed) {
+        ProgressReport report;
+        report.fraction = estimator_.fractionDone(elapsed);
+        report.elapsedSeconds = elapsed;
+        // Until every band of the image has been measured, an ETA would be a guess.
+        if (estimator_.representative()) report.etaSeconds = estimator_.secondsLeft(elapsed);
+        report.raysPerSecond = static_cast<double>(rays_) / elapsed;
+        const std::string line = formatProgressLine(report);
+        // Pad with spaces to cover a longer previous line.
+        const int length = static_cast<int>(line.size());
+        std::fprintf(stderr, "\r%s%*s", line.c_str(), std::max(0, width_ - length), "");
+        std::fflush(stderr);
+        width_ = std::max(width_, length);
     }
-    void draw(int done, double elapsed) const {
-        const double fraction = static_cast<double>(done) / total_;
-        const int filled = static_cast<int>(30 * fraction);
-        const double eta = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-        std::fprintf(stderr, "\r[%-30s] %3d%% ETA %.1f s ", std::string(filled, '#').c_str(),
-                     static_cast<int>(100 * fraction), eta);
-    }
+
     bool enabled_;
-    int total_;
-    std::atomic<int> done_{0};
-    double lastDraw_ = 0.0;  // touched by thread 0 only
+    std::mutex mutex_;
+    WorkEstimator estimator_;       // guarded by mutex_
+    RedrawThrottle throttle_{0.1};  // guarded by mutex_: at most 10 redraws a second
+    std::uint64_t rays_ = 0;        // guarded by mutex_
+    int width_ = 0;                 // guarded by mutex_: widest line drawn
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
+
+/// Render the pixels of one tile into `image`, counting rays into `rays`.
+void renderTile(const ImageTile& tile, const Integrator& integrator, const PinholeCamera& camera,
+                int width, int spp, std::uint64_t seed, Image& image, RayCounters& rays) {
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            const std::uint64_t pixelIndex = static_cast<std::uint64_t>(y) * width + x;
+            Colour sum(0.0);
+            for (int s = 0; s < spp; ++s) {
+                Sampler sampler(seed, pixelIndex, s);
+                // One sample: the pixel centre (A4), or a uniformly jittered position.
+                const Vec2 offset = spp == 1 ? Vec2(0.5) : sampler.next2D();
+                const Ray ray = camera.generateRay(x + offset.x, y + offset.y);
+                rays.add(RayKind::Camera);
+                sum += integrator.trace(ray, sampler, rays, 0);
+            }
+            image.set(x, y, sum / static_cast<double>(spp));
+        }
+}
 
 }  // namespace
 
@@ -57,29 +139,20 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     const Integrator integrator(scene, pipeline);
     const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
     std::vector<RayCounters> perThread(threads);
-    ProgressBar progress(settings.progress, height);
+    const std::vector<ImageTile> tiles = tilesInRenderOrder(width, height);
+    ProgressBar progress(settings.progress, tiles);
     const int spp = std::max(1, settings.samplesPerPixel);
 
-    // Rows go to threads dynamically. Nothing a pixel computes depends on which thread runs
-    // it: its random numbers come from (seed, pixel, sample), so any schedule gives the same
-    // image.
+    // Tiles go to threads dynamically, in progressive order. Nothing a pixel computes depends
+    // on which thread runs it or when: its random numbers come from (seed, pixel, sample), so
+    // any schedule and any tile order give the same image.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-    for (int y = 0; y < height; ++y) {
+    for (int k = 0; k < static_cast<int>(tiles.size()); ++k) {
         RayCounters& rays = perThread[omp_get_thread_num()];
-        for (int x = 0; x < width; ++x) {
-            const std::uint64_t pixelIndex = static_cast<std::uint64_t>(y) * width + x;
-            Colour sum(0.0);
-            for (int s = 0; s < spp; ++s) {
-                Sampler sampler(settings.seed, pixelIndex, s);
-                // One sample: the pixel centre (A4), or a uniformly jittered position.
-                const Vec2 offset = spp == 1 ? Vec2(0.5) : sampler.next2D();
-                const Ray ray = camera.generateRay(x + offset.x, y + offset.y);
-                rays.add(RayKind::Camera);
-                sum += integrator.trace(ray, sampler, rays, 0);
-            }
-            image.set(x, y, sum / static_cast<double>(spp));
-        }
-        progress.rowDone();
+        const std::uint64_t raysBefore = rays.total();
+        progress.tileStarted(k);
+        renderTile(tiles[k], integrator, camera, width, spp, settings.seed, image, rays);
+        progress.tileDone(k, rays.total() - raysBefore);
     }
     progress.finish();
     for (const RayCounters& c : perThread) counters.merge(c);

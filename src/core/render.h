@@ -1,12 +1,14 @@
 /// \file
-/// The render loop: one or more samples per pixel, in parallel over rows with OpenMP.
+/// The render loop: one or more samples per pixel, in parallel over tiles with OpenMP.
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/integrator.h"
+#include "core/progress.h"
 
 namespace rb {
 
@@ -17,6 +19,27 @@ struct RenderSettings {
     int samplesPerPixel = 1;  ///< 1: one ray through each pixel centre, as A4 does.
     bool progress = false;    ///< Draw a progress bar with an ETA on stderr.
 };
+
+/// Side of the square tiles the render loop hands to threads, in pixels.
+inline constexpr int kTileSize = 16;
+/// Strata of the progress estimate: bands of tiles in scanline order that each get their own
+/// cost-per-pixel estimate.
+inline constexpr int kProgressStrata = 32;
+
+/// A rectangle of pixels [x0, x1) × [y0, y1), the unit of work the render loop hands out.
+struct ImageTile {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int stratum = 0;  ///< Band of the image, in scanline order, the tile lies in.
+    /// Number of pixels in the tile.
+    int pixels() const { return (x1 - x0) * (y1 - y0); }
+};
+
+/// The tiles of a width × height image in the order the render loop starts them: progressive
+/// (bit-reversed scanline) order, so that finished tiles are spread over the whole image.
+std::vector<ImageTile> tilesInRenderOrder(int width, int height);
+
+/// The progress estimator's view of `tiles`: one WorkUnit per tile, in the same order.
+std::vector<WorkUnit> workUnits(const std::vector<ImageTile>& tiles);
 
 /// Render an image of the scene through the camera. Counts rays into `counters`.
 Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera, int width,
