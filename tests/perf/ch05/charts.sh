@@ -69,7 +69,7 @@ set yrange [0:*]
 set grid ytics
 set xtics rotate by 0
 unset key
-plot '$data/fresnel-time.dat' using 0:2:xtic(1) with boxes lc rgb '#4477aa', \
+plot '$data/fresnel-time.dat' using 0:2:xtic(1) with boxes lc rgb '#4477aa' notitle, \
      '' using 0:2:3:4 with yerrorbars lc rgb 'black' pt 7 ps 0.3, \
      '' using 0:(0):(sprintf('%.1f', \$2)) with labels offset char 0,0.8
 "
