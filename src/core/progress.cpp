@@ -104,7 +104,7 @@ std::optional<double> WorkEstimator::secondsLeft(double now) const {
 // [work-estimate]
 
 bool RedrawThrottle::due(double now) {
-    if (last_ && now - *last_ < interval_) return false;
+    if (now - last_ < interval_) return false;
     last_ = now;
     return true;
 }

@@ -90,14 +90,15 @@ class WorkEstimator {
 /// Lets an event through at most once per `interval` of (simulated or real) seconds.
 class RedrawThrottle {
   public:
-    /// A throttle that lets the first event at or after time 0 through.
+    /// A throttle whose first event through is the first at or after time `interval`, so a
+    /// render shorter than that draws nothing, and the first line has a measured rate to show.
     explicit RedrawThrottle(double interval) : interval_(interval) {}
-    /// True when the last event let through was at least `interval` before `now`.
+    /// True when the last event let through (or time 0) was at least `interval` before `now`.
     bool due(double now);
 
   private:
     double interval_;
-    std::optional<double> last_;
+    double last_ = 0.0;
 };
 
 /// What the progress line shows.
