@@ -1,5 +1,5 @@
 /// \file
-/// What `./rt --version` prints: the version, the git commit and the chapters built in.
+/// What `rt --version` prints: the version, the git commit and the chapters built in.
 #pragma once
 
 #include <string>
