@@ -315,6 +315,10 @@ SCENARIO("--version names the version, the commit and the chapters built", "[ch0
                                       rb::gitCommit() + ")\n"));
             CHECK_THAT(text, Contains("chapters 1-3: raycast, phong, bvh\n"));
         }
+        THEN("chapter 1 alone is named as one chapter") {
+            CHECK_THAT(rb::versionText(rbtest::chapters(1).built()),
+                       Contains("\nchapter 1: raycast\n"));
+        }
     }
 }
 

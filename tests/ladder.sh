@@ -2,7 +2,7 @@
 # The chapter ladder, climbed the way a student climbs it: for each written chapter N, run
 # `make chapterN` in the repository root and check the ./rt it leaves:
 #   - it is the chapter-N binary of the build (byte for byte), the one the golden tests use;
-#   - `./rt --version` prints a version, a commit and "chapters 1-N";
+#   - `./rt --version` prints a version, a commit and "chapters 1-N" ("chapter 1" for N = 1);
 #   - `./rt --list-features` lists exactly chapters 1..N;
 #   - it holds no code of a later chapter (no later chapter's --list-features title is in it);
 #   - it renders chapter N's scene (small, from the repository root and from a copy of the
@@ -57,7 +57,7 @@ for n in "${CHAPTERS[@]}"; do
 
     version=$(./rt --version)
     if grep -Eq "^raybook [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{7,}(-dirty)?|unknown)\)" <<<"$version" &&
-        grep -q "^chapters 1-$n:" <<<"$version"; then
+        grep -q "^$( [ "$n" -eq 1 ] && echo "chapter 1" || echo "chapters 1-$n"):" <<<"$version"; then
         ok "$rung: --version names the version, the commit and chapters 1-$n"
     else
         fail "$rung" "--version printed: $version"
