@@ -29,10 +29,8 @@ mkdir -p "$OUT"
 # A make started from inside another make (or from CTest) must not inherit its job server.
 unset MAKEFLAGS MFLAGS MAKELEVEL
 
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-fail() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+# shellcheck source=check_helpers.sh
+source "$ROOT/tests/check_helpers.sh"
 
 last=${CHAPTERS[-1]}
 # Each chapter's --list-features title, from the newest binary: a string that only that
@@ -108,5 +106,4 @@ fi
 # Leave the newest chapter in ./rt, as make rt would.
 $MAKE_CMD chapter"$last" >/dev/null 2>&1 || fail "restore" "make chapter$last failed"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

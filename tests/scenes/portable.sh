@@ -21,13 +21,9 @@ OUT=$(mkdir -p "$2" && realpath "$2")
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 TIMEOUT=${SCENES_TIMEOUT:-60}
 
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-fail() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+# shellcheck source=../check_helpers.sh
+source "$(dirname "$0")/../check_helpers.sh"
 
-# Lines of a scene's header comments (the comment block at the top) with the given key.
-header() { sed -n "/^--/!q; s/^-- $2: *//p" "$1"; }
 
 # A copy of the scenes, far from the repository: top-level scenes in copy/, the rest in
 # copy/<folder>/, meshes in copy/assets/.
@@ -69,5 +65,4 @@ for scene in "$COPY"/*.lua "$COPY"/a4/*.lua "$COPY"/seeds/*.lua "$COPY"/legacy/*
     fi
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

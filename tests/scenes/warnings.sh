@@ -19,12 +19,9 @@ RT=$(realpath "$1")
 OUT=$(mkdir -p "$2" && realpath "$2")
 HERE=$(cd "$(dirname "$0")" && pwd)
 
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-fail() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+# shellcheck source=../check_helpers.sh
+source "$(dirname "$0")/../check_helpers.sh"
 
-header() { sed -n "/^--/!q; s/^-- $2: *//p" "$1"; }
 
 for scene in "$HERE"/warnings/*.lua; do
     name=$(basename "$scene" .lua)
@@ -64,5 +61,4 @@ for scene in "$HERE"/warnings/*.lua; do
     fi
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish
