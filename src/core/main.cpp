@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "core/batch.h"
 #include "core/error.h"
 #include "core/lua_scene.h"
 #include "core/options.h"
@@ -62,6 +63,7 @@ int run(int argc, char** argv) {
         printFeatures(features);
         return 0;
     }
+    if (!cl.batchDir.empty()) return runBatch(cl, argc, argv);
 
     // Run the script. Rendering starts only after it finished, so the command line can
     // override what it asked for.

@@ -83,6 +83,16 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             cl.quiet = true;
         else if (name == "--legacy")
             cl.legacy = true;
+        else if (name == "--modern")
+            cl.modern = true;
+        else if (name == "--lenient")
+            cl.lenient = true;
+        else if (name == "--dialect")
+            cl.dialects.push_back(next());
+        else if (name == "--batch")
+            cl.batchDir = next();
+        else if (name == "--scene-time-limit")
+            cl.sceneTimeLimit = static_cast<double>(parseInteger(name, next(), 1, 86400));
         else if (name == "--unsafe-lua")
             cl.unsafeLua = true;
         else if (findFeatureOption(built, name))
@@ -98,7 +108,10 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
         } else
             throw InputError("unexpected argument '" + arg + "'");
     }
-    if (cl.scene.empty() && !cl.help && !cl.version && !cl.listFeatures)
+    if (cl.legacy && cl.modern) throw InputError("--legacy and --modern contradict each other");
+    if (!cl.batchDir.empty() && !cl.scene.empty())
+        throw InputError("--batch renders a folder of scenes; give either --batch DIR or a scene");
+    if (cl.scene.empty() && cl.batchDir.empty() && !cl.help && !cl.version && !cl.listFeatures)
         throw InputError("no scene file given (usage: ./rt [options] scene.lua)");
     return cl;
 }
@@ -123,7 +136,17 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
                      the working directory and the scene's folder (may be repeated)
   --stats            print ray counts, phase times, Mrays/s and memory
   --quiet            no progress bar or messages
-  --legacy           pre-2015 course scenes (transforms post-multiply)
+  --legacy           treat the scene as pre-2015 (transforms post-multiply)
+  --modern           treat the scene as current (transforms apply in the order written)
+                                                   default: decided from the scene's calls
+  --dialect FILE     a Lua file run before the scene, defining or overriding gr.* calls
+                     and node methods (may be repeated)
+  --lenient          unknown calls, methods and primitives are warnings, not errors;
+                     stderr ends with the list of what was ignored
+  --batch DIR        render every scene under DIR, each from its own folder, and write
+                     DIR/raybook-report.html
+  --scene-time-limit S
+                     seconds each scene may take in --batch      default: 300
   --unsafe-lua       let the scene use os and io (off: scenes run in a sandbox)
   --help, --version
 )";

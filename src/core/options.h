@@ -26,6 +26,11 @@ struct CommandLine {
     bool stats = false;            ///< --stats.
     bool quiet = false;            ///< --quiet.
     bool legacy = false;           ///< --legacy: pre-2015 course scenes.
+    bool modern = false;           ///< --modern: force the current framework's transform order.
+    bool lenient = false;          ///< --lenient: unknown calls are warnings, not errors.
+    std::vector<std::string> dialects;  ///< --dialect FILE.lua (repeatable): run before the scene.
+    std::string batchDir;          ///< --batch DIR: render every scene under DIR.
+    double sceneTimeLimit = 300;   ///< --scene-time-limit S: per scene in --batch.
     bool unsafeLua = false;        ///< --unsafe-lua: allow os and io.
     bool help = false;             ///< --help.
     bool version = false;          ///< --version.

@@ -1,0 +1,13 @@
+/// \file
+/// `./rt --batch DIR`: render every scene under a folder, as a TA renders a class's scenes.
+#pragma once
+
+#include "core/options.h"
+
+namespace rb {
+
+/// Render every scene under cl.batchDir, each by a child rt process run in the scene's own
+/// folder with a time limit, and write DIR/raybook-report.html. Returns rt's exit code.
+int runBatch(const CommandLine& cl, int argc, char** argv);
+
+}  // namespace rb
