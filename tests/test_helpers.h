@@ -165,7 +165,7 @@ inline std::vector<rb::LoadedRender> loadSceneText(const std::string& lua,
                                                    bool legacy = false) {
     TempDir dir;
     rb::SceneLoadOptions options;
-    options.legacy = legacy;
+    options.era = legacy ? rb::EraChoice::Legacy : rb::EraChoice::Modern;
     return rb::loadScene(dir.write(fileName, lua), features, options);
 }
 

@@ -6,6 +6,12 @@
 --   gr.render(<the ten A4 arguments>, aa, ss, dist, {apertureSize, focalLength, dof})
 -- raybook reads glossiness and scatter as the radius of chapter 7's fuzz sphere.
 --
+-- Seed 001 was written for the pre-2015 course framework, which post-multiplies transforms:
+-- each node lists its transforms in reverse, as 'translate, then scale' for a wall that is
+-- scaled first and then moved into place. raybook recognises the era from seed 001's calls
+-- (gr.phongMat, gr.transMat, the 6-argument gr.light and the 14-argument gr.render) and says
+-- so on stderr; no flag is needed.
+--
 -- Chapters used: 1-3, 4 (reflectivity), 5 (gr.transMat), 6 (the rectangular light and ss),
 -- 7 (glossiness, scatter and dist). Parts of the seed's scene that wait for later chapters:
 --   * aa = 1, supersampling                                     chapter 8 (adaptive_aa)
@@ -37,8 +43,8 @@ local root = gr.node('root')
 --- A box from corner lo to corner hi under `parent`.
 local function box(parent, name, lo, hi, material)
   local b = gr.cube(name)
-  b:scale(hi[1] - lo[1], hi[2] - lo[2], hi[3] - lo[3])
   b:translate(lo[1], lo[2], lo[3])
+  b:scale(hi[1] - lo[1], hi[2] - lo[2], hi[3] - lo[3])
   b:set_material(material)
   parent:add_child(b)
   return b
@@ -47,8 +53,8 @@ end
 --- An ellipsoid with centre c and radii r under `parent`.
 local function ellipsoid(parent, name, c, r, material)
   local s = gr.sphere(name)
-  s:scale(r[1], r[2], r[3])
   s:translate(c[1], c[2], c[3])
+  s:scale(r[1], r[2], r[3])
   s:set_material(material)
   parent:add_child(s)
   return s
@@ -93,8 +99,8 @@ for _, x in ipairs({-1.3, 1.3}) do
     ellipsoid(car, 'hub cap', {x, 0.38, side * 1.0}, {0.2, 0.2, 0.08}, chrome)
   end
 end
-car:rotate('y', -35)
 car:translate(0, 0.2, -5)
+car:rotate('y', -35)
 root:add_child(car)
 
 -- ---- Lights: a rectangular ceiling panel (seed 001's six-argument gr.light) and a fill -------

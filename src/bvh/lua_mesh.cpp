@@ -92,24 +92,13 @@ int grMesh(lua_State* L) {
     auto node = std::make_shared<SceneNode>();
     node->name = checkString(L, 1, "gr.mesh", "name");
     if (lua_type(L, 2) == LUA_TTABLE) {
-        // Only course scenes from before 2015 build meshes from tables; they also list
-        // their transforms in reverse. Say so once, since the picture is wrong without it.
-        SceneBuilder& builder = sceneBuilder(L);
-        if (!builder.options.legacy && !builder.warnedLegacy) {
-            builder.warnedLegacy = true;
-            lua_Debug ar;
-            std::string where = builder.scenePath;
-            if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar))
-                where = std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
-            std::fprintf(stderr,
-                         "rt: warning: %s: gr.mesh with tables is the pre-2015 course form; "
-                         "such scenes need --legacy (their transforms are post-multiplied)\n",
-                         where.c_str());
-        }
+        // Only the pre-2015 framework built meshes from Lua tables.
+        noteEraSign(L, Era::Legacy, "gr.mesh with Lua tables");
         node->shape = meshFromTables(L, "gr.mesh");
-    } else if (lua_gettop(L) == 2)
+    } else if (lua_gettop(L) == 2) {
+        noteEraSign(L, Era::Modern, "gr.mesh with an .obj file");
         node->shape = meshFromFile(L, checkString(L, 2, "gr.mesh", "file"), "gr.mesh");
-    else
+    } else
         throw InputError("gr.mesh: with 3 arguments, argument 2 (vertices) must be a table");
     pushNode(L, node);
     return 1;
@@ -122,6 +111,7 @@ int grObjMesh(lua_State* L) {
     auto node = std::make_shared<SceneNode>();
     const int fileArg = lua_gettop(L);
     node->name = checkString(L, 1, "gr.obj_mesh", "name");
+    noteEraSign(L, Era::Modern, "seed 002's gr.obj_mesh");
     node->shape = meshFromFile(L, checkString(L, fileArg, "gr.obj_mesh", "file"), "gr.obj_mesh");
     pushNode(L, node);
     return 1;

@@ -1,11 +1,798 @@
+// ./rt --batch DIR: render a class's scenes, each in a child rt, and write one HTML report.
+//
+// The batch runs in four steps. It finds every Lua file under DIR and sets aside the helpers
+// (modules that never call gr.render). It runs each scene as a child process of this same
+// binary, in the scene's own folder, a few at a time, killing any child that outlives the
+// per-scene time limit. It reads what each child printed on stderr (errors, warnings, the era
+// line and the --stats block, which names every image written) into a SceneResult. And it
+// writes DIR/raybook-report.html, one self-contained page with a card per scene, while the
+// children's full logs stay in DIR/raybook-report/.
 #include "core/batch.h"
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "core/error.h"
 
 namespace rb {
+namespace {
 
-int runBatch(const CommandLine&, int, char**) {
-    throw InputError("--batch is not available yet");
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// The folder under DIR that holds the children's logs; the batch owns it.
+constexpr const char* kReportFolder = "raybook-report";
+/// The report page, written in DIR.
+constexpr const char* kReportPage = "raybook-report.html";
+
+/// What became of one Lua file.
+enum class Status { Ok, Error, TimedOut, Crashed, Helper };
+
+/// One image a scene wrote, as the report shows it.
+struct ImageInfo {
+    std::string path;                 ///< Relative to DIR, '/'-separated.
+    bool exists = false;              ///< The file was there after the batch.
+    int width = 0, height = 0;        ///< From the PNG header, when readable.
+    std::vector<std::string> alsoBy;  ///< Other scenes that wrote the same file.
+};
+
+/// Everything the batch learned about one Lua file.
+struct SceneResult {
+    std::string path;  ///< The scene's path relative to DIR, '/'-separated.
+    Status status = Status::Ok;
+    std::string note;          ///< How it ended, when that needs words ("exit code 2", a signal).
+    double wallSeconds = 0;    ///< From start to exit, as the batch measured it.
+    double renderSeconds = 0;  ///< The sum of --stats' "render X s" over its images.
+    unsigned long long rays = 0;        ///< The sum of --stats' "(total N)" over its images.
+    bool haveStats = false;             ///< At least one --stats block was printed.
+    std::string era;                    ///< The "rt: era:" line, without its prefix.
+    std::vector<std::string> errors;    ///< "rt: error:" lines, without the prefix.
+    std::vector<std::string> warnings;  ///< "rt: warning:" lines, without the prefix.
+    std::vector<std::string> other;     ///< Every other stderr line outside the stats.
+    std::vector<ImageInfo> images;      ///< In the order the scene wrote them.
+    std::string stdoutLog, stderrLog;   ///< The child's logs, relative to DIR.
+};
+
+/// A child that is still running.
+struct RunningChild {
+    pid_t pid = 0;
+    size_t index = 0;  ///< Into the results.
+    Clock::time_point start;
+    bool killed = false;  ///< The batch sent SIGKILL for the time limit.
+};
+
+/// How the batch runs, for the report's header.
+struct BatchInfo {
+    fs::path dir;               ///< DIR, absolute.
+    int jobs = 1;               ///< Children at once.
+    double timeLimit = 0;       ///< Seconds per scene.
+    std::string passedOptions;  ///< The options every child got, as one line.
+    std::string startedAt;      ///< Local date and time.
+    double totalSeconds = 0;    ///< Wall time of the whole batch.
+};
+
+// ---- Finding scenes ---------------------------------------------------------------------------
+
+/// The number of '=' of a Lua long bracket opening at text[i] ("[[", "[==["), or -1.
+int longBracketLevel(const std::string& text, size_t i) {
+    if (i >= text.size() || text[i] != '[') return -1;
+    size_t j = i + 1;
+    while (j < text.size() && text[j] == '=') ++j;
+    return j < text.size() && text[j] == '[' ? static_cast<int>(j - i - 1) : -1;
+}
+
+/// The index just past the long bracket of `level` that closes at or after `from`.
+size_t skipLongBracket(const std::string& text, size_t from, int level) {
+    const std::string close = "]" + std::string(level, '=') + "]";
+    const size_t end = text.find(close, from);
+    return end == std::string::npos ? text.size() : end + close.size();
+}
+
+/// Lua source without its comments ("-- ..." and "--[[ ... ]]"); strings are kept whole, so
+/// a "--" inside a string does not start a comment.
+std::string stripLuaComments(const std::string& text) {
+    std::string out;
+    size_t i = 0;
+    while (i < text.size()) {
+        const char c = text[i];
+        if (c == '-' && i + 1 < text.size() && text[i + 1] == '-') {
+            // A comment: long if a long bracket follows, else to the end of the line.
+            const int level = longBracketLevel(text, i + 2);
+            if (level >= 0) {
+                i = skipLongBracket(text, i + 2 + level + 2, level);
+            } else {
+                const size_t eol = text.find('\n', i);
+                i = eol == std::string::npos ? text.size() : eol;
+            }
+            out += ' ';
+        } else if (c == '\'' || c == '"') {
+            // A short string: copy it up to its closing quote (or the end of the line).
+            size_t j = i + 1;
+            while (j < text.size() && text[j] != c && text[j] != '\n') j += text[j] == '\\' ? 2 : 1;
+            j = std::min(j + 1, text.size());
+            out.append(text, i, j - i);
+            i = j;
+        } else if (const int level = longBracketLevel(text, i); level >= 0) {
+            const size_t j = skipLongBracket(text, i + level + 2, level);
+            out.append(text, i, j - i);
+            i = j;
+        } else {
+            out += c;
+            ++i;
+        }
+    }
+    return out;
+}
+
+/// The whole contents of a file ("" if it cannot be read).
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// True for a Lua file that is a helper, not a scene: its code never names gr.render.
+bool isHelper(const fs::path& file) {
+    return stripLuaComments(readFile(file)).find("gr.render") == std::string::npos;
+}
+
+/// Every *.lua under `dir`, relative and '/'-separated, sorted; hidden folders and the
+/// batch's own report folder are not searched.
+std::vector<std::string> findLuaFiles(const fs::path& dir) {
+    std::vector<std::string> files;
+    std::error_code ec;
+    fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+    for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        const fs::path& p = it->path();
+        const std::string name = p.filename().string();
+        if (it->is_directory(ec)) {
+            if (name == kReportFolder || name.starts_with(".")) it.disable_recursion_pending();
+            continue;
+        }
+        if (p.extension() == ".lua" && it->is_regular_file(ec))
+            files.push_back(p.lexically_relative(dir).generic_string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// ---- Running one scene ------------------------------------------------------------------------
+
+/// The options every child gets besides the scene: --quiet --stats --threads 1 and the
+/// per-scene options the TA gave, with paths made absolute (the child runs elsewhere).
+std::vector<std::string> childOptions(const CommandLine& cl) {
+    std::vector<std::string> args = {"--quiet", "--stats", "--threads", "1"};
+    if (cl.features != "all") args.push_back("--features=" + cl.features);
+    if (cl.legacy) args.push_back("--legacy");
+    if (cl.modern) args.push_back("--modern");
+    if (cl.lenient) args.push_back("--lenient");
+    if (cl.unsafeLua) args.push_back("--unsafe-lua");
+    for (const std::string& d : cl.dialects) {
+        args.push_back("--dialect");
+        args.push_back(fs::absolute(d).lexically_normal().string());
+    }
+    for (const std::string& d : cl.assetDirs) {
+        args.push_back("--assets");
+        args.push_back(fs::absolute(d).lexically_normal().string());
+    }
+    if (cl.width > 0)
+        args.push_back("--size=" + std::to_string(cl.width) + "x" + std::to_string(cl.height));
+    if (cl.samplesPerPixel > 0) args.push_back("--spp=" + std::to_string(cl.samplesPerPixel));
+    if (cl.seed != 0) args.push_back("--seed=" + std::to_string(cl.seed));
+    if (cl.maxDepth >= 0) args.push_back("--max-depth=" + std::to_string(cl.maxDepth));
+    for (const auto& [name, value] : cl.featureOptions) args.push_back("--" + name + "=" + value);
+    return args;
+}
+
+/// Everything one child needs, prepared before fork so that the child itself calls only
+/// async-signal-safe functions.
+struct ChildPlan {
+    std::string exe;  ///< This binary.
+    std::vector<std::string> argv;
+    std::string folder;  ///< The scene's folder: the child's working directory.
+    std::string stdoutPath, stderrPath;
+};
+
+/// In the child: point file descriptor `fd` at `path` (opened with `flags`).
+void redirect(int fd, const char* path, int flags) {
+    const int f = open(path, flags | O_CLOEXEC, 0644);
+    if (f >= 0) dup2(f, fd);
+}
+
+/// Start one child in its own process group; returns its pid, or -1 if fork failed.
+pid_t spawnChild(const ChildPlan& plan) {
+    std::vector<char*> argv;
+    for (const std::string& a : plan.argv) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid != 0) {
+        // The parent sets the group too, so a kill right after fork cannot miss it.
+        if (pid > 0) setpgid(pid, pid);
+        return pid;
+    }
+    // The child: its own process group (so a kill reaches anything it starts), killed with
+    // the batch, stdin from /dev/null, stdout and stderr into the logs, in the scene's folder.
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);
+    redirect(STDIN_FILENO, "/dev/null", O_RDONLY);
+    redirect(STDOUT_FILENO, plan.stdoutPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC);
+    redirect(STDERR_FILENO, plan.stderrPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC);
+    if (chdir(plan.folder.c_str()) == 0) execv(plan.exe.c_str(), argv.data());
+    const char message[] = "rt: error: --batch could not start rt in the scene's folder\n";
+    [[maybe_unused]] const ssize_t n = write(STDERR_FILENO, message, sizeof message - 1);
+    _exit(127);
+}
+
+/// The number after `key` in `line` (e.g. "render " in "build 0.1 s, render 0.2 s"), or -1.
+double numberAfter(const std::string& line, const std::string& key) {
+    const size_t at = line.find(key);
+    if (at == std::string::npos) return -1;
+    return std::strtod(line.c_str() + at + key.size(), nullptr);
+}
+
+/// The rest of `line` after `prefix`, or false if it does not start with it.
+bool afterPrefix(const std::string& line, const std::string& prefix, std::string* rest) {
+    if (!line.starts_with(prefix)) return false;
+    *rest = line.substr(prefix.size());
+    return true;
+}
+
+/// Sort a child's stderr into the result: messages by kind, and from the --stats blocks the
+/// images written, the render time and the rays. Returns the images' paths as rt printed them.
+std::vector<std::string> readStderr(const std::string& text, SceneResult* result) {
+    std::vector<std::string> images;
+    std::istringstream in(text);
+    std::string line, rest;
+    bool inStats = false;  // the indented lines after "stats for FILE"
+    while (std::getline(in, line)) {
+        if (afterPrefix(line, "stats for ", &rest)) {
+            images.push_back(rest);
+            result->haveStats = inStats = true;
+        } else if (inStats && line.starts_with("  ")) {
+            if (line.find("(total ") != std::string::npos)
+                result->rays += std::strtoull(line.c_str() + line.find("(total ") + 7, nullptr, 10);
+            if (line.starts_with("  time") && numberAfter(line, "render ") >= 0)
+                result->renderSeconds += numberAfter(line, "render ");
+        } else {
+            inStats = false;
+            if (afterPrefix(line, "rt: error: ", &rest))
+                result->errors.push_back(rest);
+            else if (afterPrefix(line, "rt: warning: ", &rest))
+                result->warnings.push_back(rest);
+            else if (afterPrefix(line, "rt: era:", &rest))
+                result->era = rest.substr(rest.find_first_not_of(' ') == std::string::npos
+                                              ? rest.size()
+                                              : rest.find_first_not_of(' '));
+            else if (!line.empty())
+                result->other.push_back(line);
+        }
+    }
+    return images;
+}
+
+/// Width and height from a PNG's header, or false if the file is not a readable PNG.
+bool pngSize(const fs::path& file, int* width, int* height) {
+    unsigned char header[24] = {};
+    std::ifstream in(file, std::ios::binary);
+    if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return false;
+    if (std::memcmp(header, "\x89PNG\r\n\x1a\n", 8) != 0) return false;
+    auto be32 = [&](int at) {
+        return static_cast<int>((header[at] << 24) | (header[at + 1] << 16) |
+                                (header[at + 2] << 8) | header[at + 3]);
+    };
+    *width = be32(16);
+    *height = be32(20);
+    return true;
+}
+
+/// A short description of how a child ended, and the status it gives the scene.
+Status exitStatus(int waitStatus, bool killed, double limit, std::string* note) {
+    if (killed) {
+        *note = "stopped after the time limit of " + std::to_string(static_cast<int>(limit)) +
+                " s (--scene-time-limit)";
+        return Status::TimedOut;
+    }
+    if (WIFSIGNALED(waitStatus)) {
+        const int sig = WTERMSIG(waitStatus);
+        *note = "killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
+        return Status::Crashed;
+    }
+    const int code = WIFEXITED(waitStatus) ? WEXITSTATUS(waitStatus) : -1;
+    if (code == 0) return Status::Ok;
+    if (code != 1) *note = "exit code " + std::to_string(code);
+    return Status::Error;
+}
+
+/// Fill in a finished scene's result from its exit and its logs.
+void finishScene(const fs::path& dir, int waitStatus, bool killed, double limit,
+                 SceneResult* result) {
+    result->status = exitStatus(waitStatus, killed, limit, &result->note);
+    const fs::path folder = (dir / result->path).parent_path();
+    for (const std::string& written : readStderr(readFile(dir / result->stderrLog), result)) {
+        // rt prints each image as the scene named it, relative to the scene's folder.
+        const fs::path file = (folder / written).lexically_normal();
+        ImageInfo image;
+        image.path = file.lexically_relative(dir).generic_string();
+        image.exists = fs::is_regular_file(file);
+        if (image.exists) pngSize(file, &image.width, &image.height);
+        result->images.push_back(image);
+    }
+    if (result->status == Status::Ok && result->images.empty())
+        result->note = "finished without writing an image";
+}
+
+// ---- Scheduling -------------------------------------------------------------------------------
+
+/// How many children run at once: --threads if given, else the number of cores.
+int jobCount(const CommandLine& cl, size_t scenes) {
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs = cl.threads > 0 ? cl.threads : cores;
+    return std::max(1, std::min(jobs, static_cast<int>(scenes)));
+}
+
+/// The words for a status, as stdout and the report show it.
+const char* statusWord(Status s) {
+    switch (s) {
+        case Status::Ok:
+            return "ok";
+        case Status::Error:
+            return "error";
+        case Status::TimedOut:
+            return "timed out";
+        case Status::Crashed:
+            return "crashed";
+        case Status::Helper:
+            return "skipped helper";
+    }
+    return "?";
+}
+
+/// One stdout line for a finished scene: status, wall time, path, and its first error.
+void printSceneLine(const SceneResult& r) {
+    std::string why = !r.errors.empty() ? r.errors.front() : r.note;
+    if (r.status == Status::Ok) why.clear();
+    if (r.status == Status::Helper) why = "never calls gr.render";
+    if (why.size() > 110) why = why.substr(0, 107) + "...";
+    char time[32] = "      -  ";
+    if (r.status != Status::Helper) std::snprintf(time, sizeof time, "%7.2f s", r.wallSeconds);
+    std::printf("%-14s %s  %s%s%s\n", statusWord(r.status), time, r.path.c_str(),
+                why.empty() ? "" : "  -- ", why.c_str());
+    std::fflush(stdout);
+}
+
+/// The path of this binary, for the children.
+std::string selfExecutable(char** argv) {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) return self.string();
+    return fs::absolute(argv[0]).string();
+}
+
+/// Run every scene (not the helpers) in `results`, `jobs` at a time, each killed after
+/// `limit` seconds; fills in each result as its child ends.
+void runScenes(const fs::path& dir, const std::string& exe, const std::vector<std::string>& options,
+               int jobs, double limit, bool quiet, std::vector<SceneResult>* results) {
+    std::vector<size_t> queue;
+    for (size_t i = 0; i < results->size(); ++i)
+        if ((*results)[i].status != Status::Helper) queue.push_back(i);
+    std::vector<RunningChild> running;
+    size_t next = 0;
+    while (next < queue.size() || !running.empty()) {
+        // Step 1: start children until `jobs` run.
+        while (next < queue.size() && static_cast<int>(running.size()) < jobs) {
+            SceneResult& r = (*results)[queue[next++]];
+            const fs::path scene = dir / r.path;
+            ChildPlan plan;
+            plan.exe = exe;
+            plan.argv = {exe};
+            plan.argv.insert(plan.argv.end(), options.begin(), options.end());
+            plan.argv.push_back(scene.filename().string());
+            plan.folder = scene.parent_path().string();
+            plan.stdoutPath = (dir / r.stdoutLog).string();
+            plan.stderrPath = (dir / r.stderrLog).string();
+            fs::create_directories((dir / r.stderrLog).parent_path());
+            const pid_t pid = spawnChild(plan);
+            if (pid < 0) {
+                r.status = Status::Error;
+                r.note = std::string("could not start a child: ") + std::strerror(errno);
+                if (!quiet) printSceneLine(r);
+                continue;
+            }
+            running.push_back({pid, static_cast<size_t>(&r - results->data()), Clock::now()});
+        }
+        // Step 2: reap the children that ended, and kill those past the time limit.
+        bool changed = false;
+        for (size_t k = 0; k < running.size();) {
+            RunningChild& c = running[k];
+            const double seconds = std::chrono::duration<double>(Clock::now() - c.start).count();
+            int status = 0;
+            if (waitpid(c.pid, &status, WNOHANG) == c.pid) {
+                SceneResult& r = (*results)[c.index];
+                r.wallSeconds = seconds;
+                finishScene(dir, status, c.killed, limit, &r);
+                if (!quiet) printSceneLine(r);
+                running.erase(running.begin() + static_cast<long>(k));
+                changed = true;
+                continue;
+            }
+            if (!c.killed && seconds > limit) {
+                kill(-c.pid, SIGKILL);
+                kill(c.pid, SIGKILL);
+                c.killed = true;
+            }
+            ++k;
+        }
+        // Step 3: wait a little before looking again.
+        if (!changed) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+}
+
+/// Note on every image that more than one scene wrote (the last one to finish wins).
+void noteSharedImages(std::vector<SceneResult>* results) {
+    std::map<std::string, std::vector<std::string>> writers;
+    for (const SceneResult& r : *results)
+        for (const ImageInfo& image : r.images) writers[image.path].push_back(r.path);
+    for (SceneResult& r : *results)
+        for (ImageInfo& image : r.images)
+            for (const std::string& other : writers[image.path])
+                if (other != r.path) image.alsoBy.push_back(other);
+}
+
+// ---- The report -------------------------------------------------------------------------------
+
+/// Text made safe inside HTML elements and attribute values.
+std::string escapeHtml(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+/// A relative '/'-separated path as a URL path: every byte but [A-Za-z0-9-._~/] escaped.
+std::string urlPath(const std::string& path) {
+    static const char* hex = "0123456789ABCDEF";
+    std::string out;
+    for (const unsigned char c : path) {
+        if (std::isalnum(c) || std::strchr("-._~/", c)) {
+            out += static_cast<char>(c);
+        } else {
+            out += '%';
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        }
+    }
+    return out;
+}
+
+/// A count with thousands separators: 1234567 -> "1,234,567".
+std::string withCommas(unsigned long long n) {
+    std::string digits = std::to_string(n), out;
+    for (size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+/// Seconds with two decimals: "0.42 s".
+std::string seconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f s", s);
+    return text;
+}
+
+/// The CSS class of a status, which sets its colour.
+const char* statusClass(Status s) {
+    switch (s) {
+        case Status::Ok:
+            return "ok";
+        case Status::Error:
+            return "error";
+        case Status::TimedOut:
+            return "timeout";
+        case Status::Crashed:
+            return "crash";
+        case Status::Helper:
+            return "helper";
+    }
+    return "";
+}
+
+/// The page's style sheet: inline, so the report is one self-contained file.
+const char* reportCss() {
+    return R"(
+:root { --ok: #1a7f37; --error: #cf222e; --timeout: #9a6700; --crash: #8250df; --helper: #6e7781; }
+* { box-sizing: border-box; }
+body { font: 14px/1.45 system-ui, -apple-system, "Segoe UI", sans-serif; color: #1f2328;
+       background: #f6f8fa; margin: 0; padding: 24px; }
+main { max-width: 1100px; margin: 0 auto; }
+h1 { font-size: 22px; margin: 0 0 4px; }
+.sub { color: #57606a; margin: 0 0 16px; }
+code, .mono { font-family: ui-monospace, "SFMono-Regular", Menlo, Consolas, monospace; font-size: 12.5px; }
+.counts { display: flex; flex-wrap: wrap; gap: 8px; margin: 12px 0; }
+.count { border-radius: 6px; padding: 6px 12px; color: #fff; font-weight: 600; }
+.count.zero { opacity: 0.35; }
+.ok { --c: var(--ok); } .error { --c: var(--error); } .timeout { --c: var(--timeout); }
+.crash { --c: var(--crash); } .helper { --c: var(--helper); }
+.count, .badge { background: var(--c); }
+.attention { background: #fff; border: 1px solid #d0d7de; border-radius: 6px; padding: 8px 12px;
+             margin: 12px 0 20px; }
+.attention a { margin-right: 12px; }
+.scene { display: grid; grid-template-columns: 340px 1fr; gap: 16px; background: #fff;
+         border: 1px solid #d0d7de; border-left: 6px solid var(--c); border-radius: 6px;
+         padding: 12px; margin: 0 0 10px; }
+.thumbs { display: flex; flex-wrap: wrap; gap: 6px; align-content: flex-start; }
+.thumbs figure { margin: 0; }
+.thumbs img { display: block; max-width: 160px; max-height: 120px; background: #000;
+              border: 1px solid #d0d7de; }
+.thumbs figcaption { font-size: 11px; color: #57606a; max-width: 160px; overflow-wrap: anywhere; }
+.noimage { width: 160px; height: 120px; display: flex; align-items: center; justify-content: center;
+           background: repeating-linear-gradient(45deg, #f6f8fa, #f6f8fa 8px, #eaeef2 8px, #eaeef2 16px);
+           color: #57606a; border: 1px dashed #d0d7de; font-size: 12px; text-align: center; }
+.head { display: flex; align-items: baseline; gap: 10px; flex-wrap: wrap; }
+.path { font-weight: 600; font-size: 15px; overflow-wrap: anywhere; }
+.badge { color: #fff; border-radius: 10px; padding: 1px 9px; font-size: 12px; font-weight: 600; }
+.meta { color: #57606a; margin: 2px 0; }
+.era { margin: 4px 0; color: #0550ae; }
+ul.msgs { margin: 6px 0; padding-left: 0; list-style: none; }
+ul.msgs li { padding: 3px 8px; margin: 2px 0; border-radius: 4px; overflow-wrap: anywhere;
+             white-space: pre-wrap; }
+ul.errors li { background: #ffebe9; color: #82071e; }
+ul.warnings li { background: #fff8c5; color: #4d2d00; }
+.note { font-style: italic; color: #57606a; }
+details { margin-top: 4px; color: #57606a; }
+details pre { white-space: pre-wrap; margin: 4px 0; }
+.links a { color: #0969da; margin-right: 10px; font-size: 12px; }
+footer { color: #57606a; font-size: 12px; margin-top: 20px; }
+)";
+}
+
+/// The thumbnails of a scene's images, or a placeholder saying why there is none.
+std::string thumbnails(const SceneResult& r) {
+    std::string html;
+    for (const ImageInfo& image : r.images) {
+        if (!image.exists) continue;
+        const std::string url = escapeHtml(urlPath(image.path));
+        std::string caption = fs::path(image.path).filename().string();
+        if (image.width > 0)
+            caption +=
+                " (" + std::to_string(image.width) + "x" + std::to_string(image.height) + ")";
+        html += "<figure><a href=\"" + url + "\"><img src=\"" + url + "\" alt=\"" +
+                escapeHtml(image.path) + "\" loading=\"lazy\"></a><figcaption>" +
+                escapeHtml(caption) + "</figcaption></figure>";
+    }
+    if (html.empty()) {
+        const char* why = r.status == Status::Helper ? "helper: nothing to render" : "no image";
+        html = std::string("<div class=\"noimage\">") + why + "</div>";
+    }
+    return "<div class=\"thumbs\">" + html + "</div>";
+}
+
+/// A list of messages of one kind (errors or warnings), escaped; empty if there are none.
+std::string messageList(const std::vector<std::string>& messages, const char* kind) {
+    if (messages.empty()) return "";
+    std::string html = std::string("<ul class=\"msgs ") + kind + "\">";
+    for (const std::string& m : messages) html += "<li class=\"mono\">" + escapeHtml(m) + "</li>";
+    return html + "</ul>";
+}
+
+/// The line of numbers under a scene's path: wall time, render time, rays, images.
+std::string metaLine(const SceneResult& r) {
+    if (r.status == Status::Helper) return "never calls gr.render: a module for other scenes";
+    std::string line = seconds(r.wallSeconds) + " in all";
+    if (r.haveStats)
+        line += " &middot; render " + seconds(r.renderSeconds) + " &middot; " + withCommas(r.rays) +
+                " rays";
+    const size_t n = r.images.size();
+    line += " &middot; " + std::to_string(n) + (n == 1 ? " image" : " images");
+    return line;
+}
+
+/// Notes about images: missing after the batch, or written by more than one scene.
+std::vector<std::string> imageNotes(const SceneResult& r) {
+    std::vector<std::string> notes;
+    for (const ImageInfo& image : r.images) {
+        if (!image.exists) notes.push_back(image.path + " was written but is gone");
+        for (const std::string& other : image.alsoBy)
+            notes.push_back(image.path + " is also written by " + other +
+                            "; the picture is whichever finished last");
+    }
+    return notes;
+}
+
+/// One scene's card: thumbnails on the left; path, status, era, numbers, messages on the right.
+std::string sceneCard(const SceneResult& r) {
+    std::string html = std::string("<section class=\"scene ") + statusClass(r.status) + "\" id=\"" +
+                       escapeHtml(urlPath(r.path)) + "\" data-path=\"" + escapeHtml(r.path) +
+                       "\" data-status=\"" + statusWord(r.status) + "\">";
+    html += thumbnails(r) + "<div>";
+    html += "<div class=\"head\"><span class=\"path mono\">" + escapeHtml(r.path) +
+            "</span><span class=\"badge\">" + statusWord(r.status) + "</span></div>";
+    if (!r.era.empty()) html += "<div class=\"era\">era: " + escapeHtml(r.era) + "</div>";
+    html += "<div class=\"meta\">" + metaLine(r) + "</div>";
+    if (!r.note.empty()) html += "<div class=\"note\">" + escapeHtml(r.note) + "</div>";
+    html += messageList(r.errors, "errors");
+    std::vector<std::string> warnings = r.warnings;
+    for (const std::string& n : imageNotes(r)) warnings.push_back(n);
+    html += messageList(warnings, "warnings");
+    if (!r.other.empty()) {
+        std::string text;
+        for (const std::string& line : r.other) text += line + "\n";
+        html += "<details><summary>other output (" + std::to_string(r.other.size()) +
+                " lines)</summary><pre class=\"mono\">" + escapeHtml(text) + "</pre></details>";
+    }
+    html += "<div class=\"links\"><a href=\"" + escapeHtml(urlPath(r.path)) + "\">scene</a>";
+    if (r.status != Status::Helper)
+        html += "<a href=\"" + escapeHtml(urlPath(r.stderrLog)) + "\">stderr</a><a href=\"" +
+                escapeHtml(urlPath(r.stdoutLog)) + "\">stdout</a>";
+    return html + "</div></div></section>\n";
+}
+
+/// The count of scenes with status `s`.
+size_t countOf(const std::vector<SceneResult>& results, Status s) {
+    return static_cast<size_t>(std::count_if(results.begin(), results.end(),
+                                             [&](const SceneResult& r) { return r.status == s; }));
+}
+
+/// The summary at the top: one coloured count per status and links to the scenes that need a
+/// look (every status but ok and helper).
+std::string summary(const std::vector<SceneResult>& results) {
+    std::string html = "<div class=\"counts\">";
+    for (const Status s :
+         {Status::Ok, Status::Error, Status::TimedOut, Status::Crashed, Status::Helper}) {
+        const size_t n = countOf(results, s);
+        html += std::string("<span class=\"count ") + statusClass(s) + (n == 0 ? " zero" : "") +
+                "\">" + std::to_string(n) + " " + statusWord(s) + "</span>";
+    }
+    html += "</div>";
+    std::string attention;
+    for (const SceneResult& r : results)
+        if (r.status != Status::Ok && r.status != Status::Helper)
+            attention += "<a class=\"mono\" href=\"#" + escapeHtml(urlPath(r.path)) + "\">" +
+                         escapeHtml(r.path) + "</a>";
+    if (!attention.empty())
+        html += "<div class=\"attention\"><strong>Needs a look:</strong> " + attention + "</div>";
+    return html;
+}
+
+/// Write DIR/raybook-report.html.
+void writeReport(const fs::path& file, const std::vector<SceneResult>& results,
+                 const BatchInfo& info) {
+    std::string html =
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+        "<title>raybook batch: " +
+        escapeHtml(info.dir.filename().string()) + "</title><style>" + reportCss() +
+        "</style></head><body><main>\n";
+    html += "<h1>raybook batch report: " + escapeHtml(info.dir.filename().string()) + "</h1>";
+    html += "<p class=\"sub\"><span class=\"mono\">" + escapeHtml(info.dir.string()) +
+            "</span><br>" + std::to_string(results.size()) + " Lua files, rendered " +
+            escapeHtml(info.startedAt) + " in " + seconds(info.totalSeconds) + " with " +
+            std::to_string(info.jobs) + " at a time, at most " +
+            std::to_string(static_cast<int>(info.timeLimit)) +
+            " s each<br>each scene ran as <span class=\"mono\">rt " +
+            escapeHtml(info.passedOptions) + " SCENE.lua</span> in its own folder</p>\n";
+    html += summary(results) + "\n";
+    for (const SceneResult& r : results) html += sceneCard(r);
+    html += "<footer>Full logs: <span class=\"mono\">" + std::string(kReportFolder) +
+            "/</span>. Thumbnails link to the images, which each scene wrote in its own "
+            "folder.</footer>\n</main></body></html>\n";
+    std::ofstream out(file, std::ios::binary);
+    out << html;
+    if (!out) throw InputError("--batch: cannot write " + file.string());
+}
+
+/// The local date and time, for the report.
+std::string now() {
+    const std::time_t t = std::time(nullptr);
+    char text[64];
+    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M", std::localtime(&t));
+    return text;
+}
+
+/// The options as one line, for the report.
+std::string joined(const std::vector<std::string>& words) {
+    std::string line;
+    for (const std::string& w : words) line += (line.empty() ? "" : " ") + w;
+    return line;
+}
+
+}  // namespace
+
+int runBatch(const CommandLine& cl, int, char** argv) {
+    const auto t0 = Clock::now();
+    // Step 1: check DIR and the options that make no sense for a batch.
+    std::error_code ec;
+    if (!fs::is_directory(cl.batchDir, ec))
+        throw InputError("--batch: '" + cl.batchDir + "' is not a folder");
+    if (!cl.output.empty())
+        throw InputError("--batch: --output names one image; each scene writes its own");
+    BatchInfo info;
+    info.dir = fs::absolute(cl.batchDir).lexically_normal();
+    if (info.dir.filename().empty()) info.dir = info.dir.parent_path();
+
+    // Step 2: find the scenes; set the helpers aside.
+    std::vector<SceneResult> results;
+    for (const std::string& path : findLuaFiles(info.dir)) {
+        SceneResult r;
+        r.path = path;
+        r.status = isHelper(info.dir / path) ? Status::Helper : Status::Ok;
+        r.stdoutLog = std::string(kReportFolder) + "/" + path + ".stdout.txt";
+        r.stderrLog = std::string(kReportFolder) + "/" + path + ".stderr.txt";
+        results.push_back(r);
+    }
+    const size_t helpers = countOf(results, Status::Helper);
+    if (results.size() == helpers)
+        throw InputError("--batch: no scenes under '" + cl.batchDir + "' (no .lua file" +
+                         (helpers ? " that calls gr.render" : "") + ")");
+
+    // Step 3: run the scenes; the report folder starts empty each time.
+    fs::remove_all(info.dir / kReportFolder);
+    fs::create_directories(info.dir / kReportFolder);
+    const std::vector<std::string> options = childOptions(cl);
+    info.jobs = jobCount(cl, results.size() - helpers);
+    info.timeLimit = cl.sceneTimeLimit;
+    info.passedOptions = joined(options);
+    info.startedAt = now();
+    if (!cl.quiet) {
+        std::printf("rendering %zu scenes under %s, %d at a time, at most %d s each\n",
+                    results.size() - helpers, info.dir.c_str(), info.jobs,
+                    static_cast<int>(info.timeLimit));
+        for (const SceneResult& r : results)
+            if (r.status == Status::Helper) printSceneLine(r);
+    }
+    runScenes(info.dir, selfExecutable(argv), options, info.jobs, info.timeLimit, cl.quiet,
+              &results);
+    noteSharedImages(&results);
+
+    // Step 4: the report, and the summary line.
+    info.totalSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    const fs::path report = info.dir / kReportPage;
+    writeReport(report, results, info);
+    const size_t failed = countOf(results, Status::Error) + countOf(results, Status::Crashed);
+    std::printf("%zu rendered, %zu failed, %zu timed out\n", countOf(results, Status::Ok), failed,
+                countOf(results, Status::TimedOut));
+    std::printf("report: %s (%.1f s)\n", report.c_str(), info.totalSeconds);
+    return 0;
 }
 
 }  // namespace rb

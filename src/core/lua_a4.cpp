@@ -1,5 +1,7 @@
 // The CS488 A4 scene language: gr.node, gr.joint, gr.sphere, gr.cube, gr.nh_sphere, gr.nh_box,
 // gr.material, gr.light, gr.render and the node methods. gr.mesh comes with chapter 3.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -118,7 +120,7 @@ int materialTable(lua_State* L) {
 // [lua-material-table]
 
 int a4Material(lua_State* L) {
-    if (lua_gettop(L) > 3)
+    if (lua_gettop(L) > 3 && lua_type(L, 4) == LUA_TSTRING)
         throw InputError(
             "gr.material: more than 3 arguments is seed 000's dialect (\"reflect\", "
             "\"refract\", \"glossy\"), which needs chapter 4 (reflection) or later");
@@ -197,6 +199,15 @@ int grLight(lua_State* L) {
 std::shared_ptr<SceneNode> checkSelf(lua_State* L, const char* call, int count,
                                      const char* signature) {
     auto node = checkNode(L, 1, call, "self");
+    if (lua_gettop(L) - 1 > count) {
+        // Extra arguments are what the course framework ignores: warn, then drop them.
+        const int extra = lua_gettop(L) - 1 - count;
+        sceneWarning(L, std::string(call) + " extra",
+                     std::string(call) + ": ignored " + std::to_string(extra) + " extra argument" +
+                         (extra == 1 ? "" : "s") + " after " + signature +
+                         ", as the course framework does");
+        lua_settop(L, count + 1);
+    }
     if (lua_gettop(L) - 1 != count)
         throw InputError(std::string(call) + " expects " + std::to_string(count) + " argument" +
                          (count == 1 ? "" : "s") + " " + signature + ", got " +
@@ -204,11 +215,27 @@ std::shared_ptr<SceneNode> checkSelf(lua_State* L, const char* call, int count,
     return node;
 }
 
+/// True when a and b agree to within 1e-9 of their largest entry: products of the same
+/// transforms in either order, differing only by rounding.
+bool nearlyEqual(const Mat4& a, const Mat4& b) {
+    double scale = 0.0, diff = 0.0;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            scale = std::max({scale, std::abs(a[c][r]), std::abs(b[c][r])});
+            diff = std::max(diff, std::abs(a[c][r] - b[c][r]));
+        }
+    return diff <= 1e-9 * std::max(scale, 1.0);
+}
+
 // [lua-transforms]
 /// Apply a local transform: pre-multiplied (calls apply in the order written) in A4, and
 /// post-multiplied for legacy (pre-2015) scenes, which list their transforms in reverse.
 void applyTransform(lua_State* L, SceneNode& node, const Mat4& m) {
-    node.transform = sceneBuilder(L).options.legacy ? node.transform * m : m * node.transform;
+    SceneBuilder& builder = sceneBuilder(L);
+    const Mat4 pre = m * node.transform, post = node.transform * m;
+    // Note where the order first changes the result: only then does the era matter.
+    if (builder.orderMatters.empty() && !nearlyEqual(pre, post)) builder.orderMatters = luaCaller(L);
+    node.transform = builder.legacy ? post : pre;
 }
 
 int nodeScale(lua_State* L) {
@@ -311,6 +338,7 @@ int grRender(lua_State* L) {
     job.lights = checkLights(L, 10);
     // Seed 001's extra arguments; their chapters (adaptive AA, soft shadows, glossy, DOF)
     // read them.
+    if (lua_gettop(L) >= 11) noteEraSign(L, Era::Legacy, "seed 001's gr.render with 11-14 arguments");
     if (lua_gettop(L) >= 11) job.options["aa"] = checkNumber(L, 11, "gr.render", "aa");
     if (lua_gettop(L) >= 12) job.options["ss"] = checkNumber(L, 12, "gr.render", "ss");
     if (lua_gettop(L) >= 13) job.options["dist"] = checkNumber(L, 13, "gr.render", "dist");

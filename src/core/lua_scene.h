@@ -10,17 +10,20 @@
 #include <vector>
 
 #include "core/feature.h"
+#include "core/scene_era.h"
 #include "core/scene_graph.h"
 
 namespace rb {
 
 /// How to run a scene script.
 struct SceneLoadOptions {
-    bool legacy = false;     ///< Course framework before 2015: transforms post-multiply.
+    EraChoice era = EraChoice::Detect;  ///< --legacy, --modern, or decided from the scene.
     bool unsafeLua = false;  ///< Allow os and io.
     long long instructionLimit = 1'000'000'000;  ///< Lua VM instructions before we give up.
     size_t memoryLimit = size_t(2) << 30;        ///< Bytes the script may allocate.
     std::vector<std::string> assetDirs;          ///< --assets DIR, searched after the scene's folder.
+    bool lenient = false;  ///< --lenient: unknown calls and methods are ignored, with a warning.
+    std::vector<std::string> dialects;  ///< --dialect FILE.lua: run before the scene.
 };
 
 /// A render request after the script ran: the job plus the world it renders.
@@ -36,6 +39,14 @@ struct SceneLoadTimes {
     double total = 0.0;     ///< The whole script run, including the two below.
     double meshLoad = 0.0;  ///< Reading OBJ files.
     double meshBvh = 0.0;   ///< Building the meshes' BVHs.
+};
+
+/// What loading a scene found out besides its renders: times, the era and the warnings.
+struct SceneLoadReport {
+    SceneLoadTimes times;
+    EraDecision era;
+    std::vector<std::string> warnings;  ///< "scene.lua:12: gr.sphere: ..." one per kind.
+    std::vector<std::string> ignored;   ///< --lenient: what was ignored, with counts.
 };
 
 /// What the Lua calls build while the script runs. One per load; reached through the
@@ -60,7 +71,14 @@ struct SceneBuilder {
     std::map<std::string, OptionSpec> optionNames;  ///< gr.option names and their ranges.
     std::map<std::string, double> sceneOptions;     ///< gr.option values set so far.
     SceneLoadTimes times;
-    bool warnedLegacy = false;  ///< The pre-2015 hint was printed.
+    bool legacy = false;  ///< This run's era: transforms post-multiply (pre-2015 framework).
+    std::vector<EraSign> eraSigns;  ///< What the scene used that belongs to one era.
+    std::string orderMatters;       ///< Where a transform first did not commute with the node's.
+    /// Warnings by kind: the first message (with its line) and how often the kind occurred.
+    std::vector<std::pair<std::string, std::string>> warningKinds;
+    std::map<std::string, int> warningCounts;
+    std::vector<std::pair<std::string, std::string>> ignoredKinds;  ///< --lenient, the same way.
+    std::map<std::string, int> ignoredCounts;
     int lastChapter = 0;        ///< The newest chapter built into this binary.
     long long instructions = 0;
     size_t bytesInUse = 0;
@@ -92,7 +110,7 @@ class LuaBindings {
 /// every built feature. Throws InputError ("file:line: what was expected") for bad input.
 std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& features,
                                     const SceneLoadOptions& options,
-                                    SceneLoadTimes* times = nullptr);
+                                    SceneLoadReport* report = nullptr);
 
 // ---- Helpers for writing Lua calls --------------------------------------------------------
 // A call written with RB_LUA_CALL may throw InputError with a message that names the call and
@@ -118,7 +136,14 @@ int luaGuard(lua_State* L) {
 
 /// The SceneBuilder of the running script.
 SceneBuilder& sceneBuilder(lua_State* L);
-/// Throw unless the call received between min and max arguments.
+/// "scene.lua:12": where the running Lua code called the current C function.
+std::string luaCaller(lua_State* L);
+/// Record a warning of kind `kind` (once per kind; later ones only count) at the caller's line.
+void sceneWarning(lua_State* L, const std::string& kind, const std::string& message);
+/// Record that the scene used `what`, a sign of `era` (the first use of each is kept).
+void noteEraSign(lua_State* L, Era era, const std::string& what);
+/// Throw unless the call received at least min arguments. More than max is what the course
+/// framework ignores: a warning, and the extra arguments are not read.
 void checkArgCount(lua_State* L, const char* call, int min, int max, const char* signature);
 /// A finite number at stack index `index`; `label` names it in messages
 /// ("gr.material: field 'shininess'").

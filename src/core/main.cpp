@@ -69,11 +69,20 @@ int run(int argc, char** argv) {
     // override what it asked for.
     auto t0 = Clock::now();
     SceneLoadOptions loadOptions;
-    loadOptions.legacy = cl.legacy;
+    loadOptions.era = cl.legacy ? EraChoice::Legacy : cl.modern ? EraChoice::Modern : EraChoice::Detect;
     loadOptions.unsafeLua = cl.unsafeLua;
     loadOptions.assetDirs = cl.assetDirs;
-    SceneLoadTimes loadTimes;
-    std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions, &loadTimes);
+    loadOptions.lenient = cl.lenient;
+    loadOptions.dialects = cl.dialects;
+    SceneLoadReport load;
+    std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions, &load);
+    const SceneLoadTimes& loadTimes = load.times;
+    // The era, when it matters, and what the scene did that the course framework would
+    // have let pass.
+    if (!load.era.line.empty())
+        std::fprintf(stderr, "rt: era: %s\n", load.era.line.c_str());
+    for (const std::string& warning : load.warnings)
+        std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());
 
     for (size_t k = 0; k < renders.size(); ++k) {
         LoadedRender& r = renders[k];
@@ -148,6 +157,12 @@ int run(int argc, char** argv) {
             if (!structure.empty()) std::fprintf(stderr, "  bvh        %s\n", structure.c_str());
             std::fprintf(stderr, "  memory     peak %.1f MiB\n", peakMemoryMiB());
         }
+    }
+    // Under --lenient, stderr ends with everything that was ignored.
+    if (!load.ignored.empty()) {
+        std::fprintf(stderr, "rt: --lenient ignored %zu unknown name%s:\n", load.ignored.size(),
+                     load.ignored.size() == 1 ? "" : "s");
+        for (const std::string& line : load.ignored) std::fprintf(stderr, "rt:   %s\n", line.c_str());
     }
     return 0;
 }

@@ -26,6 +26,25 @@ void setIfNonZero(lua_State* L, Material& m, const char* name, double value, con
     if (value != 0.0) setMaterialParam(L, m, name, value, call);
 }
 
+/// gr.material(kd, ks, shininess, r, ...): students' most common extension of A4 gives the
+/// fourth argument as the reflectivity. raybook reads it so (a warning says so once); the
+/// arguments after it mean too many different things to guess, so they are ignored.
+int studentMaterial(lua_State* L) {
+    const int n = lua_gettop(L);
+    auto m = phongBase(L, "gr.material");
+    const double r = checkNumber(L, 4, "gr.material", "reflectivity");
+    if (r < 0.0 || r > 1.0)
+        throw InputError("gr.material: argument 4 (reflectivity) must be from 0 to 1");
+    setIfNonZero(L, *m, "reflect", r, "gr.material");
+    sceneWarning(L, "gr.material numeric",
+                 std::string("gr.material: read numeric argument 4 as the reflectivity (the ") +
+                     "common student extension)" +
+                     (n > 4 ? "; ignored arguments 5-" + std::to_string(n) : std::string()) +
+                     "; a --dialect file can read them otherwise");
+    pushMaterial(L, m);
+    return 1;
+}
+
 // [lua-seed000-material]
 /// gr.material with seed 000's keyword tail: "reflect", r | "refract", ior |
 /// "glossy", fuzz, then optionally "reflect", r and "refract", ior.
@@ -33,6 +52,8 @@ int grMaterialSeed000(lua_State* L) {
     const int n = lua_gettop(L);
     if (n == 1 && lua_type(L, 1) == LUA_TTABLE) return materialTable(L);
     if (n <= 3) return a4Material(L);
+    if (lua_type(L, 4) == LUA_TNUMBER) return studentMaterial(L);
+    noteEraSign(L, Era::Modern, "seed 000's gr.material keywords");
     auto m = phongBase(L, "gr.material");
     for (int arg = 4; arg <= n; arg += 2) {
         const std::string key = checkString(L, arg, "gr.material", "keyword");
@@ -59,6 +80,7 @@ int grMaterialSeed000(lua_State* L) {
 
 int grPhongMat(lua_State* L) {
     // Seed 001: gr.phongMat(kd, ks, shininess, reflectivity, glossiness).
+    noteEraSign(L, Era::Legacy, "seed 001's gr.phongMat");
     checkArgCount(L, "gr.phongMat", 5, 5, "(kd, ks, shininess, reflectivity, glossiness)");
     auto m = phongBase(L, "gr.phongMat");
     setIfNonZero(L, *m, "reflect", checkNumber(L, 4, "gr.phongMat", "reflectivity"),
@@ -73,6 +95,7 @@ int grFancyMaterial(lua_State* L) {
     // Seed 002: gr.fancy_material(kd, ks, shininess, reflectivity, ior, transparency,
     // glossiness).
     const char* call = "gr.fancy_material";
+    noteEraSign(L, Era::Modern, "seed 002's gr.fancy_material");
     checkArgCount(L, call, 7, 7,
                   "(kd, ks, shininess, reflectivity, ior, transparency, glossiness)");
     auto m = phongBase(L, call);

@@ -26,6 +26,7 @@ InputError badArgument(const char* call, int arg, const char* name, const char* 
 /// 1 − transparency.
 int grTransMat(lua_State* L) {
     const char* call = "gr.transMat";
+    noteEraSign(L, Era::Legacy, "seed 001's gr.transMat");
     checkArgCount(L, call, 4, 4, "(kd, indexOfRefraction, transparency, scatter)");
     auto m = std::make_shared<Material>();
     m->kd = checkVec3(L, 1, call, "kd");

@@ -175,8 +175,21 @@ int lightArgCountError(lua_State* L) {
 /// builds (and checks) the point light from the first three arguments in both forms. This
 /// function keeps no C++ object alive across the Lua calls, so a Lua error may pass through.
 int grLight(lua_State* L) {
-    const int n = lua_gettop(L);
-    if (n != 3 && n != 6) return luaGuard<lightArgCountError>(L);
+    int n = lua_gettop(L);
+    if (n < 3) return luaGuard<lightArgCountError>(L);
+    if (n != 3 && n != 6) {
+        // Extra arguments the course framework would ignore: keep the form they extend.
+        const int keep = n < 6 ? 3 : 6;
+        sceneWarning(L, "gr.light extra",
+                     "gr.light: ignored " + std::to_string(n - keep) + " extra argument" +
+                         (n - keep == 1 ? "" : "s") + " after its " + std::to_string(keep) +
+                         (keep == 3 ? " (position, colour, {c0,c1,c2})"
+                                    : " (..., {length, width}, normal, left)") +
+                         ", as the course framework does");
+        lua_settop(L, keep);
+        n = keep;
+    }
+    if (n == 6) noteEraSign(L, Era::Legacy, "seed 001's 6-argument gr.light");
     lua_pushvalue(L, lua_upvalueindex(1));
     for (int i = 1; i <= 3; ++i) lua_pushvalue(L, i);
     const int status = lua_pcall(L, 3, 1, 0);
@@ -222,6 +235,7 @@ int grAreaLight(lua_State* L) {
 /// gr.ball_light{position=, colour=, falloff=, radius=, samples=}.
 int grBallLight(lua_State* L) {
     const char* call = "gr.ball_light";
+    noteEraSign(L, Era::Modern, "seed 002's gr.ball_light");
     PointLight light;
     double radius = 0.0;
     int samples = AreaLightShape::kDefaultSamplesPerAxis;
