@@ -29,8 +29,8 @@ constexpr const char* kFileType = "rb.file";
 constexpr int kMaxLineFormats = 250;
 
 /// The standard io names the sandbox leaves out: reading one says why.
-constexpr const char* kLeftOutIo[] = {"flush",  "input",   "output", "popen", "read",
-                                      "stderr", "stdin",   "stdout", "tmpfile", "write"};
+constexpr const char* kLeftOutIo[] = {"flush",  "input", "output", "popen",   "read",
+                                      "stderr", "stdin", "stdout", "tmpfile", "write"};
 /// The standard file methods the sandbox leaves out.
 constexpr const char* kLeftOutMethods[] = {"flush", "seek", "setvbuf", "write"};
 
@@ -189,8 +189,9 @@ int openChecked(lua_State* L, const char* call, const char* name, const char* mo
 SandboxFile* checkFile(lua_State* L, int arg, const char* method) {
     auto* file = static_cast<SandboxFile*>(luaL_testudata(L, arg, kFileType));
     if (!file) {
-        luaL_error(L, "file:%s: argument %d must be a file, got %s (call methods with a colon: f:%s(...))",
-                   method, arg, luaL_typename(L, arg), method);
+        luaL_error(
+            L, "file:%s: argument %d must be a file, got %s (call methods with a colon: f:%s(...))",
+            method, arg, luaL_typename(L, arg), method);
         return nullptr;  // not reached: luaL_error does not return
     }
     if (!file->fp) luaL_error(L, "attempt to use a closed file");
@@ -341,15 +342,22 @@ int readFormats(lua_State* L, std::FILE* f, int first) {
             const char* format = luaL_checkstring(L, n);
             if (*format == '*') ++format;  // Lua 5.1 wrote "*l", "*a", "*n"
             switch (*format) {
-                case 'l': success = readLine(L, f, true); break;
-                case 'L': success = readLine(L, f, false); break;
-                case 'n': success = NumberReader(f).read(L); break;
+                case 'l':
+                    success = readLine(L, f, true);
+                    break;
+                case 'L':
+                    success = readLine(L, f, false);
+                    break;
+                case 'n':
+                    success = NumberReader(f).read(L);
+                    break;
                 case 'a':
                     readAll(L, f);
                     success = true;
                     break;
                 default:
-                    return luaL_argerror(L, n, "invalid format (use \"l\", \"L\", \"n\", \"a\" or a count)");
+                    return luaL_argerror(
+                        L, n, "invalid format (use \"l\", \"L\", \"n\", \"a\" or a count)");
             }
         }
     }
