@@ -234,7 +234,8 @@ void applyTransform(lua_State* L, SceneNode& node, const Mat4& m) {
     SceneBuilder& builder = sceneBuilder(L);
     const Mat4 pre = m * node.transform, post = node.transform * m;
     // Note where the order first changes the result: only then does the era matter.
-    if (builder.orderMatters.empty() && !nearlyEqual(pre, post)) builder.orderMatters = luaCaller(L);
+    if (builder.orderMatters.empty() && !nearlyEqual(pre, post) && !calledFromDialect(L))
+        builder.orderMatters = luaCaller(L);
     node.transform = builder.legacy ? post : pre;
 }
 

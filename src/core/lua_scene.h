@@ -140,6 +140,8 @@ SceneBuilder& sceneBuilder(lua_State* L);
 std::string luaCaller(lua_State* L);
 /// Record a warning of kind `kind` (once per kind; later ones only count) at the caller's line.
 void sceneWarning(lua_State* L, const std::string& kind, const std::string& message);
+/// True when the running C function was called from a --dialect file, not the scene.
+bool calledFromDialect(lua_State* L);
 /// Record that the scene used `what`, a sign of `era` (the first use of each is kept).
 void noteEraSign(lua_State* L, Era era, const std::string& what);
 /// Throw unless the call received at least min arguments. More than max is what the course

@@ -1,0 +1,302 @@
+/// \file
+/// Chapter 2 tests of course compatibility: the framework's two eras, its tolerance of extra
+/// arguments, `--lenient` and `--dialect`.
+///
+/// Chapter 2 claims that a TA can render a class's scenes as the course framework would,
+/// without flags: a scene's own calls tell which framework it was written for (the pre-2015
+/// one post-multiplied transforms), and rt runs it in that era and says why in one line; extra
+/// trailing arguments, which the framework ignored, are warnings; under `--lenient` unknown
+/// calls and methods are replaced by visible stand-ins and listed; and a dialect file, run
+/// before the scene, maps a student's own calls onto raybook's. Each test writes a small
+/// scene, loads it the way `rt` does, and checks the exact outcome.
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/lua_scene.h"
+#include "core/scene_era.h"
+#include "test_helpers.h"
+
+using Catch::Contains;
+using rb::Vec3;
+
+namespace {
+
+/// A scene and what loading it reported.
+struct Loaded {
+    std::vector<rb::LoadedRender> renders;
+    rb::SceneLoadReport report;
+};
+
+/// Load `lua` (written to scene.lua in a fresh folder, with `files` beside it) as rt does.
+Loaded load(const std::string& lua, rb::SceneLoadOptions options = {}, int chapters = 7,
+            const std::vector<std::pair<std::string, std::string>>& files = {}) {
+    rbtest::TempDir dir;
+    for (const auto& [name, text] : files) {
+        const std::string path = dir.write(name, text);
+        if (name.size() > 4 && name.substr(name.size() - 4) == ".lua" && name != "scene.lua")
+            options.dialects.push_back(path);
+    }
+    Loaded result;
+    result.renders = rb::loadScene(dir.write("scene.lua", lua), rbtest::chapters(chapters), options,
+                                   &result.report);
+    return result;
+}
+
+/// The world bounds of the first instance named `name`.
+rb::AABB boundsOf(const rb::LoadedRender& render, const std::string& name) {
+    for (const rb::Instance& i : render.instances)
+        if (i.name == name) return i.worldBounds;
+    FAIL("no instance named " << name);
+    return {};
+}
+
+bool near(const Vec3& a, const Vec3& b) {
+    return glm::length(a - b) < 1e-9;
+}
+
+/// A wall placed the pre-2015 way: translate, then scale (post-multiplied: scaled first).
+const std::string kWall =
+    "local wall = gr.cube('wall')\n"
+    "wall:translate(-5, 0, -6)\n"
+    "wall:scale(10, 4, 0.5)\n"
+    "root:add_child(wall)\n";
+
+}  // namespace
+
+SCENARIO("the era is decided from the scene's signs and said in one line", "[ch02][era]") {
+    const std::vector<rb::EraSign> legacy = {{rb::Era::Legacy, "unpack", "s.lua:3"}};
+    const std::vector<rb::EraSign> modern = {
+        {rb::Era::Modern, "gr.mesh with an .obj file", "s.lua:7"}};
+    std::vector<rb::EraSign> both = legacy;
+    both.push_back(modern[0]);
+    GIVEN("only pre-2015 signs") {
+        const rb::EraDecision d = rb::decideEra(rb::EraChoice::Detect, legacy, "");
+        THEN("the era is pre-2015, and the line names the sign and its place") {
+            CHECK(d.era == rb::Era::Legacy);
+            CHECK_THAT(d.line, Contains("pre-2015") && Contains("unpack (s.lua:3)"));
+        }
+    }
+    GIVEN("only current signs") {
+        const rb::EraDecision d = rb::decideEra(rb::EraChoice::Detect, modern, "s.lua:2");
+        THEN("the era is current") {
+            CHECK(d.era == rb::Era::Modern);
+            CHECK_THAT(d.line, Contains("current") && Contains(".obj file (s.lua:7)"));
+        }
+    }
+    GIVEN("signs of both eras") {
+        const rb::EraDecision d = rb::decideEra(rb::EraChoice::Detect, both, "");
+        THEN("the era is current by default, and the line says the signs conflict") {
+            CHECK(d.era == rb::Era::Modern);
+            CHECK_THAT(d.line, Contains("conflict") && Contains("unpack") && Contains(".obj"));
+        }
+    }
+    GIVEN("no signs") {
+        THEN("the era is current, said only when the order of the transforms matters") {
+            CHECK(rb::decideEra(rb::EraChoice::Detect, {}, "").line.empty());
+            const rb::EraDecision d = rb::decideEra(rb::EraChoice::Detect, {}, "s.lua:9");
+            CHECK(d.era == rb::Era::Modern);
+            CHECK_THAT(d.line, Contains("no sign") && Contains("s.lua:9") && Contains("--legacy"));
+        }
+    }
+    GIVEN("--legacy with current signs") {
+        const rb::EraDecision d = rb::decideEra(rb::EraChoice::Legacy, modern, "");
+        THEN("the flag wins and the line says so") {
+            CHECK(d.era == rb::Era::Legacy);
+            CHECK_THAT(d.line, Contains("forced by --legacy"));
+        }
+    }
+}
+
+SCENARIO("a seed-001 scene's translate-then-scale walls stand where its author put them",
+         "[ch02][era]") {
+    GIVEN("seed 001's dialect (gr.phongMat) and a wall written translate, then scale") {
+        const std::string lua =
+            "root = gr.node('root')\n"
+            "local white = gr.phongMat({0.8, 0.8, 0.8}, {0, 0, 0}, 1, 0, 0)\n" +
+            kWall + "wall:set_material(white)\n" + rbtest::renderLine();
+        WHEN("rt loads it without flags") {
+            const Loaded l = load(lua);
+            THEN("the scene is recognised as pre-2015 from gr.phongMat") {
+                CHECK(l.report.era.era == rb::Era::Legacy);
+                CHECK_THAT(l.report.era.line, Contains("gr.phongMat (") && Contains("scene.lua:2)"));
+            }
+            THEN("the unit cube is scaled to 10 x 4 x 0.5, then moved to x -5..5, z -6..-5.5") {
+                // Source: post-multiplication gives M = T(-5, 0, -6) · S(10, 4, 0.5), so the
+                // cube's corner (1,1,1) lands at (-5 + 10, 0 + 4, -6 + 0.5).
+                const rb::AABB b = boundsOf(l.renders[0], "wall");
+                CHECK(near(b.lo, Vec3(-5, 0, -6)));
+                CHECK(near(b.hi, Vec3(5, 4, -5.5)));
+            }
+        }
+        WHEN("the current order is forced with --modern") {
+            rb::SceneLoadOptions modern;
+            modern.era = rb::EraChoice::Modern;
+            const Loaded l = load(lua, modern);
+            THEN(
+                "the wall is scaled after it moved: far off, 50 x 0 .. -3 deep, where the seed "
+                "never "
+                "put it") {
+                // Source: M = S(10, 4, 0.5) · T(-5, 0, -6): the corner (0,0,0) goes to (-50, 0,
+                // -3).
+                const rb::AABB b = boundsOf(l.renders[0], "wall");
+                CHECK(near(b.lo, Vec3(-50, 0, -3)));
+            }
+        }
+    }
+}
+
+SCENARIO("Lua 5.1's unpack and string.gfind mark a scene as pre-2015", "[ch02][era]") {
+    GIVEN("a scene that places its wall with unpack, and no other sign") {
+        const std::string lua = "root = gr.node('root')\nlocal p = {-5, 0, -6}\n" +
+                                std::string(
+                                    "local wall = gr.cube('wall')\n"
+                                    "wall:translate(unpack(p))\n"
+                                    "wall:scale(10, 4, 0.5)\n"
+                                    "root:add_child(wall)\n") +
+                                rbtest::renderLine();
+        const Loaded l = load(lua);
+        THEN("it runs as pre-2015, and unpack still returns every value") {
+            CHECK(l.report.era.era == rb::Era::Legacy);
+            CHECK_THAT(l.report.era.line, Contains("unpack (") && Contains("scene.lua:4)"));
+            CHECK(near(boundsOf(l.renders[0], "wall").lo, Vec3(-5, 0, -6)));
+        }
+    }
+    GIVEN("a scene that iterates words with string.gfind") {
+        const Loaded l = load(
+            "local n = 0\nfor w in string.gfind('a b c', '%a') do n = n + 1 end\n"
+            "assert(n == 3)\nroot = gr.node('root')\n" +
+            rbtest::renderLine());
+        THEN("it is pre-2015 too") {
+            CHECK(l.report.era.era == rb::Era::Legacy);
+        }
+    }
+}
+
+SCENARIO("the loader notes where the order of transforms first matters", "[ch02][era]") {
+    GIVEN("one node moved twice, another rotated about one axis twice: calls that commute") {
+        const Loaded l = load("root = gr.node('root')\nlocal s = gr.sphere('s')\n"
+                              "s:translate(1, 0, 0)\ns:translate(0, 2, 0)\nroot:add_child(s)\n"
+                              "local t = gr.sphere('t')\n"
+                              "t:rotate('y', 10)\nt:rotate('y', 20)\nroot:add_child(t)\n" +
+                              rbtest::renderLine());
+        THEN("the era needs no word") { CHECK(l.report.era.line.empty()); }
+    }
+    GIVEN("a node scaled, then moved") {
+        const Loaded l = load(
+            "root = gr.node('root')\nlocal s = gr.sphere('s')\n"
+            "s:scale(2, 2, 2)\ns:translate(1, 0, 0)\nroot:add_child(s)\n" +
+            rbtest::renderLine());
+        THEN("the line says the order matters at the translate") {
+            CHECK_THAT(l.report.era.line, Contains("scene.lua:4"));
+        }
+    }
+}
+
+SCENARIO("extra trailing arguments are what the course framework ignores: a warning",
+         "[ch02][tolerance]") {
+    GIVEN("gr.sphere with two extra arguments, twice") {
+        const Loaded l = load(
+            "root = gr.node('root')\nroot:add_child(gr.sphere('s', 1, 2))\n"
+            "root:add_child(gr.sphere('t', 1, 2))\n" +
+            rbtest::renderLine());
+        THEN("both spheres exist, and one warning names the call, its line and the count") {
+            CHECK(l.renders[0].instances.size() == 2);
+            REQUIRE(l.report.warnings.size() == 1);
+            CHECK_THAT(l.report.warnings[0], Contains("scene.lua:2: gr.sphere: ignored 2 extra") &&
+                                                 Contains("(2 times)"));
+        }
+    }
+    GIVEN("gr.sphere whose name, which it reads, is a number") {
+        THEN("that is still an error") {
+            CHECK_THAT(rbtest::loadError("gr.sphere(3)\n"), Contains("must be a string"));
+        }
+    }
+    GIVEN("gr.material(kd, ks, shininess, 0.4) in a chapter-4 build") {
+        const Loaded l = load(
+            "root = gr.node('root')\nlocal s = gr.sphere('s')\n"
+            "s:set_material(gr.material({1,0,0}, {1,1,1}, 20, 0.4))\n"
+            "root:add_child(s)\n" +
+                rbtest::renderLine(),
+            {}, 4);
+        THEN("the fourth argument is the reflectivity, and a warning says so") {
+            REQUIRE(l.renders[0].instances[0].material != nullptr);
+            CHECK(l.renders[0].instances[0].material->params.at("reflect") == 0.4);
+            REQUIRE(l.report.warnings.size() == 1);
+            CHECK_THAT(l.report.warnings[0], Contains("reflectivity"));
+        }
+    }
+}
+
+SCENARIO("--lenient renders what raybook understands and lists what it ignored",
+         "[ch02][lenient]") {
+    const std::string lua =
+        "root = gr.node('root')\n"
+        "local m = gr.shiny_material({1,0,0}, 3)\n"
+        "local p = gr.torus('donut', 2, 0.5)\n"
+        "p:set_material(m)\n"
+        "p:wobble(3)\n"
+        "p:wobble(4)\n"
+        "root:add_child(p)\n"
+        "local s = gr.sphere('s')\ns:set_material(m)\nroot:add_child(s)\n" +
+        rbtest::renderLine();
+    GIVEN("a scene with an unknown material call, primitive and method") {
+        WHEN("it is loaded without --lenient") {
+            THEN("the first unknown call is an error naming it") {
+                CHECK_THAT(rbtest::loadError(lua, rbtest::chapters(7)),
+                           Contains("gr.shiny_material is not a raybook call"));
+            }
+        }
+        WHEN("it is loaded with --lenient") {
+            rb::SceneLoadOptions options;
+            options.lenient = true;
+            const Loaded l = load(lua, options);
+            THEN("the primitive is an empty node, and the sphere wears a magenta stand-in") {
+                REQUIRE(l.renders[0].instances.size() == 1);
+                const rb::Material* m = l.renders[0].instances[0].material;
+                REQUIRE(m != nullptr);
+                CHECK(near(m->kd, Vec3(0.8, 0.2, 0.8)));
+            }
+            THEN("the ignored list names each unknown once, with its count and first line") {
+                REQUIRE(l.report.ignored.size() == 3);
+                CHECK_THAT(l.report.ignored[0],
+                           Contains("gr.shiny_material") && Contains("scene.lua:2"));
+                CHECK_THAT(l.report.ignored[1], Contains("gr.torus") && Contains("scene.lua:3"));
+                CHECK_THAT(l.report.ignored[2], Contains("node:wobble") &&
+                                                    Contains("scene.lua:5") &&
+                                                    Contains("(2 times)"));
+            }
+        }
+    }
+}
+
+SCENARIO("a dialect file maps a student's own calls onto raybook's before the scene runs",
+         "[ch02][dialect]") {
+    GIVEN(
+        "a dialect defining gr.mirror(kd, r) and a node method :lift(h), and a scene using both") {
+        const std::string dialect =
+            "function gr.mirror(kd, r)\n"
+            "  return gr.material{kd = kd, ks = {0.5, 0.5, 0.5}, shininess = 50, reflect = r}\n"
+            "end\n"
+            "function gr.methods.node.lift(self, h) self:translate(0, h, 0) end\n";
+        const std::string lua =
+            "root = gr.node('root')\nlocal s = gr.sphere('s')\n"
+            "s:set_material(gr.mirror({0.2, 0.2, 0.2}, 0.7))\n"
+            "s:lift(3)\nroot:add_child(s)\n" +
+            rbtest::renderLine();
+        const Loaded l = load(lua, {}, 7, {{"student.lua", dialect}});
+        THEN("the sphere is a mirror of reflectivity 0.7, lifted by 3") {
+            const rb::Instance& i = l.renders[0].instances.at(0);
+            CHECK(i.material->params.at("reflect") == 0.7);
+            CHECK(near(i.worldBounds.lo, Vec3(-1, 2, -1)));
+        }
+    }
+    GIVEN("a dialect file with an error on its line 2") {
+        THEN("the message names the dialect file and line") {
+            CHECK_THROWS_WITH(
+                load(rbtest::renderLine(), {}, 7, {{"bad.lua", "local x = 1\nx()\n"}}),
+                Contains("bad.lua:2:"));
+        }
+    }
+}
