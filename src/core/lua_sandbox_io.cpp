@@ -168,11 +168,12 @@ int openChecked(lua_State* L, const char* call, const char* name, const char* mo
                 error = errno;
             }
         } else if (what == Lookup::Outside) {
+            // Say where the name leads unless the name says it already.
+            const std::string leads = found.path == name ? "" : " (" + found.path + ")";
             lua_pushfstring(L,
-                            "%s: cannot read '%s' (%s): raybook's sandbox reads only files "
-                            "under %s (--assets DIR adds a folder; ./rt --unsafe-lua lifts the "
-                            "limit)",
-                            call, name, found.path.c_str(), found.allowed.c_str());
+                            "%s: cannot read '%s'%s: raybook's sandbox reads only files under "
+                            "%s (--assets DIR adds a folder; ./rt --unsafe-lua lifts the limit)",
+                            call, name, leads.c_str(), found.allowed.c_str());
         }
     }
     if (what == Lookup::Outside) return luaL_error(L, "%s", lua_tostring(L, -1));
