@@ -1,7 +1,8 @@
+-- rt-era: modern
 -- equivalent.lua: the modern (Lua 5.4, current CS488 A4) form of the legacy village scenes
--- village-2012.lua and village-readobj-2014.lua in this folder. It must render to exactly the
--- same image as each of them rendered with --legacy (tests/scenes/run_all.sh compares the
--- PNG files byte for byte).
+-- village-2012.lua, village-readobj-2014.lua and village-io-2012.lua in this folder. It must
+-- render to exactly the same image as each of them, which rt renders as pre-2015 scenes
+-- (tests/scenes/run_all.sh compares the PNG files byte for byte).
 --
 -- What differs from the legacy files:
 --  * transforms are listed in the order they apply (the legacy files list them in reverse);

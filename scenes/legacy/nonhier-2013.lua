@@ -1,4 +1,5 @@
 -- rt-args: --legacy
+-- rt-era: legacy
 -- rt-same-as: nonhier-equivalent.lua
 -- nonhier-2013.lua: a pre-2015 (Lua 5.1) course scene whose non-hierarchical primitives also
 -- carry node transforms. In the old framework an nh_sphere's centre and radius (an nh_box's
@@ -7,6 +8,10 @@
 -- radius 0.5 centred at (3, 0, 0) moves it to (3, 2, 0), and 'scale(2, 2, 2)' on it gives a
 -- sphere of radius 1 centred at (6, 0, 0).
 -- Render it with --legacy: it must give exactly the picture of nonhier-equivalent.lua.
+-- The flag cannot be dropped: the scene uses only calls both frameworks share (gr.material,
+-- gr.node, gr.nh_sphere, gr.nh_box, scale/translate/rotate, gr.light, gr.render) and no table
+-- mesh, unpack or string.gfind, so nothing in it tells its era, and without the flag rt takes
+-- it for a current scene (its line says the order matters and no sign decides it).
 
 gold  = gr.material({0.9, 0.8, 0.4}, {0.8, 0.8, 0.4}, 25)
 blue  = gr.material({0.3, 0.4, 0.9}, {0.5, 0.5, 0.5}, 40)

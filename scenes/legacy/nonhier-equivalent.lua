@@ -1,3 +1,4 @@
+-- rt-era: modern
 -- nonhier-equivalent.lua: the modern (Lua 5.4) form of nonhier-2013.lua: the same
 -- non-hierarchical primitives with the same node transforms, listed in the order they apply.
 -- nonhier-2013.lua rendered with --legacy must give exactly this picture.

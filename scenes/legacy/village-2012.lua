@@ -1,6 +1,8 @@
--- rt-args: --legacy
+-- rt-era: legacy
+-- rt-same-as: equivalent.lua
 -- village-2012.lua: a scene written for the CS488 framework as it was before 2015 (Lua 5.1).
--- Render it with --legacy:   ./build/rt_ch3 --legacy scenes/legacy/village-2012.lua
+-- rt tells its era from the table mesh and unpack, so no flag is needed:
+--   ./build/rt_ch3 scenes/legacy/village-2012.lua
 -- It must give exactly the picture of equivalent.lua (the modern form), village.png.
 --
 -- What makes it legacy:

@@ -1,11 +1,12 @@
--- rt-args: --legacy
+-- rt-era: legacy
 -- rt-same-as: equivalent.lua
 -- village-io-2012.lua: the village of village-2012.lua, with its house read from an OBJ file
 -- the way pre-2015 course scenes did: the readobj helper (readobj-io.lua here) opens the file
 -- with io.open and walks it with file:lines() and string.gfind. raybook's sandbox has a
 -- read-only io for this; it reads files under the scene's folder and the --assets folders
 -- only, so the OBJ (house.obj, a copy of ../assets/house.obj) sits beside this file.
--- Render it with --legacy:   ./build/rt_ch3 --legacy scenes/legacy/village-io-2012.lua
+-- rt tells its era from string.gfind, the table mesh and unpack, so no flag is needed:
+--   ./build/rt_ch3 scenes/legacy/village-io-2012.lua
 -- It must give exactly the picture of equivalent.lua, village.png.
 
 require('readobj-io')

@@ -1,8 +1,10 @@
--- rt-args: --legacy
+-- rt-era: legacy
+-- rt-same-as: equivalent.lua
 -- village-readobj-2014.lua: the village of village-2012.lua once more, written the way a
 -- 2014 course scene would read a model: through the readobj.lua helper (which uses
 -- string.gfind, a Lua 5.0/5.1 name). The sandbox has no io, so the OBJ text is in this file.
--- Render it with --legacy:   ./build/rt_ch3 --legacy scenes/legacy/village-readobj-2014.lua
+-- rt tells its era from string.gfind, the table mesh and unpack, so no flag is needed:
+--   ./build/rt_ch3 scenes/legacy/village-readobj-2014.lua
 -- It must give exactly the picture of equivalent.lua, village.png.
 
 require('readobj')

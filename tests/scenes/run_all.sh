@@ -9,9 +9,14 @@
 # For each scene it checks that rt exits with 0, that every image the scene asks for (one per
 # gr.render call; --output names the second one X-2.png, and so on) exists, is a PNG of the
 # requested size and is not entirely black. First-line comments of a scene steer it:
-#   -- rt-args: ARGS          extra arguments (e.g. --legacy for pre-2015 scenes)
-#   -- rt-same-as: FILE.lua   the image must be byte-identical to that of FILE.lua in the same
-#                             folder (default for --legacy scenes: equivalent.lua)
+#   -- rt-args: ARGS          extra arguments (e.g. --legacy for a pre-2015 scene that shows no
+#                             sign of its era)
+#   -- rt-same-as: FILE.lua   the image must be byte-identical to that of FILE.lua, a path
+#                             relative to the scene's folder (../a4/simple.lua names a scene in
+#                             another folder); default for --legacy scenes: equivalent.lua
+#   -- rt-era: legacy|modern  the era rt decides (its one "rt: era:" line on stderr, printed
+#                             even with --quiet) must be this one: "pre-2015" for legacy,
+#                             "current framework" for modern
 #   -- rt-not-black: X0 Y0 X1 Y1
 #                             the first image must have a non-black pixel in this region
 #                             (fractions of the width and height from the top left)
@@ -103,6 +108,23 @@ PY
 # Lines of a scene's header comments (the comment block at the top) with the given key.
 header() { sed -n "/^--/!q; s/^-- $2: *//p" "$1"; }
 
+# A path with its "." and ".." parts resolved, without touching the file system (so the same
+# scene named two ways, scenes/a4/x.lua and scenes/legacy/../a4/x.lua, is one key).
+normpath() {
+    local part parts out=() IFS=/
+    read -r -a parts <<<"$1"
+    for part in "${parts[@]}"; do
+        case "$part" in
+            "" | .) ;;
+            ..) if [ ${#out[@]} -gt 0 ] && [ "${out[-1]}" != .. ]; then unset 'out[-1]'; else out+=(..); fi ;;
+            *) out+=("$part") ;;
+        esac
+    done
+    local joined="${out[*]}"
+    [ "${1:0:1}" = / ] && joined="/$joined"
+    echo "${joined:-.}"
+}
+
 declare -A image_of  # scene path -> its first image, for the equivalence checks
 
 render_scene() {
@@ -164,11 +186,24 @@ render_scene() {
         [ -z "$pattern" ] && continue
         grep -Eq -- "$pattern" "$OUT/$rel.log" || problems+=" --stats shows no match for '$pattern' (rt-stats);"
     done < <(header "$scene" rt-stats)
+    # The era rt decided, from its one "rt: era:" line.
+    local era want
+    era=$(grep -m 1 '^rt: era:' "$OUT/$rel.log")
+    while IFS= read -r want; do
+        [ -z "$want" ] && continue
+        case "$want" in
+            legacy) [[ "$era" == *pre-2015* ]] ||
+                problems+=" rt-era: legacy, but rt says '${era:-no era line}';" ;;
+            modern) [[ "$era" == *"current framework"* ]] ||
+                problems+=" rt-era: modern, but rt says '${era:-no era line}';" ;;
+            *) problems+=" rt-era: '$want' is neither legacy nor modern;" ;;
+        esac
+    done < <(header "$scene" rt-era)
     if [ -n "$problems" ]; then
         fail "$name" "${problems%;}"
         return
     fi
-    image_of[$scene]=$png
+    image_of[$(normpath "$scene")]=$png
     ok "$name ($renders image$([ "$renders" -gt 1 ] && echo s), ${took}s)"
 }
 
@@ -191,21 +226,25 @@ for scene in "${scenes[@]}"; do
     render_scene "$scene"
 done
 
-# Legacy scenes must give the same picture as their modern equivalent, byte for byte.
+# Legacy scenes must give the same picture as their modern equivalent (rt-same-as), byte for byte.
 for scene in "${scenes[@]}"; do
     same=$(header "$scene" rt-same-as | head -n 1)
     if [ -z "$same" ] && header "$scene" rt-args | grep -q -- '--legacy'; then
         same=equivalent.lua
     fi
     [ -z "$same" ] && continue
-    other="$(dirname "$scene")/$same"
-    name="${scene%.lua} = ${other%.lua}"
-    if [ -z "${image_of[$scene]:-}" ] || [ -z "${image_of[$other]:-}" ]; then
-        fail "$name" "one of the two did not render"
-    elif cmp -s "${image_of[$scene]}" "${image_of[$other]}"; then
+    # Both paths resolved, as where the images were recorded: ../a4/x.lua names scenes/a4/x.lua.
+    this=$(normpath "$scene")
+    other=$(normpath "$(dirname "$scene")/$same")
+    name="${this%.lua} = ${other%.lua}"
+    if [ ! -f "$other" ]; then
+        fail "$name" "rt-same-as names $same, which is not a file ($other)"
+    elif [ -z "${image_of[$this]:-}" ] || [ -z "${image_of[$other]:-}" ]; then
+        fail "$name" "one of the two did not render or failed its checks (or is not among the scenes run)"
+    elif cmp -s "${image_of[$this]}" "${image_of[$other]}"; then
         ok "$name (byte-identical)"
     else
-        fail "$name" "the images differ: ${image_of[$scene]} and ${image_of[$other]}"
+        fail "$name" "the images differ: ${image_of[$this]} and ${image_of[$other]}"
     fi
 done
 
