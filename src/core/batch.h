@@ -1,5 +1,5 @@
 /// \file
-/// `./rt --batch DIR`: render every scene under a folder, as a TA renders a class's scenes.
+/// Batch mode: render every scene under a folder, as a TA renders a class, with a report.
 #pragma once
 
 #include "core/options.h"
