@@ -566,14 +566,16 @@ code, .mono { font-family: ui-monospace, "SFMono-Regular", Menlo, Consolas, mono
 .thumbs img { display: block; max-width: 160px; max-height: 120px; background: #000;
               border: 1px solid #d0d7de; }
 .thumbs figcaption { font-size: 11px; color: #57606a; max-width: 160px; overflow-wrap: anywhere; }
-.noimage { width: 160px; height: 120px; display: flex; align-items: center; justify-content: center;
+.noimage { width: 160px; height: 56px; display: flex; align-items: center; justify-content: center;
            background: repeating-linear-gradient(45deg, #f6f8fa, #f6f8fa 8px, #eaeef2 8px, #eaeef2 16px);
            color: #57606a; border: 1px dashed #d0d7de; font-size: 12px; text-align: center; }
 .head { display: flex; align-items: baseline; gap: 10px; flex-wrap: wrap; }
 .path { font-weight: 600; font-size: 15px; overflow-wrap: anywhere; }
 .badge { color: #fff; border-radius: 10px; padding: 1px 9px; font-size: 12px; font-weight: 600; }
 .meta { color: #57606a; margin: 2px 0; }
-.era { margin: 4px 0; color: #0550ae; }
+.era { margin: 4px 0; color: #57606a; font-size: 13px; }
+.era strong { color: #0550ae; }
+.badge.warn { background: #d4a72c; }
 ul.msgs { margin: 6px 0; padding-left: 0; list-style: none; }
 ul.msgs li { padding: 3px 8px; margin: 2px 0; border-radius: 4px; overflow-wrap: anywhere;
              white-space: pre-wrap; }
@@ -640,6 +642,14 @@ std::vector<std::string> imageNotes(const SceneResult& r) {
     return notes;
 }
 
+/// The era line: the era itself in bold ("current framework (...)"), then the evidence.
+std::string eraLine(const std::string& era) {
+    const size_t close = era.find(')');
+    const size_t cut = close == std::string::npos ? era.size() : close + 1;
+    return "<div class=\"era\">era: <strong>" + escapeHtml(era.substr(0, cut)) + "</strong>" +
+           escapeHtml(era.substr(cut)) + "</div>";
+}
+
 /// One scene's card: thumbnails on the left; path, status, era, numbers, messages on the right.
 std::string sceneCard(const SceneResult& r) {
     std::string html = std::string("<section class=\"scene ") + statusClass(r.status) + "\" id=\"" +
@@ -647,13 +657,17 @@ std::string sceneCard(const SceneResult& r) {
                        "\" data-status=\"" + statusWord(r.status) + "\">";
     html += thumbnails(r) + "<div>";
     html += "<div class=\"head\"><span class=\"path mono\">" + escapeHtml(r.path) +
-            "</span><span class=\"badge\">" + statusWord(r.status) + "</span></div>";
-    if (!r.era.empty()) html += "<div class=\"era\">era: " + escapeHtml(r.era) + "</div>";
+            "</span><span class=\"badge\">" + statusWord(r.status) + "</span>";
+    std::vector<std::string> warnings = r.warnings;
+    for (const std::string& n : imageNotes(r)) warnings.push_back(n);
+    if (!warnings.empty())
+        html += "<span class=\"badge warn\">" + std::to_string(warnings.size()) +
+                (warnings.size() == 1 ? " warning" : " warnings") + "</span>";
+    html += "</div>";
+    if (!r.era.empty()) html += eraLine(r.era);
     html += "<div class=\"meta\">" + metaLine(r) + "</div>";
     if (!r.note.empty()) html += "<div class=\"note\">" + escapeHtml(r.note) + "</div>";
     html += messageList(r.errors, "errors");
-    std::vector<std::string> warnings = r.warnings;
-    for (const std::string& n : imageNotes(r)) warnings.push_back(n);
     html += messageList(warnings, "warnings");
     if (!r.other.empty()) {
         std::string text;
@@ -698,6 +712,8 @@ std::string summary(const std::vector<SceneResult>& results) {
 /// Write DIR/raybook-report.html.
 void writeReport(const fs::path& file, const std::vector<SceneResult>& results,
                  const BatchInfo& info) {
+    const size_t helpers = countOf(results, Status::Helper);
+    const size_t scenes = results.size() - helpers;
     std::string html =
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
         "<title>raybook batch: " +
@@ -705,10 +721,10 @@ void writeReport(const fs::path& file, const std::vector<SceneResult>& results,
         "</style></head><body><main>\n";
     html += "<h1>raybook batch report: " + escapeHtml(info.dir.filename().string()) + "</h1>";
     html += "<p class=\"sub\"><span class=\"mono\">" + escapeHtml(info.dir.string()) +
-            "</span><br>" + std::to_string(results.size()) + " Lua files, rendered " +
-            escapeHtml(info.startedAt) + " in " + seconds(info.totalSeconds) + " with " +
-            std::to_string(info.jobs) + " at a time, at most " +
-            std::to_string(static_cast<int>(info.timeLimit)) +
+            "</span><br>" + std::to_string(scenes) + " scenes and " + std::to_string(helpers) +
+            " helpers, rendered " + escapeHtml(info.startedAt) + " in " +
+            seconds(info.totalSeconds) + " with " + std::to_string(info.jobs) +
+            " at a time, at most " + std::to_string(static_cast<int>(info.timeLimit)) +
             " s each<br>each scene ran as <span class=\"mono\">rt " +
             escapeHtml(info.passedOptions) + " SCENE.lua</span> in its own folder</p>\n";
     html += summary(results) + "\n";
