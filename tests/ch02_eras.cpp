@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/lua_scene.h"
 #include "core/scene_era.h"
+#include "core/world.h"
 #include "test_helpers.h"
 
 using Catch::Contains;
@@ -59,7 +60,7 @@ bool near(const Vec3& a, const Vec3& b) {
 /// A wall placed the pre-2015 way: translate, then scale (post-multiplied: scaled first).
 const std::string kWall =
     "local wall = gr.cube('wall')\n"
-    "wall:translate(-5, 0, -6)\n"
+    "wall:translate(-5, -2, -6)\n"
     "wall:scale(10, 4, 0.5)\n"
     "root:add_child(wall)\n";
 
@@ -120,28 +121,36 @@ SCENARIO("a seed-001 scene's translate-then-scale walls stand where its author p
             const Loaded l = load(lua);
             THEN("the scene is recognised as pre-2015 from gr.phongMat") {
                 CHECK(l.report.era.era == rb::Era::Legacy);
-                CHECK_THAT(l.report.era.line, Contains("gr.phongMat (") && Contains("scene.lua:2)"));
+                CHECK_THAT(l.report.era.line,
+                           Contains("gr.phongMat (") && Contains("scene.lua:2)"));
             }
             THEN("the unit cube is scaled to 10 x 4 x 0.5, then moved to x -5..5, z -6..-5.5") {
-                // Source: post-multiplication gives M = T(-5, 0, -6) · S(10, 4, 0.5), so the
-                // cube's corner (1,1,1) lands at (-5 + 10, 0 + 4, -6 + 0.5).
+                // Source: post-multiplication gives M = T(-5, -2, -6) · S(10, 4, 0.5), so the
+                // cube's corner (1,1,1) lands at (-5 + 10, -2 + 4, -6 + 0.5).
                 const rb::AABB b = boundsOf(l.renders[0], "wall");
-                CHECK(near(b.lo, Vec3(-5, 0, -6)));
-                CHECK(near(b.hi, Vec3(5, 4, -5.5)));
+                CHECK(near(b.lo, Vec3(-5, -2, -6)));
+                CHECK(near(b.hi, Vec3(5, 2, -5.5)));
+            }
+            THEN("the wall fills the middle of the rendered picture") {
+                // The camera at (0, 0, 10) looks down -z through the wall's middle (0, 0, -5.5),
+                // which faces the light beside the eye: the centre pixel is lit.
+                auto renders = l.renders;
+                const auto world = rb::buildWorld(std::move(renders[0]), rbtest::chapters(7));
+                CHECK(rbtest::renderSmall(*world, 32, 24).get(16, 12).r > 0.1);
             }
         }
         WHEN("the current order is forced with --modern") {
             rb::SceneLoadOptions modern;
             modern.era = rb::EraChoice::Modern;
             const Loaded l = load(lua, modern);
-            THEN(
-                "the wall is scaled after it moved: far off, 50 x 0 .. -3 deep, where the seed "
-                "never "
-                "put it") {
-                // Source: M = S(10, 4, 0.5) · T(-5, 0, -6): the corner (0,0,0) goes to (-50, 0,
-                // -3).
+            THEN("the wall is scaled after it moved: far to the left, out of the picture") {
+                // Source: M = S(10, 4, 0.5) · T(-5, -2, -6) sends the corner (0,0,0) to
+                // (-50, -8, -3); nothing is left in the middle of the picture.
                 const rb::AABB b = boundsOf(l.renders[0], "wall");
-                CHECK(near(b.lo, Vec3(-50, 0, -3)));
+                CHECK(near(b.lo, Vec3(-50, -8, -3)));
+                auto renders = l.renders;
+                const auto world = rb::buildWorld(std::move(renders[0]), rbtest::chapters(7));
+                CHECK(rbtest::renderSmall(*world, 32, 24).get(16, 12).r == 0.0);
             }
         }
     }
@@ -176,12 +185,15 @@ SCENARIO("Lua 5.1's unpack and string.gfind mark a scene as pre-2015", "[ch02][e
 
 SCENARIO("the loader notes where the order of transforms first matters", "[ch02][era]") {
     GIVEN("one node moved twice, another rotated about one axis twice: calls that commute") {
-        const Loaded l = load("root = gr.node('root')\nlocal s = gr.sphere('s')\n"
-                              "s:translate(1, 0, 0)\ns:translate(0, 2, 0)\nroot:add_child(s)\n"
-                              "local t = gr.sphere('t')\n"
-                              "t:rotate('y', 10)\nt:rotate('y', 20)\nroot:add_child(t)\n" +
-                              rbtest::renderLine());
-        THEN("the era needs no word") { CHECK(l.report.era.line.empty()); }
+        const Loaded l = load(
+            "root = gr.node('root')\nlocal s = gr.sphere('s')\n"
+            "s:translate(1, 0, 0)\ns:translate(0, 2, 0)\nroot:add_child(s)\n"
+            "local t = gr.sphere('t')\n"
+            "t:rotate('y', 10)\nt:rotate('y', 20)\nroot:add_child(t)\n" +
+            rbtest::renderLine());
+        THEN("the era needs no word") {
+            CHECK(l.report.era.line.empty());
+        }
     }
     GIVEN("a node scaled, then moved") {
         const Loaded l = load(
