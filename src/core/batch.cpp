@@ -46,6 +46,25 @@ constexpr const char* kReportPage = "raybook-report.html";
 /// What became of one Lua file.
 enum class Status { Ok, Error, TimedOut, Crashed, Helper };
 
+/// How stdout and the report name each Status (in enum order), and the CSS class that colours it.
+constexpr struct {
+    const char* word;
+    const char* cssClass;
+} kStatusNames[] = {{"ok", "ok"},
+                    {"error", "error"},
+                    {"timed out", "timeout"},
+                    {"crashed", "crash"},
+                    {"skipped helper", "helper"}};
+
+/// The words for a status, as stdout and the report show it.
+const char* statusWord(Status s) {
+    return kStatusNames[static_cast<int>(s)].word;
+}
+/// The CSS class of a status, which sets its colour.
+const char* statusClass(Status s) {
+    return kStatusNames[static_cast<int>(s)].cssClass;
+}
+
 /// One image a scene wrote, as the report shows it.
 struct ImageInfo {
     std::string path;                 ///< Relative to DIR, '/'-separated.
@@ -351,23 +370,6 @@ int jobCount(const CommandLine& cl, size_t scenes) {
     return std::max(1, std::min(jobs, static_cast<int>(scenes)));
 }
 
-/// The words for a status, as stdout and the report show it.
-const char* statusWord(Status s) {
-    switch (s) {
-        case Status::Ok:
-            return "ok";
-        case Status::Error:
-            return "error";
-        case Status::TimedOut:
-            return "timed out";
-        case Status::Crashed:
-            return "crashed";
-        case Status::Helper:
-            return "skipped helper";
-    }
-    return "?";
-}
-
 /// One stdout line for a finished scene: status, wall time, path, and its first error.
 void printSceneLine(const SceneResult& r) {
     std::string why = !r.errors.empty() ? r.errors.front() : r.note;
@@ -519,23 +521,6 @@ std::string seconds(double s) {
     char text[32];
     std::snprintf(text, sizeof text, "%.2f s", s);
     return text;
-}
-
-/// The CSS class of a status, which sets its colour.
-const char* statusClass(Status s) {
-    switch (s) {
-        case Status::Ok:
-            return "ok";
-        case Status::Error:
-            return "error";
-        case Status::TimedOut:
-            return "timeout";
-        case Status::Crashed:
-            return "crash";
-        case Status::Helper:
-            return "helper";
-    }
-    return "";
 }
 
 /// The page's style sheet: inline, so the report is one self-contained file.
