@@ -34,9 +34,9 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "core/lua_scene.h"
-#include "phong/phong.h"
 #include "core/render.h"
 #include "core/world.h"
+#include "phong/phong.h"
 #include "reflection/reflection.h"
 #include "refraction/fresnel.h"
 #include "refraction/refraction.h"
@@ -129,6 +129,20 @@ double distanceToLine(const Vec3& p, const Vec3& o, const Vec3& d) {
     return glm::length(v - glm::dot(v, d) * d);
 }
 
+/// The exact unpolarised Fresnel reflectance from index n1 into n2 at the angle of incidence
+/// thetaI, written out here so the tests do not use the module's formula. Source: E. Hecht,
+/// Optics, §4.6: sin θt = (n1/n2) sin θi; rs = (n1 cos θi − n2 cos θt)/(n1 cos θi + n2 cos θt),
+/// rp = (n2 cos θi − n1 cos θt)/(n2 cos θi + n1 cos θt), F = (rs² + rp²)/2; and F = 1 when
+/// (n1/n2) sin θi > 1 (total internal reflection).
+double closedFormF(double thetaI, double n1, double n2) {
+    const double sinT = n1 / n2 * std::sin(thetaI);
+    if (sinT > 1.0) return 1.0;
+    const double ci = std::cos(thetaI), ct = std::sqrt(1.0 - sinT * sinT);
+    const double rs = (n1 * ci - n2 * ct) / (n1 * ci + n2 * ct);
+    const double rp = (n2 * ci - n1 * ct) / (n2 * ci + n1 * ct);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
 /// Refraction rays counted.
 std::uint64_t refractions(const rb::RayCounters& c) {
     return c.count[static_cast<int>(rb::RayKind::Refraction)];
@@ -202,16 +216,20 @@ SCENARIO("at 80° glass reflects 38.77% and bends the ray to 41.036°", "[ch05]"
 }
 // [ch05-known-angles]
 
-SCENARIO("the full Fresnel record agrees with the fast reflectance everywhere", "[ch05]") {
-    GIVEN("angles 0°…90° and index pairs going in and out") {
-        THEN("fresnelDielectricTerms(...).reflectance() equals fresnelExact to rounding") {
-            // Source: both evaluate the same equations; they differ only in code layout.
+SCENARIO("the reflectance the renderer uses is the Fresnel equations' everywhere", "[ch05]") {
+    GIVEN("angles 0°…90° and index pairs going in and out, beyond the critical angle too") {
+        THEN("fresnelExact and the record's reflectance() equal the written-out equations") {
+            // Source: closedFormF above (Hecht, §4.6), evaluated with θi itself.
             for (const auto& [eta_i, eta_t] : std::vector<std::pair<double, double>>{
                      {1.0, 1.5}, {1.5, 1.0}, {1.0, 1.33}, {1.33, 1.5}, {2.4, 1.0}}) {
-                for (int k = 0; k <= 900; ++k) {
-                    const double c = std::cos(radians(k * 0.1));
+                for (int k = 0; k < 900; ++k) {
+                    const double theta = radians(k * 0.1), c = std::cos(theta);
+                    const double F = closedFormF(theta, eta_i, eta_t);
+                    INFO(eta_i << " -> " << eta_t << " at " << k * 0.1 << " degrees");
+                    REQUIRE(rb::fresnelExact(c, eta_i, eta_t) ==
+                            Approx(F).epsilon(1e-10).margin(1e-13));
                     REQUIRE(rb::fresnelDielectricTerms(c, eta_i, eta_t).reflectance() ==
-                            Approx(rb::fresnelExact(c, eta_i, eta_t)).epsilon(1e-13).margin(1e-16));
+                            rb::fresnelExact(c, eta_i, eta_t));
                 }
             }
         }
@@ -1158,3 +1176,311 @@ gr.render(root, 'out.png', 24, 18, {0, 1, 6}, {0, -0.2, -1}, {0, 1, 0}, 50, {0.2
     }
 }
 // [ch05-deep]
+
+// ---- Leaving glass, and the interface between two media, as the renderer shades them --------
+
+namespace {
+
+/// The chapter's shading term, as the pipeline holds it.
+const rb::ShadingTerm& refractionTermOf(const rb::Pipeline& pipeline) {
+    for (const auto& term : pipeline.terms)
+        if (dynamic_cast<const rb::RefractionTerm*>(term.get())) return *term;
+    FAIL("no RefractionTerm in the pipeline");
+    throw std::logic_error("unreachable");
+}
+
+/// What the refraction term does where `ray` (which starts inside the media `media`) meets
+/// the surface in front of it: the colour the renderer returns there at depth 0, and the
+/// split the term computes for it.
+struct ShadedCrossing {
+    Colour colour{0.0};
+    rb::DielectricSplit split;
+    std::uint64_t refracted = 0;  ///< Refraction rays the term traced.
+};
+
+ShadedCrossing shadeCrossing(const TestWorld& world, const rb::Ray& ray,
+                             const rb::MediumStack& media) {
+    rb::Hit hit;
+    REQUIRE(world.scene.aggregate->intersect(ray, 1e30, hit));
+    const rb::Integrator integrator(world.scene, world.pipeline);
+    rb::Sampler sampler(1, 0, 0);
+    rb::RayCounters counters;
+    const rb::ShadeContext ctx{world.scene, integrator, sampler, counters, 0, media, 1.0};
+    ShadedCrossing out;
+    out.colour = refractionTermOf(world.pipeline)
+                     .apply(ctx, ray, hit, world.pipeline.surface(ctx, ray, hit));
+    out.split = rb::splitAtDielectric(glm::normalize(ray.d), hit, hit.material->param("ior", 1.0),
+                                      media, rb::FresnelFormula::Exact);
+    out.refracted = refractions(counters);
+    return out;
+}
+
+/// The ray that starts `back` before the origin of the plane z = z0 and meets it at (0, 0, z0)
+/// at angle theta to the normal +z, going up.
+rb::Ray upwardRay(double theta, double z0, double back = 2.0) {
+    const Vec3 d(std::sin(theta), 0.0, std::cos(theta));
+    return {Vec3(0.0, 0.0, z0) - back * d, d};
+}
+
+}  // namespace
+
+// [ch05-leaving]
+SCENARIO("leaving glass, and crossing from water into glass, the term uses that pair's Fresnel",
+         "[ch05]") {
+    // Every opaque surface shows kd · ambient (no lights), and with maxDepth = 1 the rays the
+    // term traces see their surface's local colour only. The medium behind the surface is red
+    // and the one ahead green, so the term's colour is exactly (F, 1 − F, 0).
+    const Colour red(1.0, 0.0, 0.0), green(0.0, 1.0, 0.0);
+    GIVEN("a red glass block (n = 1.5, τ = 1) with top face z = 0, under a green wall") {
+        TestWorld world;
+        world.addBox(boxFromTo({-50, -50, -10}, {50, 50, 0}), world.material(dielectric(1.5, red)),
+                     "glass");
+        world.addBox(boxFromTo({-100, -100, 10}, {100, 100, 11}),
+                     world.material(makeMaterial(green)), "wall");
+        world.scene.ambient = Colour(1.0);
+        world.build(chapters(5), 1);
+        const rb::MediumStack inGlass = rb::MediumStack{}.entered(&world.scene.instances[0], 1.5);
+        WHEN("a ray inside the glass meets the top face at 40°") {
+            const double theta = radians(40.0);
+            const ShadedCrossing s = shadeCrossing(world, upwardRay(theta, 0.0), inGlass);
+            THEN("it is glass → air: F(40°; 1.5 → 1) = 0.2453, not air → glass's 0.0457") {
+                const double F = closedFormF(theta, 1.5, 1.0);
+                REQUIRE(F == Approx(0.245291204).margin(1e-9));
+                REQUIRE(closedFormF(theta, 1.0, 1.5) == Approx(0.045733643).margin(1e-9));
+                requireColour(s.colour, Colour(F, 1.0 - F, 0.0));
+                REQUIRE(s.split.F == Approx(F).epsilon(1e-12));
+                REQUIRE(s.refracted == 1);
+            }
+            THEN("the refracted ray obeys Snell: sin θt = 1.5 sin 40° = 0.9642") {
+                // Source: Snell's law, η_i sin θi = η_t sin θt, in the plane of incidence (x, z).
+                const double sinT = 1.5 * std::sin(theta);
+                REQUIRE_FALSE(s.split.totalInternalReflection);
+                REQUIRE(s.split.transmitted.x == Approx(sinT).epsilon(1e-12));
+                REQUIRE(s.split.transmitted.y == Approx(0.0).margin(1e-12));
+                REQUIRE(s.split.transmitted.z ==
+                        Approx(std::sqrt(1.0 - sinT * sinT)).epsilon(1e-12));
+                REQUIRE(s.split.media.beyond.size == 0);
+            }
+        }
+        WHEN("it meets the top face at 60°, beyond the critical angle asin(1/1.5) = 41.81°") {
+            const ShadedCrossing s = shadeCrossing(world, upwardRay(radians(60.0), 0.0), inGlass);
+            THEN("everything is reflected back into the red glass, and nothing is refracted") {
+                // Source: 1.5 · sin 60° = 1.299 > 1, so no refracted ray exists and F = 1.
+                REQUIRE(closedFormF(radians(60.0), 1.5, 1.0) == 1.0);
+                requireColour(s.colour, red);
+                REQUIRE(s.split.totalInternalReflection);
+                REQUIRE(s.split.F == 1.0);
+                REQUIRE(s.refracted == 0);
+                // Source: the mirror direction d − 2(d·n)n of (sin 60°, 0, cos 60°) about +z.
+                REQUIRE(s.split.reflected.x == Approx(std::sin(radians(60.0))).epsilon(1e-12));
+                REQUIRE(s.split.reflected.z == Approx(-0.5).epsilon(1e-12));
+            }
+        }
+    }
+    GIVEN("a red water block (n = 1.33, top face z = −5) inside a green glass block (n = 1.5)") {
+        TestWorld world;
+        world.addBox(boxFromTo({-50, -50, -20}, {50, 50, 0}),
+                     world.material(dielectric(1.5, green)), "glass");
+        world.addBox(boxFromTo({-40, -40, -15}, {40, 40, -5}),
+                     world.material(dielectric(1.33, red)), "water");
+        world.scene.ambient = Colour(1.0);
+        world.build(chapters(5), 1);
+        const rb::MediumStack inWater = rb::MediumStack{}
+                                            .entered(&world.scene.instances[0], 1.5)
+                                            .entered(&world.scene.instances[1], 1.33);
+        WHEN("a ray in the water meets the water's top face at 70°") {
+            const double theta = radians(70.0);
+            const ShadedCrossing s = shadeCrossing(world, upwardRay(theta, -5.0), inWater);
+            THEN("it is water → glass: F(70°; 1.33 → 1.5) = 0.0584, not air → water's 0.1327") {
+                const double F = closedFormF(theta, 1.33, 1.5);
+                REQUIRE(F == Approx(0.058400944).margin(1e-9));
+                REQUIRE(closedFormF(theta, 1.0, 1.33) == Approx(0.132656604).margin(1e-9));
+                requireColour(s.colour, Colour(F, 1.0 - F, 0.0));
+                REQUIRE(s.split.F == Approx(F).epsilon(1e-12));
+                REQUIRE(s.split.media.eta_i == 1.33);
+                REQUIRE(s.split.media.eta_t == 1.5);
+            }
+            THEN(
+                "the refracted ray obeys Snell: sin θt = (1.33/1.5) sin 70°, and is in the glass") {
+                const double sinT = 1.33 / 1.5 * std::sin(theta);
+                REQUIRE(s.split.transmitted.x == Approx(sinT).epsilon(1e-12));
+                REQUIRE(s.split.transmitted.z ==
+                        Approx(std::sqrt(1.0 - sinT * sinT)).epsilon(1e-12));
+                REQUIRE(s.split.media.beyond.size == 1);
+                REQUIRE(s.split.media.beyond.currentIor() == 1.5);
+            }
+        }
+    }
+}
+// [ch05-leaving]
+
+// ---- The stack beyond its capacity ----------------------------------------------------------
+
+// [ch05-stack-overflow]
+SCENARIO("a path into more nested media than the stack holds, and out again", "[ch05]") {
+    GIVEN("N = kMaxDepth + 4 nested objects, object k (1 … N) of index 1 + k/100") {
+        constexpr int cap = rb::MediumStack::kMaxDepth;
+        constexpr int N = cap + 4;
+        std::vector<rb::Instance> objects(N + 1);  // objects[k], k = 1 … N; 0 unused
+        const auto ior = [](int k) { return k == 0 ? 1.0 : 1.0 + k / 100.0; };
+        WHEN("a ray enters them outermost first, then leaves them innermost first") {
+            rb::MediumStack media;
+            std::vector<rb::MediaCrossing> in(N + 1), out(N + 1);
+            for (int k = 1; k <= N; ++k) {
+                in[k] = rb::crossSurface(media, &objects[k], ior(k), true);
+                media = in[k].beyond;
+                REQUIRE(media.size == std::min(k, cap));
+                REQUIRE(media.currentIor() == ior(k));
+            }
+            for (int k = N; k >= 1; --k) {
+                out[k] = rb::crossSurface(media, &objects[k], ior(k), false);
+                media = out[k].beyond;
+            }
+            THEN("every surface on the way in is crossed from object k − 1 into object k") {
+                // Source: nesting; object k lies directly inside object k − 1 (0: air).
+                for (int k = 1; k <= N; ++k) {
+                    INFO("entering object " << k);
+                    REQUIRE(in[k].eta_i == ior(k - 1));
+                    REQUIRE(in[k].eta_t == ior(k));
+                }
+            }
+            THEN("the innermost kMaxDepth − 1 exits go from object k into object k − 1") {
+                // Source: nesting again. The stack keeps the innermost kMaxDepth objects, so
+                // it knows what lies around each of them but the outermost one it kept.
+                for (int k = N; k > N - cap + 1; --k) {
+                    INFO("leaving object " << k);
+                    REQUIRE(out[k].eta_i == ior(k));
+                    REQUIRE(out[k].eta_t == ior(k - 1));
+                    REQUIRE(out[k].beyond.currentIor() == ior(k - 1));
+                }
+            }
+            THEN("the outer ones are left from their own index into air, as MediumStack says") {
+                // Source: MediumStack's documented overflow rule: the forgotten outer objects
+                // are left by crossSurface's "started inside" branch (own index → the medium
+                // the stack holds, air), and the outermost object kept leads into air too.
+                for (int k = N - cap + 1; k >= 1; --k) {
+                    INFO("leaving object " << k);
+                    REQUIRE(out[k].eta_i == ior(k));
+                    REQUIRE(out[k].eta_t == 1.0);
+                }
+                REQUIRE(media.size == 0);
+                REQUIRE(out[1].eta_t == ior(0));  // the outermost surface is right again
+            }
+        }
+    }
+}
+// [ch05-stack-overflow]
+
+// ---- Overlapping media ----------------------------------------------------------------------
+
+namespace {
+
+/// Where the ray o + s·d (unit d) next meets the sphere (centre c, radius r), at s > 1e-9, or
+/// infinity. Source: |o + s·d − c|² = r² gives s = −b ± √(b² − |o − c|² + r²), b = d·(o − c).
+double sphereHitDistance(const Vec3& o, const Vec3& d, const Vec3& c, double r) {
+    const Vec3 oc = o - c;
+    const double b = glm::dot(d, oc), disc = b * b - glm::dot(oc, oc) + r * r;
+    if (disc < 0.0) return std::numeric_limits<double>::infinity();
+    for (double s : {-b - std::sqrt(disc), -b + std::sqrt(disc)})
+        if (s > 1e-9) return s;
+    return std::numeric_limits<double>::infinity();
+}
+
+/// Snell's law in vector form, d unit, n the unit normal on the incident side: the tangential
+/// part of d scales by η = n1/n2 and the normal part makes the result unit length. Source:
+/// E. Hecht, Optics, §4.4 (n1 sin θi = n2 sin θt, in the plane of incidence).
+Vec3 snellVector(const Vec3& d, const Vec3& n, double n1, double n2) {
+    const double cosI = -glm::dot(d, n), eta = n1 / n2;
+    const double cosT = std::sqrt(1.0 - eta * eta * (1.0 - cosI * cosI));
+    return eta * d + (eta * cosI - cosT) * n;
+}
+
+}  // namespace
+
+// [ch05-overlap]
+SCENARIO("overlapping glass: after leaving A while still inside B the ray is in B's medium",
+         "[ch05]") {
+    GIVEN("two objects A (n = 1.5) and B (n = 1.8) that overlap without nesting") {
+        rb::Instance a, b;
+        WHEN("a path enters A, enters B, leaves A, then leaves B") {
+            const rb::MediumStack inA = rb::MediumStack{}.entered(&a, 1.5);
+            const rb::MediaCrossing enterB = rb::crossSurface(inA, &b, 1.8, true);
+            const rb::MediaCrossing leaveA = rb::crossSurface(enterB.beyond, &a, 1.5, false);
+            const rb::MediaCrossing leaveB = rb::crossSurface(leaveA.beyond, &b, 1.8, false);
+            THEN("leaving A takes A out of the stack, not B, and the ray stays in B's medium") {
+                // Source: the region A ∩ B belongs to the object entered last (B); leaving A
+                // from it leads into B alone, so the surface of A separates B from B there.
+                REQUIRE(enterB.eta_i == 1.5);
+                REQUIRE(enterB.eta_t == 1.8);
+                REQUIRE(leaveA.eta_i == 1.8);
+                REQUIRE(leaveA.eta_t == 1.8);
+                REQUIRE(leaveA.beyond.size == 1);
+                REQUIRE(leaveA.beyond.contains(&b));
+                REQUIRE_FALSE(leaveA.beyond.contains(&a));
+                REQUIRE(leaveA.beyond.currentIor() == 1.8);
+                REQUIRE(enterB.beyond.iorBeyond(&a, 1.5) == 1.8);
+                REQUIRE(leaveB.eta_i == 1.8);
+                REQUIRE(leaveB.eta_t == 1.0);
+                REQUIRE(leaveB.beyond.size == 0);
+            }
+        }
+    }
+    GIVEN(
+        "glass spheres A (centre (−0.6, 0, 0), n = 1.5) and B (centre (0.6, 0, 0), n = 1.8), "
+        "radius 1") {
+        TestWorld world;
+        const Vec3 ca(-0.6, 0.0, 0.0), cb(0.6, 0.0, 0.0);
+        const double na = 1.5, nb = 1.8;
+        world.addSphere(sphereAt(ca, 1.0), world.material(dielectric(na)), "A");
+        world.addSphere(sphereAt(cb, 1.0), world.material(dielectric(nb)), "B");
+        world.build(chapters(5), 10);
+        WHEN("a ray along +x at height 0.3 goes through both") {
+            const Vec3 o(-10.0, 0.3, 0.0);
+            const FollowedPath path = followRefractedPath(world.scene, rb::Ray{o, Vec3(1, 0, 0)});
+            // The expected path, surface by surface: the next sphere the straight segment
+            // meets, the index on each side from where the points are (the overlap is B's,
+            // entered last), and Snell's law there.
+            const auto indexAt = [&](const Vec3& p) {
+                if (glm::length(p - cb) < 1.0) return nb;
+                if (glm::length(p - ca) < 1.0) return na;
+                return 1.0;
+            };
+            Vec3 p = o, d(1.0, 0.0, 0.0);
+            std::vector<std::pair<double, double>> pairs;
+            for (int k = 0; k < 4; ++k) {
+                const double sa = sphereHitDistance(p, d, ca, 1.0);
+                const double sb = sphereHitDistance(p, d, cb, 1.0);
+                const double s = std::min(sa, sb);
+                const Vec3 q = p + s * d;
+                const Vec3 outward = glm::normalize(q - (sa < sb ? ca : cb));
+                const Vec3 n = glm::dot(d, outward) < 0.0 ? outward : -outward;
+                const double n1 = indexAt(p + 0.5 * s * d), n2 = indexAt(q + 1e-6 * d);
+                pairs.push_back({n1, n2});
+                d = snellVector(d, n, n1, n2);
+                p = q;
+            }
+            THEN("it meets air→A, A→B, B→B (leaving A inside B) and B→air") {
+                const std::vector<std::pair<double, double>> expected = {
+                    {1.0, na}, {na, nb}, {nb, nb}, {nb, 1.0}};
+                REQUIRE(pairs == expected);
+                REQUIRE(path.events.size() == 4);
+                REQUIRE(path.events[2].hit.instance == &world.scene.instances[0]);  // A's exit
+                for (int k = 0; k < 4; ++k) {
+                    INFO("surface " << k);
+                    REQUIRE(path.events[k].split.media.eta_i == expected[k].first);
+                    REQUIRE(path.events[k].split.media.eta_t == expected[k].second);
+                }
+                REQUIRE(path.media.size == 0);
+            }
+            THEN("it leaves along the direction and line that Snell's law gives at each surface") {
+                const Vec3 out = glm::normalize(path.exit.d);
+                REQUIRE(out.x == Approx(d.x).margin(1e-8));
+                REQUIRE(out.y == Approx(d.y).margin(1e-8));
+                REQUIRE(out.z == Approx(0.0).margin(1e-8));
+                REQUIRE(distanceToLine(p, path.exitPoint, out) == Approx(0.0).margin(1e-8));
+                REQUIRE(d.y < -0.1);  // bent well away from +x: a wrong pair would show
+            }
+        }
+    }
+}
+// [ch05-overlap]

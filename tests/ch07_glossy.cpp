@@ -413,37 +413,67 @@ SCENARIO("both pdfs integrate to 1 and agree with the closed-form CDFs of cos α
 
 // [ch07-lobe-weight]
 SCENARIO(
-    "importance sampling the lobe gives every sample weight 1, so averages estimate the "
-    "lobe integral",
+    "the renderer weighs every lobe sample 1, so a glossy mirror shows the share of its lobe "
+    "that sees a light disc",
     "[ch07]") {
-    GIVEN("100,000 lobe samples for each of four exponents") {
-        const std::vector<double> exponents = {1.0, 10.0, 100.0, 1000.0};
-        // Four z-tests together at family-wise level 0.01 (Bonferroni).
-        const double zMax = zCritical(kAlpha / exponents.size());
-        for (double n : exponents) {
-            const int count = 100000;
-            rb::Sampler sampler(testSeed(), 11, 0);
-            double sumCos = 0.0, worstWeightError = 0.0;
-            for (int i = 0; i < count; ++i) {
-                const Vec2 u = sampler.next2D();
-                const Vec3 w = rb::samplePhongLobe(kAxis, n, u.x, u.y);
-                const double cosAlpha = glm::dot(w, kAxis);
-                // The estimator of ∫ g(ω) D(ω) dω with D the normalised lobe draws ω ~ p and
-                // weighs g(ω) by D(ω)/p(ω). Source: D(ω) = (n+1)/(2π) cos^n α.
-                const double lobe = (n + 1) / (2 * kPi) * std::pow(cosAlpha, n);
-                worstWeightError =
-                    std::max(worstWeightError, std::abs(lobe / rb::phongLobePdf(n, cosAlpha) - 1));
-                sumCos += cosAlpha;
-            }
-            const double mean = sumCos / count;
-            // Source: E[cos^k α] = ∫₀¹ μ^k (n+1) μ^n dμ = (n+1)/(n+k+1).
-            const double expected = (n + 1) / (n + 2);
-            const double variance = (n + 1) / (n + 3) - expected * expected;
-            const double z = (mean - expected) / std::sqrt(variance / count);
-            THEN("D/p = 1 for every sample, and the mean of cos α is (n+1)/(n+2), n = " << n) {
-                CHECK(worstWeightError < 1e-12);
-                INFO("mean " << mean << ", expected " << expected << ", z = " << z);
-                CHECK(std::abs(z) < zMax);
+    // The estimator of ∫ L(ω) D(ω) dω draws ω from the lobe D itself and averages L(ω): each
+    // sample weighs D/p = 1. Here L is 1 inside a cone of half-angle α0 about the normal and 0
+    // outside, so the renderer must return P(α < α0) under the lobe.
+    const double g = 0.5, H = 2.0, alpha0 = 15.0 * kPi / 180.0;
+    // Source: with n = 5/g² − 2 (chapter 7's mapping, mean cosine 1 − g²/5) the Phong lobe's
+    // CDF of cos α is (cos α)^(n+1), so P(α < α0) = 1 − (cos α0)^(n+1); the fuzz sphere's is
+    // fuzzCosineCdf above (hand derivation), so P(α < α0) = 1 − fuzzCosineCdf(g, cos α0).
+    const double n = 5.0 / (g * g) - 2.0;
+    const std::map<std::string, double> expected = {
+        {"lobe", 1.0 - std::pow(std::cos(alpha0), n + 1.0)},
+        {"fuzz", 1.0 - fuzzCosineCdf(g, std::cos(alpha0))}};
+    // Two z-tests together at family-wise level 0.01 (Bonferroni).
+    const double zMax = zCritical(kAlpha / expected.size());
+    for (const auto& [sampler, p] : expected) {
+        GIVEN("a glossy mirror floor (glossiness 0.5, --glossy-sampler=" << sampler
+                                                                         << ") under a white disc "
+                                                                            "seen at 15° from the "
+                                                                            "normal, in the dark") {
+            // Ambient light only: the disc shows kd · ambient = 1, the floor 0, misses the
+            // black background. The disc is a sphere flattened to thickness 2e-7 at height H.
+            rbtest::TestWorld world;
+            rb::Material floor;
+            floor.kd = Colour(0.0);
+            floor.ks = Colour(0.0);
+            floor.params["reflect"] = 1.0;
+            floor.params["glossiness"] = g;
+            rb::Material disc;
+            disc.kd = Colour(1.0);
+            disc.ks = Colour(0.0);
+            world.addBox(rbtest::boxFromTo(Vec3(-50, -1, -50), Vec3(50, 0, 50)),
+                         world.material(floor), "floor");
+            const double R = H * std::tan(alpha0);
+            world.addSphere(
+                glm::scale(glm::translate(rb::Mat4(1.0), Vec3(0.0, H, 0.0)), Vec3(R, 1e-7, R)),
+                world.material(disc), "disc");
+            world.scene.ambient = Colour(1.0);
+            world.build(chapters(7), -1, {{"glossy-sampler", sampler}});
+            REQUIRE(world.pipeline.lobe != nullptr);
+            const rb::Integrator integrator(world.scene, world.pipeline);
+            WHEN("5,000 view rays meet the floor head-on, 16 lobe samples each") {
+                const rb::Ray ray{Vec3(0.0, 1.0, 0.0), Vec3(0.0, -1.0, 0.0)};
+                const int traces = 5000;
+                double sum = 0.0;
+                for (int k = 0; k < traces; ++k) {
+                    rb::Sampler s(testSeed(), 31, k);
+                    rb::RayCounters counters;
+                    sum += integrator.trace(ray, s, counters, 0).r;
+                }
+                const double total = double(traces) * rb::kDefaultGlossySamples;
+                const double mean = sum / traces;
+                const double z = (mean - p) / std::sqrt(p * (1.0 - p) / total);
+                THEN("the mean traced radiance is P(α < 15°) under the lobe, " << p
+                                                                               << " (z-test)") {
+                    INFO("traced " << mean << ", expected " << p << ", z = " << z);
+                    CHECK(p > 0.3);
+                    CHECK(p < 0.9);
+                    CHECK(std::abs(z) < zMax);
+                }
             }
         }
     }

@@ -10,7 +10,15 @@ struct Instance;
 /// it along a path; chapter 5 (refraction) pushes on entering a refracting object and pops on
 /// leaving, so nested media such as water inside glass bend light correctly.
 struct MediumStack {
-    static constexpr int kMaxDepth = 16;  ///< Deeper nesting keeps the innermost 16.
+    /// The most objects the stack holds. Deeper nesting keeps the innermost kMaxDepth and
+    /// forgets the outermost ones: the media around the ray now, which the surfaces it meets
+    /// next separate, stay exact, and every surface on the way in is crossed right. The cost
+    /// comes on the way out, after kMaxDepth − 1 exits: leaving the outermost object kept
+    /// leads into air instead of the forgotten medium around it, and each forgotten object is
+    /// then left from its own index into air (crossSurface's "started inside" case), which is
+    /// right only for the outermost. Keeping the outermost entries instead would give the
+    /// wrong index inside every object deeper than kMaxDepth, where the ray is.
+    static constexpr int kMaxDepth = 16;
     struct Entry {
         const Instance* instance;  ///< The object the ray is inside.
         double ior;                ///< Its index of refraction.
@@ -26,7 +34,7 @@ struct MediumStack {
             if (entries[i].instance == instance) return true;
         return false;
     }
-    /// This stack with `instance` entered.
+    /// This stack with `instance` entered; when full, the outermost entry is dropped first.
     MediumStack entered(const Instance* instance, double ior) const {
         MediumStack s = *this;
         if (s.size == kMaxDepth) {

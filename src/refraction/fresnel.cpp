@@ -20,6 +20,7 @@ bool snellCosTheta_t(double cosTheta_i, double eta_i, double eta_t, double& cosT
 }
 // [snell]
 
+// [fresnel-exact]
 FresnelTerms fresnelDielectricTerms(double cosTheta_i, double eta_i, double eta_t) {
     FresnelTerms f;  // starts as total reflection
     cosTheta_i = std::clamp(cosTheta_i, 0.0, 1.0);
@@ -37,7 +38,8 @@ FresnelTerms fresnelDielectricTerms(double cosTheta_i, double eta_i, double eta_
         return f;
     }
     f.cosTheta_t = cosTheta_t;
-    // Compute the reflected amplitude ratios for both polarisations.
+    // The Fresnel equations for the s- and p-polarised amplitudes. Unpolarised light carries
+    // equal power in both, so its reflectance is the mean of their squares (reflectance()).
     const double sNear = eta_i * cosTheta_i, sFar = eta_t * cosTheta_t;
     const double pNear = eta_t * cosTheta_i, pFar = eta_i * cosTheta_t;
     const double r_s = (sNear - sFar) / (sNear + sFar);
@@ -54,19 +56,10 @@ FresnelTerms fresnelDielectricTerms(double cosTheta_i, double eta_i, double eta_
     return f;
 }
 
-// [fresnel-exact]
 double fresnelExact(double cosTheta_i, double eta_i, double eta_t) {
-    if (eta_i == eta_t) return 0.0;  // no interface (and no 0/0 at grazing incidence)
-    cosTheta_i = std::clamp(cosTheta_i, 0.0, 1.0);
-    double cosTheta_t;
-    if (!snellCosTheta_t(cosTheta_i, eta_i, eta_t, cosTheta_t)) return 1.0;  // TIR
-    // The Fresnel equations for s- and p-polarised amplitudes; unpolarised light carries
-    // equal power in both, so the reflectance is the mean of their squares.
-    const double r_s =
-        (eta_i * cosTheta_i - eta_t * cosTheta_t) / (eta_i * cosTheta_i + eta_t * cosTheta_t);
-    const double r_p =
-        (eta_t * cosTheta_i - eta_i * cosTheta_t) / (eta_t * cosTheta_i + eta_i * cosTheta_t);
-    return 0.5 * (r_s * r_s + r_p * r_p);
+    // The renderer's exact reflectance is the record's: one formula for the tests and the
+    // images.
+    return fresnelDielectricTerms(cosTheta_i, eta_i, eta_t).reflectance();
 }
 // [fresnel-exact]
 

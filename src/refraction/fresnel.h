@@ -35,7 +35,8 @@ bool snellCosTheta_t(double cosTheta_i, double eta_i, double eta_t, double& cosT
 /// polarisation.
 FresnelTerms fresnelDielectricTerms(double cosTheta_i, double eta_i, double eta_t);
 
-/// Exact unpolarised Fresnel reflectance (1 under total internal reflection).
+/// Exact unpolarised Fresnel reflectance, fresnelDielectricTerms(...).reflectance() (1 under
+/// total internal reflection): what the renderer uses.
 double fresnelExact(double cosTheta_i, double eta_i, double eta_t);
 
 /// Schlick's approximation of the unpolarised reflectance. Uses the cosine on the optically
