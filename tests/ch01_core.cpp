@@ -97,15 +97,43 @@ struct CodeScene {
         world.scene.ambient = rb::Colour(0.1);
         world.build(rbtest::coreFeatures());
     }
-    rb::Image render(int threads, int spp, std::uint64_t seed) const {
+    rb::Image render(int threads, int spp, std::uint64_t seed, int width = 64, int height = 48,
+                     std::vector<int>* tileThreads = nullptr) const {
         const rb::PinholeCamera camera(
-            rb::CameraSpec{Vec3(0, 1, 6), Vec3(0, -0.2, -1), Vec3(0, 1, 0), 45.0}, 64, 48);
+            rb::CameraSpec{Vec3(0, 1, 6), Vec3(0, -0.2, -1), Vec3(0, 1, 0), 45.0}, width, height);
         rb::RenderSettings settings;
         settings.threads = threads;
         settings.samplesPerPixel = spp;
         settings.seed = seed;
+        settings.tileThreads = tileThreads;
         rb::RayCounters counters;
-        return rb::render(world.scene, world.pipeline, camera, 64, 48, settings, counters);
+        return rb::render(world.scene, world.pipeline, camera, width, height, settings, counters);
+    }
+};
+
+/// A scene whose every camera ray meets one flat face lit only by ambient light: a grey box
+/// (kd = 0.6) whose face z = 0 spans [-50, 50]² in front of a camera at z = 5 looking down −z,
+/// ambient 0.25, no lights. Source: Phong shading with no lights is kd·ambient, the same at
+/// every point of the face, so every sample of every pixel has radiance 0.6 · 0.25 = 0.15.
+struct AmbientWall {
+    rbtest::TestWorld world;
+    static constexpr double kRadiance = 0.6 * 0.25;
+    AmbientWall() {
+        const rb::Material* grey =
+            world.material(rb::Material{rb::Colour(0.6), rb::Colour(0.0), 1.0, {}});
+        world.addBox(rbtest::boxFromTo(Vec3(-50, -50, -1), Vec3(50, 50, 0)), grey, "wall");
+        world.scene.ambient = rb::Colour(0.25);
+        world.build(rbtest::coreFeatures());
+    }
+    rb::Image render(int spp) const {
+        const rb::PinholeCamera camera(
+            rb::CameraSpec{Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 40.0}, 20, 14);
+        rb::RenderSettings settings;
+        settings.threads = 1;
+        settings.samplesPerPixel = spp;
+        settings.seed = 3;
+        rb::RayCounters counters;
+        return rb::render(world.scene, world.pipeline, camera, 20, 14, settings, counters);
     }
 };
 
@@ -546,7 +574,66 @@ SCENARIO("the image is bit-identical for 1 and 2 threads and for every run", "[c
         }
     }
 }
+
+SCENARIO("both threads render part of the image and it still matches one thread bit for bit",
+         "[ch01]") {
+    GIVEN("the same scene at 256 × 192 pixels (192 tiles of 16 × 16) with 4 jittered samples") {
+        const CodeScene code;
+        std::vector<int> oneThreads;
+        const rb::Image one = code.render(1, 4, 11, 256, 192, &oneThreads);
+        WHEN("it is rendered with 2 threads, recording which thread rendered each tile") {
+            // A run in which one thread takes every tile proves nothing, so render again (at
+            // most 10 times) until both threads have taken tiles; each tile costs ~0.1 ms, far
+            // longer than a thread needs to start, so the first run almost always does.
+            std::vector<int> tileThreads;
+            rb::Image two(1, 1);
+            int runs = 0;
+            bool both = false;
+            while (!both && runs < 10) {
+                two = code.render(2, 4, 11, 256, 192, &tileThreads);
+                ++runs;
+                both = std::count(tileThreads.begin(), tileThreads.end(), 0) > 0 &&
+                       std::count(tileThreads.begin(), tileThreads.end(), 1) > 0;
+            }
+            THEN("every tile was rendered once, by thread 0 or 1, and each thread took some") {
+                INFO("runs " << runs);
+                REQUIRE(tileThreads.size() == 12u * 16u);
+                REQUIRE(std::all_of(tileThreads.begin(), tileThreads.end(),
+                                    [](int t) { return t == 0 || t == 1; }));
+                REQUIRE(both);
+                REQUIRE(std::all_of(oneThreads.begin(), oneThreads.end(),
+                                    [](int t) { return t == 0; }));
+            }
+            THEN("the 2-thread image holds exactly the bits of the 1-thread image") {
+                const long fromThread1 = std::count(tileThreads.begin(), tileThreads.end(), 1);
+                INFO("tiles rendered by thread 1: " << fromThread1 << " of " << tileThreads.size());
+                REQUIRE(bitIdentical(one, two));
+            }
+        }
+    }
+}
 // [ch01-determinism]
+
+SCENARIO("the pixel value is the average of its samples: their sum divided by spp", "[ch01]") {
+    GIVEN("a wall that fills the view, lit only by ambient light (radiance 0.15 everywhere)") {
+        const AmbientWall wall;
+        for (int spp : {1, 2, 3, 4, 16}) {
+            WHEN("it is rendered with " + std::to_string(spp) + " jittered samples per pixel") {
+                const rb::Image image = wall.render(spp);
+                THEN("every pixel holds 0.15, to float rounding") {
+                    // Source: the mean of spp samples that each equal 0.15 is 0.15; the image
+                    // stores floats, so allow a few float ulps (2^-24 relative ≈ 6e-8).
+                    float worst = 0.0f;
+                    for (float c : image.data())
+                        worst = std::max(worst, std::abs(c - float(AmbientWall::kRadiance)));
+                    INFO("largest error " << worst << ", first pixel " << image.data()[0]);
+                    REQUIRE(image.data().size() == 20u * 14u * 3u);
+                    REQUIRE(worst <= 1e-6f);
+                }
+            }
+        }
+    }
+}
 
 // ---- The image and PNG output ----------------------------------------------------------------
 

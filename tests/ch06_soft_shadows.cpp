@@ -3,7 +3,8 @@
 ///
 /// Chapter 6 claims that a light with an area, sampled at n × n points, gives the irradiance
 /// the real light would give: a rectangular panel exactly what Lambert's polygon formula says,
-/// a ball exactly the closed form π·L·(R/d)²·cosθ, which equals the point light's I·cosθ/d²;
+/// a ball exactly the closed form π·L·(R/d)²·cosθ, which equals the point light's I·cosθ/d²,
+/// and from inside it π·L = I/R²;
 /// that a shadow then has an umbra and a penumbra whose edges sit where similar triangles put
 /// them; that a light shrunk to zero size is a point light (the ball exactly, the one-sided panel
 /// times its cosine lobe); and that the error of the estimate falls like 1/√N with N independent
@@ -29,10 +30,10 @@
 #include <string>
 #include <vector>
 
-#include "core/chapter_features.h"
-#include "phong/phong.h"
 #include "bvh/bvh_aggregate.h"
+#include "core/chapter_features.h"
 #include "core/world.h"
+#include "phong/phong.h"
 #include "soft_shadows/soft_shadows.h"
 #include "test_helpers.h"
 
@@ -56,9 +57,9 @@ constexpr double kPi = glm::pi<double>();
 
 /// Chapters 1–3 and 6, switched on by `spec`.
 rb::FeatureSet features(const std::string& spec = "all") {
-    return rb::FeatureSet({rb::chapter01Feature(), rb::phongFeature(), rb::bvhFeature(),
-                           rb::softShadowsFeature()},
-                          spec);
+    return rb::FeatureSet(
+        {rb::chapter01Feature(), rb::phongFeature(), rb::bvhFeature(), rb::softShadowsFeature()},
+        spec);
 }
 
 /// Build the world of the first gr.render call in `lua` as `rt` does, with the given
@@ -262,6 +263,50 @@ SCENARIO("a ball light delivers exactly a point light's irradiance I·cosθ/d²"
         }
     }
     // [ch06-ball-closed-form]
+}
+
+SCENARIO("a floor point inside a ball light receives the irradiance I/R² wherever it is",
+         "[ch06]") {
+    // [ch06-ball-inside]
+    GIVEN(
+        "balls of intensity I = 1 that the floor cuts, and floor points inside them: at the "
+        "centre, below it, and off to one side; 2 × 2 samples per estimate") {
+        struct Case {
+            Vec3 centre;
+            double radius;
+            Vec3 p;  // on the floor (y = 0), inside the ball
+        };
+        const std::vector<Case> cases = {{{0, 0, 0}, 0.5, {0, 0, 0}},
+                                         {{3, 0.2, 0}, 0.5, {3, 0, 0}},
+                                         {{-2, 0.3, 1}, 0.8, {-1.6, 0, 1.3}}};
+        const int M = 4000;
+        const double zMax = zCritical(0.01 / 6);  // Bonferroni: 3 balls × 2 strategies, ≈ 3.14
+        for (const std::string strategy : {"stratified", "independent"}) {
+            for (size_t c = 0; c < cases.size(); ++c) {
+                const Case& b = cases[c];
+                REQUIRE(glm::length(b.p - b.centre) < b.radius);
+                const auto world =
+                    worldFromLua(floorScene("gr.ball_light{position = " + lua3(b.centre) +
+                                            ", colour = {1, 1, 1}, falloff = {0, 0, 1}, radius = " +
+                                            std::to_string(b.radius) + ", samples = 2}"),
+                                 {{"light-sampling", strategy}});
+                WHEN("the mean of " + std::to_string(M) + " estimates is compared (" + strategy +
+                     ", ball " + std::to_string(c) + ")") {
+                    std::vector<double> E(M);
+                    for (int i = 0; i < M; ++i) E[i] = floorRadiance(*world, b.p, i).x;
+                    // Source: from inside a sphere of uniform radiance L every direction of the
+                    // upper hemisphere meets the sphere, so E = ∫ L·cosθ dω = π·L; with the
+                    // ball's L = I/(πR²) (reference, "What an area light emits") E = I/R².
+                    const double expected = 1.0 / (b.radius * b.radius);
+                    THEN("the z statistic is within the Bonferroni-corrected bound") {
+                        INFO("expected " << expected << ", mean " << moments(E).mean);
+                        REQUIRE(std::abs(zScore(E, expected)) < zMax);
+                    }
+                }
+            }
+        }
+    }
+    // [ch06-ball-inside]
 }
 
 SCENARIO("the light samplers draw points with the density their pdfs state", "[ch06]") {

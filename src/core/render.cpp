@@ -140,6 +140,7 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
     std::vector<RayCounters> perThread(threads);
     const std::vector<ImageTile> tiles = tilesInRenderOrder(width, height);
+    if (settings.tileThreads) settings.tileThreads->assign(tiles.size(), -1);
     ProgressBar progress(settings.progress, tiles);
     const int spp = std::max(1, settings.samplesPerPixel);
 
@@ -151,6 +152,7 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         RayCounters& rays = perThread[omp_get_thread_num()];
         const std::uint64_t raysBefore = rays.total();
         progress.tileStarted(k);
+        if (settings.tileThreads) (*settings.tileThreads)[k] = omp_get_thread_num();
         renderTile(tiles[k], integrator, camera, width, spp, settings.seed, image, rays);
         progress.tileDone(k, rays.total() - raysBefore);
     }

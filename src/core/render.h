@@ -18,6 +18,9 @@ struct RenderSettings {
     std::uint64_t seed = 0;   ///< Selects the random stream (--seed).
     int samplesPerPixel = 1;  ///< 1: one ray through each pixel centre, as A4 does.
     bool progress = false;    ///< Draw a progress bar with an ETA on stderr.
+    /// For tests: when set, resized to the tile count and filled with the OpenMP thread number
+    /// that rendered each tile (index = position in tilesInRenderOrder). Null: nothing recorded.
+    std::vector<int>* tileThreads = nullptr;
 };
 
 /// Side of the square tiles the render loop hands to threads, in pixels.
