@@ -217,7 +217,11 @@ SCENARIO("rays through the edges and vertices of a closed mesh always hit it",
                 for (int k = 1; k < 64; ++k)
                     targets.push_back(corners[a] + (k / 64.0) * (corners[b] - corners[a]));
             }
-        REQUIRE(targets.size() == 6 + 12 * 63);
+        // The mesh the code built is the whole octahedron: all 8 triangles, bounded by the
+        // cube [-1, 1]^3, so every target above lies on it.
+        REQUIRE(octahedron->triangleCount() == 8);
+        REQUIRE(octahedron->bounds().lo == Vec3(-1.0));
+        REQUIRE(octahedron->bounds().hi == Vec3(1.0));
         WHEN(
             "a ray leaves the centre towards each point, and another comes in from 3 times "
             "as far out towards the centre") {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Every scene renders: the course-style A4 scenes (scenes/a4/), the legacy scenes
-# (scenes/legacy/), the showcase and the chapter scenes, each at a small size, from the
-# repository root. (Each scene names its meshes relative to its own folder; portable.sh checks
+# A smoke test (CTest: scenes_smoke): every scene renders: the course-style A4 scenes
+# (scenes/a4/), the legacy scenes (scenes/legacy/), the showcase and the chapter scenes, each at
+# a small size, from the repository root. (Each scene names its meshes relative to its own folder; portable.sh checks
 # that they also render from a copy of that folder elsewhere.)
 #
 # Usage: bash tests/scenes/run_all.sh RT_BINARY OUT_DIR
@@ -26,6 +26,8 @@
 #   -- rt-module: ...         not a scene (a helper for require); skipped
 # Chapter scenes (scenes/chapterNN-*.lua) of chapters the binary does not have are skipped.
 # Prints one line per check and a final "N passed, M failed"; exits 1 on any failure.
+# It does not check what the pictures show (beyond the rt-not-black regions and the rt-same-as
+# equalities): the golden tests do that for the chapter and seed scenes.
 set -u
 
 if [ $# -ne 2 ]; then

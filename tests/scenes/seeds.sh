@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# seeds.sh: render each seed scene (scenes/seeds/*.lua, one per seed report, each in that
-# seed's own Lua dialect) small, from the repository root; fail when any render fails.
+# seeds.sh: a smoke test (CTest: seed_scenes_smoke): render each seed scene
+# (scenes/seeds/*.lua, one per seed report, each in that seed's own Lua dialect) small, from
+# the repository root; fail when any render fails. It does not look at the pictures: the
+# golden tests golden-seed.NAME compare each with golden/NAME.png.
 #
 # usage: seeds.sh RT_BINARY OUT_DIR
 #
