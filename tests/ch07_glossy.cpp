@@ -233,6 +233,19 @@ double fuzzCosineCdf(double fuzz, double mu) {
     return std::min(1.0, mu * w * std::sqrt(w) / (fuzz * fuzz * fuzz));
 }
 
+/// P(cos α ≤ μ) for the fuzz sphere of radius f ≥ 1, whose ball holds the origin, so every
+/// direction is possible: (G(u(μ)) − G(f − 1)) / (2f³), with u(μ) = μ + √(μ² + f² − 1) and
+/// G(u) = u⁴/8 + (f² − 1) u²/4. Source: hand derivation. The density of μ is 2π p(ω) =
+/// r₊³/(2f³) with r₊ = u(μ) (the far end of the chord; the near end lies behind the origin);
+/// substituting μ = (u² − c)/(2u), dμ = (u² + c)/(2u²) du (c = f² − 1) turns ∫ u³ dμ into
+/// ∫ (u³ + c·u)/2 du = G(u). At μ = 1, u = 1 + f and the total is exactly 2f³.
+double fuzzCosineCdfWide(double fuzz, double mu) {
+    const double c = fuzz * fuzz - 1.0;
+    const auto G = [c](double u) { return u * u * u * u / 8.0 + c * u * u / 4.0; };
+    const double u = mu + std::sqrt(mu * mu + c);
+    return (G(u) - G(fuzz - 1.0)) / (2.0 * fuzz * fuzz * fuzz);
+}
+
 /// The angle α at which the Phong lobe of exponent n leaves `tail` of its mass beyond it.
 /// Source: P(α > a) = P(cos α < cos a) = (cos a)^(n+1).
 double phongQuantileAngle(double exponent, double tail) {
@@ -403,6 +416,15 @@ SCENARIO("both pdfs integrate to 1 and agree with the closed-form CDFs of cos α
                 }
             }
         }
+        THEN(
+            "for f = 2 (the ball holds the origin) it matches the closed-form CDF, and 1 at μ = "
+            "1") {
+            for (double mu : {-1.0, -0.5, 0.0, 0.5, 0.9})
+                CHECK(simpson([&](double m) { return 2 * kPi * rb::fuzzSpherePdf(2.0, m); }, mu,
+                              1.0, 20000) == Approx(1.0 - fuzzCosineCdfWide(2.0, mu)).margin(1e-9));
+            CHECK(fuzzCosineCdfWide(2.0, 1.0) == Approx(1.0).epsilon(1e-15));
+            CHECK(fuzzCosineCdfWide(2.0, -1.0) == 0.0);
+        }
         THEN("the fuzz pdf of a sphere that contains the origin (f = 2) integrates to 1") {
             const double integral = simpson(
                 [&](double m) { return 2 * kPi * rb::fuzzSpherePdf(2.0, m); }, -1.0, 1.0, 20000);
@@ -500,11 +522,11 @@ SCENARIO("the fuzz-sphere sampler draws directions with the density its pdf stat
                         return fuzzCosineCdf(f, std::cos(a)) - fuzzCosineCdf(f, std::cos(b));
                     };
                 } else {
-                    // The ball contains the origin, so every direction is possible. No closed
-                    // form here: integrate the pdf numerically over each ring.
+                    // The ball contains the origin, so every direction is possible. Source:
+                    // the closed-form CDF of cos α for f ≥ 1 (fuzzCosineCdfWide).
                     probability = [f](double a, double b) {
-                        return simpson([f](double m) { return 2 * kPi * rb::fuzzSpherePdf(f, m); },
-                                       std::cos(b), std::cos(a), 2000);
+                        return fuzzCosineCdfWide(f, std::cos(a)) -
+                               fuzzCosineCdfWide(f, std::cos(b));
                     };
                 }
                 const ChiSquare r = binAndTest(
