@@ -9,6 +9,7 @@
 
 #include "core/box.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 #include "core/lua_sandbox_io.h"
 #include "core/sphere.h"
 
@@ -315,6 +316,8 @@ void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize) {
 constexpr int kHookInterval = 10000;
 void instructionHook(lua_State* L, lua_Debug* ar) {
     SceneBuilder& builder = sceneBuilder(L);
+    // Ctrl-C or SIGTERM while the script runs: stop it (runFile says why).
+    if (pendingInterrupt()) luaL_error(L, "interrupted");
     builder.instructions += kHookInterval;
     if (builder.instructions <= builder.options.instructionLimit) return;
     // Name the line the script was running when it hit the limit.
@@ -402,8 +405,8 @@ int pushLenientStandIn(lua_State* L, const std::string& name) {
     std::string lower = name;
     for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (lower.find("mat") != std::string::npos) {
-        pushMaterial(L, std::make_shared<Material>(
-                            Material{Colour(0.8, 0.2, 0.8), Colour(0.0), 1.0, {}}));
+        pushMaterial(
+            L, std::make_shared<Material>(Material{Colour(0.8, 0.2, 0.8), Colour(0.0), 1.0, {}}));
     } else if (lower.find("light") != std::string::npos) {
         pushLight(L, PointLight{Vec3(0.0), Colour(0.0), Vec3(1.0, 0.0, 0.0)});
     } else {
@@ -440,9 +443,9 @@ int unknownName(lua_State* L, const char* prefix, const char* suffix, const char
     if (sceneBuilder(L).options.lenient) {
         const bool method = std::strcmp(prefix, "gr.") != 0;
         lua_pushstring(L, ((method ? "node:" : "gr.") + std::string(name)).c_str());
-        lua_pushstring(L, chapter ? ("needs chapter " + std::to_string(chapter) + ", " + title)
-                                        .c_str()
-                                  : "unknown to raybook");
+        lua_pushstring(L, chapter
+                              ? ("needs chapter " + std::to_string(chapter) + ", " + title).c_str()
+                              : "unknown to raybook");
         lua_pushcclosure(L, lenientCall, 2);
         return 1;
     }
@@ -585,6 +588,7 @@ void runFile(lua_State* L, const std::string& file, const SceneLoadOptions& opti
     int status = luaL_loadfilex(L, file.c_str(), "t");
     if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
     if (status == LUA_OK) return;
+    if (const int signal = pendingInterrupt()) throw interruptedBy(signal);
     std::string message = lua_tostring(L, -1) ? lua_tostring(L, -1) : "unknown Lua error";
     if (status == LUA_ERRMEM)
         message = file + ": the scene script exceeded the memory limit of " +

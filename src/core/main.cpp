@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "core/batch.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 #include "core/lua_scene.h"
 #include "core/options.h"
 #include "core/render.h"
@@ -64,12 +66,20 @@ int run(int argc, char** argv) {
         return 0;
     }
     if (!cl.batchDir.empty()) return runBatch(cl, argc, argv);
+    // From here on Ctrl-C and SIGTERM wait, pending, until the render loop looks for them.
+    holdInterrupts();
+    const auto runStart = Clock::now();
+    const auto stopRequested = [&] {
+        return pendingInterrupt() != 0 || (cl.timeLimit > 0 && since(runStart) > cl.timeLimit);
+    };
 
     // Run the script. Rendering starts only after it finished, so the command line can
     // override what it asked for.
     auto t0 = Clock::now();
     SceneLoadOptions loadOptions;
-    loadOptions.era = cl.legacy ? EraChoice::Legacy : cl.modern ? EraChoice::Modern : EraChoice::Detect;
+    loadOptions.era = cl.legacy   ? EraChoice::Legacy
+                      : cl.modern ? EraChoice::Modern
+                                  : EraChoice::Detect;
     loadOptions.unsafeLua = cl.unsafeLua;
     loadOptions.assetDirs = cl.assetDirs;
     loadOptions.lenient = cl.lenient;
@@ -79,8 +89,7 @@ int run(int argc, char** argv) {
     const SceneLoadTimes& loadTimes = load.times;
     // The era, when it matters, and what the scene did that the course framework would
     // have let pass.
-    if (!load.era.line.empty())
-        std::fprintf(stderr, "rt: era: %s\n", load.era.line.c_str());
+    if (!load.era.line.empty()) std::fprintf(stderr, "rt: era: %s\n", load.era.line.c_str());
     for (const std::string& warning : load.warnings)
         std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());
 
@@ -118,10 +127,22 @@ int run(int argc, char** argv) {
         settings.seed = cl.seed;
         settings.samplesPerPixel = cl.samplesPerPixel > 0 ? cl.samplesPerPixel : 1;
         settings.progress = !cl.quiet && isatty(STDERR_FILENO);
+        settings.shouldStop = stopRequested;
         RayCounters counters;
         t0 = Clock::now();
-        const Image image = render(scene, pipeline, camera, world->source.job.width,
-                                   world->source.job.height, settings, counters);
+        std::optional<Image> rendered;
+        try {
+            rendered.emplace(render(scene, pipeline, camera, world->source.job.width,
+                                    world->source.job.height, settings, counters));
+        } catch (const RenderStopped&) {
+            // Say why: a pending signal, else the time limit. Nothing is written.
+            if (const int signal = pendingInterrupt()) throw interruptedBy(signal);
+            throw RenderStopped("stopped after the time limit of " +
+                                    std::to_string(static_cast<long long>(cl.timeLimit)) +
+                                    " s (--time-limit), without writing an image",
+                                124);
+        }
+        const Image& image = *rendered;
         const double renderSeconds = since(t0);
 
         t0 = Clock::now();
@@ -162,7 +183,8 @@ int run(int argc, char** argv) {
     if (!load.ignored.empty()) {
         std::fprintf(stderr, "rt: --lenient ignored %zu unknown name%s:\n", load.ignored.size(),
                      load.ignored.size() == 1 ? "" : "s");
-        for (const std::string& line : load.ignored) std::fprintf(stderr, "rt:   %s\n", line.c_str());
+        for (const std::string& line : load.ignored)
+            std::fprintf(stderr, "rt:   %s\n", line.c_str());
     }
     return 0;
 }
@@ -173,6 +195,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
     try {
         return rb::run(argc, argv);
+    } catch (const rb::RenderStopped& e) {
+        std::fprintf(stderr, "rt: %s\n", e.what());
+        return e.exitCode;
     } catch (const rb::InputError& e) {
         std::fprintf(stderr, "rt: error: %s\n", e.what());
     } catch (const std::bad_alloc&) {

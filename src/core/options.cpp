@@ -91,6 +91,8 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             cl.dialects.push_back(next());
         else if (name == "--batch")
             cl.batchDir = next();
+        else if (name == "--time-limit")
+            cl.timeLimit = static_cast<double>(parseInteger(name, next(), 1, 86400 * 30));
         else if (name == "--scene-time-limit")
             cl.sceneTimeLimit = static_cast<double>(parseInteger(name, next(), 1, 86400));
         else if (name == "--unsafe-lua")
@@ -134,6 +136,9 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --output FILE      override the output image (.png)           default: gr.render's
   --assets DIR       also look for meshes, textures and require()d files in DIR, after
                      the working directory and the scene's folder (may be repeated)
+  --time-limit S     stop the render after S seconds, writing nothing (exit code 124);
+                     Ctrl-C and SIGTERM stop it the same way (exit codes 130, 143)
+                                                                default: no limit
   --stats            print ray counts, phase times, Mrays/s and memory
   --quiet            no progress bar or messages
   --legacy           treat the scene as pre-2015 (transforms post-multiply)

@@ -31,6 +31,7 @@ struct CommandLine {
     std::vector<std::string> dialects;  ///< --dialect FILE.lua (repeatable): run before the scene.
     std::string batchDir;          ///< --batch DIR: render every scene under DIR.
     double sceneTimeLimit = 300;   ///< --scene-time-limit S: per scene in --batch.
+    double timeLimit = 0;          ///< --time-limit S: stop the whole run after S seconds (0: none).
     bool unsafeLua = false;        ///< --unsafe-lua: allow os and io.
     bool help = false;             ///< --help.
     bool version = false;          ///< --version.

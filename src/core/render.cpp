@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/interrupt.h"
+
 namespace rb {
 
 std::vector<ImageTile> tilesInRenderOrder(int width, int height) {
@@ -147,8 +149,16 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     // Tiles go to threads dynamically, in progressive order. Nothing a pixel computes depends
     // on which thread runs it or when: its random numbers come from (seed, pixel, sample), so
     // any schedule and any tile order give the same image.
+    // A stop (Ctrl-C, SIGTERM, --time-limit) skips the tiles not yet started; OpenMP cannot
+    // leave a parallel loop early.
+    std::atomic<bool> stopped{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int k = 0; k < static_cast<int>(tiles.size()); ++k) {
+        if (stopped.load(std::memory_order_relaxed)) continue;
+        if (settings.shouldStop && settings.shouldStop()) {
+            stopped = true;
+            continue;
+        }
         RayCounters& rays = perThread[omp_get_thread_num()];
         const std::uint64_t raysBefore = rays.total();
         progress.tileStarted(k);
@@ -158,6 +168,7 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     }
     progress.finish();
     for (const RayCounters& c : perThread) counters.merge(c);
+    if (stopped) throw RenderStopped("the render was stopped before it finished", 1);
     return image;
 }
 // [render-loop]

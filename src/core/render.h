@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/camera.h"
@@ -21,6 +22,9 @@ struct RenderSettings {
     /// For tests: when set, resized to the tile count and filled with the OpenMP thread number
     /// that rendered each tile (index = position in tilesInRenderOrder). Null: nothing recorded.
     std::vector<int>* tileThreads = nullptr;
+    /// Asked before each tile; once it says true, no further tile starts and render() throws
+    /// RenderStopped after the running ones finish. Empty: never stops.
+    std::function<bool()> shouldStop;
 };
 
 /// Side of the square tiles the render loop hands to threads, in pixels.
