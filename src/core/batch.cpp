@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/html.h"
 
 namespace rb {
 namespace {
@@ -462,33 +463,6 @@ void noteSharedImages(std::vector<SceneResult>* results) {
 }
 
 // ---- The report -------------------------------------------------------------------------------
-
-/// Text made safe inside HTML elements and attribute values.
-std::string escapeHtml(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            case '\'':
-                out += "&#39;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
-}
 
 /// A relative '/'-separated path as a URL path: every byte but [A-Za-z0-9-._~/] escaped.
 std::string urlPath(const std::string& path) {

@@ -26,6 +26,7 @@ target_link_libraries(rb_golden_compare PUBLIC PkgConfig::STB)
 
 add_executable(rb_imgdiff ${CMAKE_CURRENT_LIST_DIR}/imgdiff.cpp)
 target_link_libraries(rb_imgdiff PRIVATE rb_golden_compare)
+target_include_directories(rb_imgdiff PRIVATE ${CMAKE_SOURCE_DIR}/src)
 
 # Register one golden-image test. Extra arguments after SCENE_PATH are passed on to rt.
 function(rb_add_golden_test TEST_NAME RT_TARGET SCENE_PATH)

@@ -23,6 +23,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/html.h"
 #include "image_compare.h"
 
 namespace fs = std::filesystem;
@@ -90,34 +91,10 @@ std::optional<Options> parse_options(int argc, char** argv, std::string& error) 
     return o;
 }
 
-/// Text made safe for HTML element content and attribute values.
-std::string html_escape(const std::string& text) {
-    std::string out;
-    for (const char ch : text) {
-        switch (ch) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += ch;
-        }
-    }
-    return out;
-}
-
 /// Reverses html_escape (only the entities it produces).
 std::string html_unescape(const std::string& text) {
     static const std::pair<std::string_view, char> kEntities[] = {
-        {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&amp;", '&'}};
+        {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&#39;", '\''}, {"&amp;", '&'}};
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
         // Replace an entity at i, or copy one character
@@ -186,8 +163,8 @@ std::string fmt(const char* format, double v) {
 std::string figure(const std::string& src, const Image& image, int scale, const std::string& alt,
                    const std::string& caption_html) {
     std::ostringstream html;
-    html << "<figure><img src=\"" << html_escape(src) << "\" width=\"" << image.w * scale
-         << "\" height=\"" << image.h * scale << "\" alt=\"" << html_escape(alt) << "\">"
+    html << "<figure><img src=\"" << rb::escapeHtml(src) << "\" width=\"" << image.w * scale
+         << "\" height=\"" << image.h * scale << "\" alt=\"" << rb::escapeHtml(alt) << "\">"
          << "<figcaption>" << caption_html << "</figcaption></figure>\n";
     return html.str();
 }
@@ -199,14 +176,14 @@ std::string report_page(const Options& o, const Thresholds& t, const Comparison&
     // Upscale by an integer factor so each image is roughly kTargetDisplayWidth wide
     const int scale =
         std::max(1, kTargetDisplayWidth / std::max(1, std::max(expected.w, actual.w)));
-    const std::string name = html_escape(o.name);
+    const std::string name = rb::escapeHtml(o.name);
     const auto verdict = [](bool ok) {
         return ok ? "<td>ok</td>" : "<td class=\"fail\">FAIL</td>";
     };
 
     std::ostringstream html;
     html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-         << "<meta name=\"rb-summary\" content=\"" << html_escape(summary) << "\">\n"
+         << "<meta name=\"rb-summary\" content=\"" << rb::escapeHtml(summary) << "\">\n"
          << "<title>" << name << ": golden-image failure</title>\n"
          << "<style>\n"
          << "body { font-family: sans-serif; margin: 1.5em; }\n"
@@ -222,7 +199,7 @@ std::string report_page(const Options& o, const Thresholds& t, const Comparison&
          << "</style>\n</head>\n<body>\n"
          << "<p><a href=\"index.html\">&larr; all golden-image failures</a></p>\n"
          << "<h1>" << name << "</h1>\n"
-         << "<p class=\"fail\">FAIL: " << html_escape(summary) << "</p>\n";
+         << "<p class=\"fail\">FAIL: " << rb::escapeHtml(summary) << "</p>\n";
 
     // The three images side by side
     html << "<div class=\"row\">\n"
@@ -260,12 +237,12 @@ std::string report_page(const Options& o, const Thresholds& t, const Comparison&
     html << "</table>\n";
 
     // Where everything came from, and what to do next
-    html << "<p>Render settings from <code>" << html_escape(o.thresholds.string())
+    html << "<p>Render settings from <code>" << rb::escapeHtml(o.thresholds.string())
          << "</code>: size " << t.width << "x" << t.height << ", seed " << t.seed
          << (t.extra_args.empty() ? std::string()
-                                  : ", args <code>" + html_escape(t.extra_args) + "</code>")
-         << ".<br>Golden image <code>" << html_escape(o.expected.string())
-         << "</code>; render <code>" << html_escape(o.actual.string()) << "</code>.</p>\n"
+                                  : ", args <code>" + rb::escapeHtml(t.extra_args) + "</code>")
+         << ".<br>Golden image <code>" << rb::escapeHtml(o.expected.string())
+         << "</code>; render <code>" << rb::escapeHtml(o.actual.string()) << "</code>.</p>\n"
          << "<p>If the change is intended, run <code>make golden-update</code> and say in the "
             "commit message why the image changed.</p>\n"
          << "</body>\n</html>\n";
@@ -333,8 +310,8 @@ void rewrite_index(const fs::path& dir) {
              << " If a change is intended, run <code>make "
                 "golden-update</code> and say why in the commit message.</p>\n<ul>\n";
         for (const auto& name : names) {
-            html << "<li><a href=\"" << html_escape(name) << ".html\">" << html_escape(name)
-                 << "</a>: " << html_escape(read_summary(dir / (name + ".html"))) << "</li>\n";
+            html << "<li><a href=\"" << rb::escapeHtml(name) << ".html\">" << rb::escapeHtml(name)
+                 << "</a>: " << rb::escapeHtml(read_summary(dir / (name + ".html"))) << "</li>\n";
         }
         html << "</ul>\n";
     }
