@@ -24,7 +24,7 @@ std::shared_ptr<const Shape> meshFromFile(lua_State* L, const std::string& file,
     // Time the two phases for --stats.
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
-    const ObjData data = loadObj(path);
+    const ObjData data = loadObj(path, builder.options.memory);
     const auto t1 = Clock::now();
     auto mesh = std::make_shared<Mesh>(data, path);
     builder.times.meshLoad += std::chrono::duration<double>(t1 - t0).count();

@@ -4,6 +4,7 @@
 /// enough for meshes of a few hundred thousand triangles.
 #include "bvh/obj.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <climits>
@@ -201,11 +202,48 @@ void checkCapacity(std::size_t size, const char* what, const LineContext& ctx) {
     }
 }
 
+/// Refuse the mesh once what it needs so far passes `free` bytes. Checked each time an array
+/// doubles (from 4096 entries on), so the arrays never grow far past the budget: an OBJ with 50
+/// million faces fails after reading the first few million.
+class MeshBudgetCheck {
+  public:
+    MeshBudgetCheck(const MemoryBudget& budget) : budget_(budget), free_(budget.available()) {}
+
+    /// Check `data` whenever its largest array has doubled since the last check, and always
+    /// when `final`.
+    void check(const ObjData& data, const LineContext& ctx, bool final = false) {
+        const std::size_t size = std::max({data.positions.size(), data.texcoords.size(),
+                                           data.normals.size(), data.triangles.size()});
+        if (size < nextCheck_ && !final) return;
+        nextCheck_ = 2 * size;
+        const std::uint64_t bytes = meshLoadBytes(data);
+        if (bytes > free_)
+            throw InputError(budget_.refusal(
+                bytes, free_, ctx.displayName + ":" + std::to_string(ctx.lineNumber),
+                "the mesh read so far (" + countOf(data.triangles.size(), "triangle", "triangles") +
+                    ", " + countOf(data.positions.size(), "vertex", "vertices") +
+                    ") with its BVH"));
+    }
+
+  private:
+    const MemoryBudget& budget_;
+    std::uint64_t free_;
+    std::size_t nextCheck_ = 4096;
+};
+
 }  // namespace
 
-ObjData parseObj(std::istream& in, const std::string& displayName) {
+std::uint64_t meshLoadBytes(const ObjData& data) {
+    const std::uint64_t vertices =
+        data.positions.size() + data.texcoords.size() + data.normals.size();
+    return saturatingProduct(data.triangles.size(), kMeshBytesPerTriangle) +
+           saturatingProduct(vertices, kMeshBytesPerVertex);
+}
+
+ObjData parseObj(std::istream& in, const std::string& displayName, const MemoryBudget& budget) {
     ObjData data;
     LineContext ctx{displayName};
+    MeshBudgetCheck memory(budget);
     std::string line;
     std::vector<std::string_view> tokens;
     std::vector<ObjCorner> polygon;
@@ -266,6 +304,7 @@ ObjData parseObj(std::istream& in, const std::string& displayName) {
                      " (expected v, vt, vn or f; o, g, s, usemtl, mtllib, l, p and vp are "
                      "skipped)");
         }
+        memory.check(data, ctx);
     }
 
     // getline stops at end of file or on a read error; only the first is a success
@@ -273,13 +312,14 @@ ObjData parseObj(std::istream& in, const std::string& displayName) {
         throw InputError(displayName + ":" + std::to_string(ctx.lineNumber + 1) +
                          ": read error while reading the OBJ file");
     }
+    memory.check(data, ctx, true);
     if (data.triangles.empty()) {
         throw InputError(displayName + ": has no faces (expected at least one 'f' line)");
     }
     return data;
 }
 
-ObjData loadObj(const std::string& path) {
+ObjData loadObj(const std::string& path, const MemoryBudget& budget) {
     // A directory opens like a file on POSIX but cannot be read, so rule it out first
     std::error_code fsError;
     if (std::filesystem::is_directory(path, fsError)) {
@@ -294,7 +334,7 @@ ObjData loadObj(const std::string& path) {
         throw InputError(path + ": cannot open OBJ file (" +
                          (reason != 0 ? std::strerror(reason) : "unknown reason") + ")");
     }
-    return parseObj(file, path);
+    return parseObj(file, path, budget);
 }
 
 }  // namespace rb

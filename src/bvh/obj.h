@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_budget.h"
 #include "core/vec.h"
 
 namespace rb {
@@ -34,10 +35,17 @@ struct ObjData {
     std::vector<std::array<ObjCorner, 3>> triangles;  ///< Faces, zero-based indices.
 };
 
-/// Parse OBJ text; displayName is used in error messages ("name:line: ...").
-ObjData parseObj(std::istream& in, const std::string& displayName);
+/// Peak bytes that loading a mesh of this size takes (the arrays, the Mesh and its BVH).
+std::uint64_t meshLoadBytes(const ObjData& data);
 
-/// Load an OBJ file; throws InputError naming the file if it cannot be opened.
-ObjData loadObj(const std::string& path);
+/// Parse OBJ text; displayName is used in error messages ("name:line: ..."). The mesh must fit
+/// in what `budget` leaves free when parsing starts: the parse stops with an InputError as soon
+/// as the mesh read so far would not, before the arrays grow past it.
+ObjData parseObj(std::istream& in, const std::string& displayName,
+                 const MemoryBudget& budget = {});
+
+/// Load an OBJ file; throws InputError naming the file if it cannot be opened, or if the mesh
+/// would not fit in `budget`.
+ObjData loadObj(const std::string& path, const MemoryBudget& budget = {});
 
 }  // namespace rb

@@ -219,6 +219,9 @@ std::vector<std::string> childOptions(const CommandLine& cl) {
     if (cl.samplesPerPixel > 0) args.push_back("--spp=" + std::to_string(cl.samplesPerPixel));
     if (cl.seed != 0) args.push_back("--seed=" + std::to_string(cl.seed));
     if (cl.maxDepth >= 0) args.push_back("--max-depth=" + std::to_string(cl.maxDepth));
+    // Each scene gets the memory limit asked for; by default each takes the machine's share.
+    if (cl.memory.origin.rfind("--max-memory", 0) == 0)
+        args.push_back("--max-memory=" + std::to_string(cl.memory.limit));
     for (const auto& [name, value] : cl.featureOptions) args.push_back("--" + name + "=" + value);
     return args;
 }

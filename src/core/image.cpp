@@ -65,22 +65,48 @@ std::vector<unsigned char> toBytes(const Image& image) {
 }
 
 // [write-png]
+namespace {
+
+/// Where stb's encoder hands over the PNG: a file, and the first write error (errno).
+struct PngSink {
+    std::FILE* file;
+    int error = 0;
+};
+
+/// stb's write callback: fwrite, remembering a short write (stbi_write_png itself ignores
+/// them, and would leave a truncated file behind on a full disk).
+void writeToSink(void* context, void* data, int size) {
+    auto* sink = static_cast<PngSink*>(context);
+    if (sink->error == 0 &&
+        std::fwrite(data, 1, static_cast<size_t>(size), sink->file) != static_cast<size_t>(size))
+        sink->error = errno ? errno : EIO;
+}
+
+/// Encode `image` into the new file `path`; returns 0 or the errno of the first failure.
+int writePngFile(const Image& image, const std::string& path) {
+    const std::vector<unsigned char> bytes = toBytes(image);
+    errno = 0;
+    PngSink sink{std::fopen(path.c_str(), "wb")};
+    if (!sink.file) return errno ? errno : EIO;
+    const int ok = stbi_write_png_to_func(writeToSink, &sink, image.width(), image.height(), 3,
+                                          bytes.data(), image.width() * 3);
+    // The last bytes reach the disk only at fflush and fclose: check both.
+    if (sink.error == 0 && std::fflush(sink.file) != 0) sink.error = errno ? errno : EIO;
+    if (std::fclose(sink.file) != 0 && sink.error == 0) sink.error = errno ? errno : EIO;
+    if (!ok && sink.error == 0) sink.error = ENOMEM;  // the encoder could not allocate
+    return sink.error;
+}
+
+}  // namespace
+
 void writePng(const Image& image, const std::string& path) {
     // Write to a temporary name in the same folder, so the rename below is atomic.
     const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-    const std::vector<unsigned char> bytes = toBytes(image);
-    errno = 0;
-    const int ok = stbi_write_png(tmp.c_str(), image.width(), image.height(), 3, bytes.data(),
-                                  image.width() * 3);
-    if (!ok) {
-        const std::string why = errno ? std::strerror(errno) : "the encoder failed";
+    int error = writePngFile(image, tmp);
+    if (error == 0 && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;
+    if (error != 0) {
         std::remove(tmp.c_str());
-        throw InputError(path + ": cannot write the PNG file (" + why + ")");
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const std::string why = std::strerror(errno);
-        std::remove(tmp.c_str());
-        throw InputError(path + ": cannot write the PNG file (" + why + ")");
+        throw InputError(path + ": cannot write the PNG file (" + std::strerror(error) + ")");
     }
 }
 // [write-png]

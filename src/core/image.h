@@ -9,12 +9,15 @@
 
 namespace rb {
 
-/// The largest image raybook agrees to render: 2^27 pixels (1.5 GiB of float RGB).
-inline constexpr long long kMaxPixels = 1LL << 27;
+/// The largest image raybook agrees to render: 2^29 pixels. stb's PNG encoder sizes its buffers
+/// with int, so (3w + 1) h bytes must stay below 2^31. Whether an image fits in memory is the
+/// memory budget's question (core/memory_budget.h), asked before the render.
+inline constexpr long long kMaxPixels = 1LL << 29;
 /// The largest width or height.
 inline constexpr int kMaxDimension = 1 << 16;
 
-/// Throw InputError unless width × height is a sane image size; `where` prefixes the message.
+/// Throw InputError unless width × height is a size rt can render and write; `where` prefixes
+/// the message.
 void checkImageSize(long long width, long long height, const std::string& where);
 
 /// True when `path` ends in .png (any case): the one format rt writes.

@@ -592,7 +592,9 @@ void runFile(lua_State* L, const std::string& file, const SceneLoadOptions& opti
     std::string message = lua_tostring(L, -1) ? lua_tostring(L, -1) : "unknown Lua error";
     if (status == LUA_ERRMEM)
         message = file + ": the scene script exceeded the memory limit of " +
-                  std::to_string(options.memoryLimit >> 20) + " MiB";
+                  formatBytes(options.memoryLimit) +
+                  " for scripts (2 GiB, or what the run's memory limit leaves free if less: " +
+                  options.memory.origin + ")";
     throw InputError(message);
 }
 

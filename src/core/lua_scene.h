@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/feature.h"
+#include "core/memory_budget.h"
 #include "core/scene_era.h"
 #include "core/scene_graph.h"
 
@@ -21,6 +22,7 @@ struct SceneLoadOptions {
     bool unsafeLua = false;  ///< Allow os and io.
     long long instructionLimit = 1'000'000'000;  ///< Lua VM instructions before we give up.
     size_t memoryLimit = size_t(2) << 30;        ///< Bytes the script may allocate.
+    MemoryBudget memory;  ///< The whole run's budget (--max-memory): meshes are checked against it.
     std::vector<std::string> assetDirs;          ///< --assets DIR, searched after the scene's folder.
     bool lenient = false;  ///< --lenient: unknown calls and methods are ignored, with a warning.
     std::vector<std::string> dialects;  ///< --dialect FILE.lua: run before the scene.

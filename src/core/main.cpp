@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -31,6 +32,12 @@ double peakMemoryMiB() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return usage.ru_maxrss / 1024.0;  // Linux reports KiB
+}
+
+/// Where --partial puts a stopped render: "out.png" becomes "out.partial.png".
+std::string partialPath(const std::string& output) {
+    std::filesystem::path path(output);
+    return path.replace_extension(".partial.png").string();
 }
 
 /// The output path of render number `index` (of `count`) after --output.
@@ -84,6 +91,9 @@ int run(int argc, char** argv) {
     loadOptions.assetDirs = cl.assetDirs;
     loadOptions.lenient = cl.lenient;
     loadOptions.dialects = cl.dialects;
+    loadOptions.memory = cl.memory;
+    loadOptions.memoryLimit = static_cast<size_t>(
+        std::min<std::uint64_t>(loadOptions.memoryLimit, cl.memory.available()));
     SceneLoadReport load;
     std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions, &load);
     const SceneLoadTimes& loadTimes = load.times;
@@ -101,6 +111,12 @@ int run(int argc, char** argv) {
             job.height = cl.height;
         }
         checkImageSize(job.width, job.height, job.where + ": ");
+        // The film and the PNG encoder's buffers must fit beside the scene, before they exist.
+        cl.memory.require(saturatingProduct(static_cast<std::uint64_t>(job.width) * job.height,
+                                            kImageBytesPerPixel),
+                          job.where,
+                          "the image of " + std::to_string(job.width) + "x" +
+                              std::to_string(job.height) + " pixels");
         const std::string output = outputPath(cl, job, k, renders.size());
         // Refuse an output path that cannot be written before spending time on the render.
         const std::filesystem::path folder = std::filesystem::path(output).parent_path();
@@ -128,6 +144,8 @@ int run(int argc, char** argv) {
         settings.samplesPerPixel = cl.samplesPerPixel > 0 ? cl.samplesPerPixel : 1;
         settings.progress = !cl.quiet && isatty(STDERR_FILENO);
         settings.shouldStop = stopRequested;
+        PartialImage partial;
+        if (cl.partial) settings.partial = &partial;
         RayCounters counters;
         t0 = Clock::now();
         std::optional<Image> rendered;
@@ -135,7 +153,14 @@ int run(int argc, char** argv) {
             rendered.emplace(render(scene, pipeline, camera, world->source.job.width,
                                     world->source.job.height, settings, counters));
         } catch (const RenderStopped&) {
-            // Say why: a pending signal, else the time limit. Nothing is written.
+            // Under --partial, keep what was rendered, under a name that says so.
+            if (partial.image) {
+                const std::string path = partialPath(output);
+                writePng(*partial.image, path);
+                std::fprintf(stderr, "rt: wrote the %zu of %zu tiles rendered so far to %s\n",
+                             partial.tilesDone, partial.tiles, path.c_str());
+            }
+            // Say why: a pending signal, else the time limit. The image itself is not written.
             if (const int signal = pendingInterrupt()) throw interruptedBy(signal);
             throw RenderStopped("stopped after the time limit of " +
                                     std::to_string(static_cast<long long>(cl.timeLimit)) +
@@ -193,6 +218,9 @@ int run(int argc, char** argv) {
 }  // namespace rb
 
 int main(int argc, char** argv) {
+    // Past a file-size limit (ulimit -f), let write() fail with EFBIG, reported like a full
+    // disk, instead of SIGXFSZ killing rt with a core dump.
+    std::signal(SIGXFSZ, SIG_IGN);
     try {
         return rb::run(argc, argv);
     } catch (const rb::RenderStopped& e) {

@@ -34,6 +34,7 @@ const FeatureOption* findFeatureOption(const std::vector<Feature>& built, const 
 
 CommandLine parseCommandLine(int argc, const char* const* argv, const std::vector<Feature>& built) {
     CommandLine cl;
+    cl.memory = defaultMemoryBudget();
     bool haveThreadsPositional = false;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
@@ -95,6 +96,10 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             cl.timeLimit = static_cast<double>(parseInteger(name, next(), 1, 86400 * 30));
         else if (name == "--scene-time-limit")
             cl.sceneTimeLimit = static_cast<double>(parseInteger(name, next(), 1, 86400));
+        else if (name == "--max-memory")
+            cl.memory = memoryBudgetFromOption(next());
+        else if (name == "--partial")
+            cl.partial = true;
         else if (name == "--unsafe-lua")
             cl.unsafeLua = true;
         else if (findFeatureOption(built, name))
@@ -139,6 +144,11 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --time-limit S     stop the render after S seconds, writing nothing (exit code 124);
                      Ctrl-C and SIGTERM stop it the same way (exit codes 130, 143)
                                                                 default: no limit
+  --partial          when a render is stopped, write what it rendered so far to
+                     NAME.partial.png (tiles not reached are black)
+  --max-memory SIZE  refuse, before allocating, a mesh or image that would take the
+                     run past SIZE bytes (K, M, G, T: powers of 1024)
+                                                   default: half of the machine's memory
   --stats            print ray counts, phase times, Mrays/s and memory
   --quiet            no progress bar or messages
   --legacy           treat the scene as pre-2015 (transforms post-multiply)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/feature.h"
+#include "core/memory_budget.h"
 
 namespace rb {
 
@@ -22,19 +23,21 @@ struct CommandLine {
     int width = 0, height = 0;     ///< --size WxH (0: the scene's size).
     std::string output;            ///< --output FILE.
     std::vector<std::string> assetDirs;  ///< --assets DIR (repeatable): more places for files.
-    int maxDepth = -1;             ///< --max-depth N (-1: the scene's choice).
-    bool stats = false;            ///< --stats.
-    bool quiet = false;            ///< --quiet.
-    bool legacy = false;           ///< --legacy: pre-2015 course scenes.
-    bool modern = false;           ///< --modern: force the current framework's transform order.
-    bool lenient = false;          ///< --lenient: unknown calls are warnings, not errors.
+    int maxDepth = -1;                   ///< --max-depth N (-1: the scene's choice).
+    bool stats = false;                  ///< --stats.
+    bool quiet = false;                  ///< --quiet.
+    bool legacy = false;                 ///< --legacy: pre-2015 course scenes.
+    bool modern = false;   ///< --modern: force the current framework's transform order.
+    bool lenient = false;  ///< --lenient: unknown calls are warnings, not errors.
     std::vector<std::string> dialects;  ///< --dialect FILE.lua (repeatable): run before the scene.
-    std::string batchDir;          ///< --batch DIR: render every scene under DIR.
-    double sceneTimeLimit = 300;   ///< --scene-time-limit S: per scene in --batch.
-    double timeLimit = 0;          ///< --time-limit S: stop the whole run after S seconds (0: none).
-    bool unsafeLua = false;        ///< --unsafe-lua: allow os and io.
-    bool help = false;             ///< --help.
-    bool version = false;          ///< --version.
+    std::string batchDir;               ///< --batch DIR: render every scene under DIR.
+    double sceneTimeLimit = 300;        ///< --scene-time-limit S: per scene in --batch.
+    double timeLimit = 0;    ///< --time-limit S: stop the whole run after S seconds (0: none).
+    bool unsafeLua = false;  ///< --unsafe-lua: allow os and io.
+    MemoryBudget memory;     ///< --max-memory SIZE (parseCommandLine: half the machine).
+    bool partial = false;    ///< --partial: a stopped render writes NAME.partial.png.
+    bool help = false;       ///< --help.
+    bool version = false;    ///< --version.
     std::map<std::string, std::string> featureOptions;  ///< --name=value added by chapters.
 };
 

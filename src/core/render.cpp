@@ -152,6 +152,7 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     // A stop (Ctrl-C, SIGTERM, --time-limit) skips the tiles not yet started; OpenMP cannot
     // leave a parallel loop early.
     std::atomic<bool> stopped{false};
+    std::atomic<std::size_t> tilesDone{0};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int k = 0; k < static_cast<int>(tiles.size()); ++k) {
         if (stopped.load(std::memory_order_relaxed)) continue;
@@ -165,10 +166,15 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         if (settings.tileThreads) (*settings.tileThreads)[k] = omp_get_thread_num();
         renderTile(tiles[k], integrator, camera, width, spp, settings.seed, image, rays);
         progress.tileDone(k, rays.total() - raysBefore);
+        ++tilesDone;
     }
     progress.finish();
     for (const RayCounters& c : perThread) counters.merge(c);
-    if (stopped) throw RenderStopped("the render was stopped before it finished", 1);
+    if (stopped) {
+        // Every tile that started has finished: hand over the image as it is, if asked.
+        if (settings.partial) *settings.partial = {std::move(image), tilesDone, tiles.size()};
+        throw RenderStopped("the render was stopped before it finished", 1);
+    }
     return image;
 }
 // [render-loop]

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/camera.h"
@@ -12,6 +13,13 @@
 #include "core/progress.h"
 
 namespace rb {
+
+/// What a stopped render had finished: its image, with the tiles not reached left black.
+struct PartialImage {
+    std::optional<Image> image;  ///< Set when the render stopped.
+    std::size_t tilesDone = 0;   ///< Tiles rendered completely.
+    std::size_t tiles = 0;       ///< Tiles in the whole image.
+};
 
 /// How to sample the image.
 struct RenderSettings {
@@ -25,6 +33,8 @@ struct RenderSettings {
     /// Asked before each tile; once it says true, no further tile starts and render() throws
     /// RenderStopped after the running ones finish. Empty: never stops.
     std::function<bool()> shouldStop;
+    /// When set and the render stops, receives what was rendered (--partial). Null: dropped.
+    PartialImage* partial = nullptr;
 };
 
 /// Side of the square tiles the render loop hands to threads, in pixels.
