@@ -133,6 +133,30 @@ write_scene "$work" small.obj 256x256
 rc=$?
 expect_refusal full-disk "scene.lua:5: out.png: cannot write the PNG file (File too large)" ""
 
+# A real full disk, where the machine allows it: a 16 KiB tmpfs, filled to within 1 KiB and
+# mounted as the output folder in a private mount namespace (unshare -m, which needs root or user
+# namespaces). What is left on it is listed before the namespace, and the tmpfs, go away.
+work="$OUT/no-space"
+rm -rf "$work" && mkdir -p "$work/disk"
+grid_obj 20 >"$work/small.obj"
+write_scene "$work" small.obj 256x256
+sed -i "s#'out.png'#'disk/out.png'#" "$work/scene.lua"
+if unshare -m sh -c "mount -t tmpfs -o size=16k tmpfs '$work/disk'" 2>/dev/null; then
+    (cd "$work" && exec unshare -m bash -c '
+        mount -t tmpfs -o size=16k tmpfs disk || exit 99
+        dd if=/dev/zero of=disk/filler bs=1k count=15 2>/dev/null
+        /usr/bin/time -o peak -f %M "$0" --quiet scene.lua
+        rc=$?
+        ls -A disk >listing
+        exit $rc' "$RT") 2>"$work/stderr"
+    rc=$?
+    expect_refusal no-space "scene.lua:5: disk/out.png: cannot write the PNG file (No space left on device)" ""
+    [ "$(cat "$work/listing")" = filler ] && ok no-space-disk-left-as-it-was ||
+        fail no-space-disk-left-as-it-was "the disk held: $(tr '\n' ' ' <"$work/listing")"
+else
+    echo "skip no-space: this machine cannot mount a tmpfs in a private mount namespace"
+fi
+
 # A folder nobody may write to. Root may write anywhere, so as root rt runs as user nobody
 # (setpriv), from a copy of the binary in a folder nobody can read.
 work="$OUT/read-only"
