@@ -29,12 +29,14 @@ std::string trianglesObj(int n) {
     return text;
 }
 
-/// A budget that leaves about `free` bytes on top of what the process holds now.
-rb::MemoryBudget budgetLeaving(std::uint64_t free) {
+/// Parse OBJ text `text` under a budget that leaves `free` bytes on top of what the process
+/// holds when the parse starts (the text is in memory before the budget is measured).
+rb::ObjData parseLeaving(const std::string& text, const std::string& name, std::uint64_t free) {
+    std::istringstream in(text);
     rb::MemoryBudget budget;
     budget.limit = rb::residentBytes() + free;
     budget.origin = "a test budget";
-    return budget;
+    return rb::parseObj(in, name, budget);
 }
 
 }  // namespace
@@ -103,27 +105,24 @@ SCENARIO("byte counts are printed for people", "[ch01]") {
 
 SCENARIO("a mesh that would not fit is refused while it is read", "[ch03]") {
     GIVEN("a budget that leaves 2 MiB free") {
-        const rb::MemoryBudget budget = budgetLeaving(2 * kMiB);
         WHEN("an OBJ of 5,000 triangles is read (5000 × 272 B + 3 × 48 B = 1.3 MiB)") {
-            std::istringstream in(trianglesObj(5000));
             THEN("it loads") {
-                CHECK(rb::parseObj(in, "small.obj", budget).triangles.size() == 5000);
+                CHECK(parseLeaving(trianglesObj(5000), "small.obj", 2 * kMiB).triangles.size() ==
+                      5000);
             }
         }
         WHEN("an OBJ of 100,000 triangles is read (26 MiB)") {
-            std::istringstream in(trianglesObj(100000));
             THEN("the parse stops at the first check past 2 MiB: 8192 triangles, line 8195") {
                 // Checks come at 4096 entries and each doubling; 8192 × 272 B = 2.1 MiB > 2 MiB.
                 CHECK_THROWS_WITH(
-                    rb::parseObj(in, "big.obj", budget),
+                    parseLeaving(trianglesObj(100000), "big.obj", 2 * kMiB),
                     Contains("big.obj:8195: the mesh read so far (8192 triangles, 3 vertices)") &&
                         Contains("(a test budget)"));
             }
         }
         WHEN("an OBJ of 7,900 triangles, between two checks, is read") {
-            std::istringstream in(trianglesObj(7900));
             THEN("the check at the end of the file still applies: 7900 × 272 B = 2.05 MiB") {
-                CHECK_THROWS_WITH(rb::parseObj(in, "end.obj", budget),
+                CHECK_THROWS_WITH(parseLeaving(trianglesObj(7900), "end.obj", 2 * kMiB),
                                   Contains("end.obj:7903: the mesh read so far (7900 triangles"));
             }
         }
