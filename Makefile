@@ -11,7 +11,7 @@ DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-d
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps bench-deps configure rt test demo docs golden-update bench charts clean $(CHAPTER_TARGETS)
+.PHONY: deps bench-deps configure rt test test-exercises demo docs golden-update bench charts clean $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
 deps:
@@ -44,11 +44,19 @@ chapter%:
 rt: chapter$(LAST)
 
 # Every test: the unit tests, golden images, scenes and bad input (CTest), then the chapter
-# ladder the way a student climbs it (make chapterN for each N), which leaves ./rt the newest.
+# ladder the way a student climbs it (make chapterN for each N), which leaves ./rt the newest,
+# then the check that the tests notice every exercise region blanked.
 test: configure
 	cmake --build $(BUILD) -j $(JOBS)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"
+	python3 tests/exercises/regions.py mutate $(BUILD)
+
+# The tests prove they can fail: each exercise region, blanked one at a time, must make one of
+# its chapter's tests fail (only the test program is rebuilt, and only that chapter's tests run).
+test-exercises: configure
+	cmake --build $(BUILD) -j $(JOBS) --target raybook_tests
+	python3 tests/exercises/regions.py mutate $(BUILD)
 
 demo: rt
 	./rt --features=all --spp 4 scenes/showcase.lua

@@ -42,6 +42,9 @@ struct Split {
 /// Find the cheapest binned SAH split of refs[begin, end) over all three axes.
 Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end, const AABB& nodeBounds,
                 const AABB& centroidBounds, int nBins) {
+    // [exercise-sah-split]
+    // Exercise 3.2, the binned SAH split: read ch03-equations.
+    // Blank: return Split{};
     // Drop every primitive into a bin per axis by its centroid, in one pass.
     std::array<std::array<AABB, kMaxBins>, 3> binBounds;
     std::array<std::array<std::uint32_t, kMaxBins>, 3> binCount;
@@ -94,6 +97,7 @@ Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end, con
         }
     }
     return best;
+    // [exercise-sah-split]
 }
 // [binned-sah]
 

@@ -28,6 +28,9 @@ struct TriangleHit {
 /// triangles, and a degenerate triangle is never hit.
 [[gnu::always_inline]] inline bool intersectTriangle(const WatertightRay& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2,
                        double tMax, TriangleHit& hit) {
+    // [exercise-watertight-triangle]
+    // Exercise 3.1, the watertight ray–triangle test: read ch03-equations.
+    // Blank: return false;
     // Translate the vertices so the ray starts at the origin.
     const Vec3 A = p0 - ray.o, B = p1 - ray.o, C = p2 - ray.o;
     // Shear and scale them so the ray runs along +z.
@@ -51,6 +54,7 @@ struct TriangleHit {
     const double invDet = 1.0 / det;
     hit = TriangleHit{t, U * invDet, V * invDet, W * invDet};
     return true;
+    // [exercise-watertight-triangle]
 }
 // [watertight-triangle]
 

@@ -4,6 +4,9 @@ namespace rb {
 
 // [box-intersect]
 bool Box::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
+    // [exercise-box-slabs]
+    // Exercise 1.3, the ray–box slab test: read ch01-equations.
+    // Blank: return false;
     if (isDegenerateDirection(ray.d)) return false;
     // Clip the ray against each slab 0 ≤ x_axis ≤ 1, remembering which face bounds the interval.
     double tEnter = -std::numeric_limits<double>::infinity();
@@ -48,6 +51,7 @@ bool Box::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
     hit.uv = Vec2(p[(axis + 1) % 3], p[(axis + 2) % 3]);
     hit.primitive = static_cast<std::uint32_t>(axis);
     return true;
+    // [exercise-box-slabs]
 }
 // [box-intersect]
 

@@ -27,11 +27,15 @@ PinholeCamera::PinholeCamera(const CameraSpec& spec, int width, int height)
 
 // [camera-ray]
 Ray PinholeCamera::generateRay(double x, double y) const {
+    // [exercise-camera-ray]
+    // Exercise 1.2, the camera ray through a pixel: read ch01-equations.
+    // Blank: return Ray{eye_, w_};
     // Map pixel coordinates to [-1, 1] on the image plane, with +y up.
     const double sx = 2.0 * x / width_ - 1.0;
     const double sy = 1.0 - 2.0 * y / height_;
     const Vec3 d = w_ + sx * halfWidth_ * u_ + sy * halfHeight_ * v_;
     return Ray{eye_, glm::normalize(d)};
+    // [exercise-camera-ray]
 }
 // [camera-ray]
 

@@ -6,9 +6,13 @@ namespace rb {
 void Instance::setTransform(const Mat4& m) {
     objectToWorld = m;
     worldToObject = glm::inverse(m);
+    // [exercise-normal-transform]
+    // Exercise 2.3, transforming normals: read ch02-equations.
+    // Blank: normalToWorld = Mat3(objectToWorld);
     // Normals transform by the inverse transpose, so they stay perpendicular to the surface
     // under non-uniform scale.
     normalToWorld = glm::transpose(Mat3(worldToObject));
+    // [exercise-normal-transform]
     worldBounds = shape->bounds().transformed(m);
 }
 // [normal-transform]

@@ -6,6 +6,9 @@ namespace rb {
 
 // [sphere-intersect]
 bool Sphere::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
+    // [exercise-ray-sphere]
+    // Exercise 1.1, the ray–sphere quadratic: read ch01-equations.
+    // Blank: return false;
     if (isDegenerateDirection(ray.d)) return false;
     // Compute the quadratic coefficients of |o + t·d|² = 1 (with b = 2h).
     const double a = glm::dot(ray.d, ray.d);
@@ -22,6 +25,7 @@ bool Sphere::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
     hit.n = ray.o + t * ray.d;  // on the unit sphere the point is its own normal
     hit.primitive = 0;
     return true;
+    // [exercise-ray-sphere]
 }
 // [sphere-intersect]
 

@@ -30,12 +30,16 @@ double phongExponentFromFuzz(double fuzz) {
 
 // [fuzz-sphere]
 Vec3 sampleUniformBall(double u1, double u2, double u3) {
+    // [exercise-fuzz-ball]
+    // Exercise 7.2, a uniform point in the fuzz ball: read ch07-equations.
+    // Blank: return Vec3(0.0);
     // A uniform direction (Archimedes: z uniform in [-1, 1]) at radius ∛u3, because the
     // volume inside radius r grows as r³.
     const double z = 1.0 - 2.0 * u1;
     const double phi = 2.0 * kPi * u2;
     const double ring = std::sqrt(std::max(0.0, 1.0 - z * z));
     return std::cbrt(u3) * Vec3(ring * std::cos(phi), ring * std::sin(phi), z);
+    // [exercise-fuzz-ball]
 }
 
 Vec3 sampleFuzzSphere(const Vec3& axis, double fuzz, double u1, double u2, double u3) {
@@ -66,6 +70,9 @@ double fuzzSpherePdf(double fuzz, double cosAlpha) {
 
 // [phong-lobe]
 Vec3 samplePhongLobe(const Vec3& axis, double exponent, double u1, double u2) {
+    // [exercise-phong-lobe]
+    // Exercise 7.1, sampling the Phong lobe: read ch07-equations.
+    // Blank: return axis;
     // Invert the CDF of cos α, P(cos α ≤ μ) = μ^(n+1): cos α = ξ^(1/(n+1)) with ξ = 1 − u1
     // in (0, 1]. Compute 1 − cos α with expm1 so that sin α keeps its precision when n is
     // huge and cos α rounds to 1.
@@ -74,6 +81,7 @@ Vec3 samplePhongLobe(const Vec3& axis, double exponent, double u1, double u2) {
     const double sinAlpha = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
     const double phi = 2.0 * kPi * u2;
     return Frame(axis).toWorld(Vec3(sinAlpha * std::cos(phi), sinAlpha * std::sin(phi), cosAlpha));
+    // [exercise-phong-lobe]
 }
 
 double phongLobePdf(double exponent, double cosAlpha) {

@@ -6,6 +6,9 @@ namespace rb {
 
 // [phong-term]
 Colour phongBrdfTerm(const Material& m, const Vec3& n, const Vec3& l, const Vec3& v) {
+    // [exercise-phong-term]
+    // Exercise 2.1, the Phong term: read ch02-equations.
+    // Blank: return Colour(0.0);
     const double nDotL = glm::dot(n, l);
     if (nDotL <= 0.0) return Colour(0.0);  // light is behind the surface
     const Colour diffuse = m.kd * nDotL;
@@ -14,6 +17,7 @@ Colour phongBrdfTerm(const Material& m, const Vec3& n, const Vec3& l, const Vec3
     const double rDotV = std::max(0.0, glm::dot(r, v));
     if (rDotV == 0.0 && m.shininess > 0.0) return diffuse;  // 0^s = 0: skip the pow
     return diffuse + m.ks * std::pow(rDotV, m.shininess);
+    // [exercise-phong-term]
 }
 // [phong-term]
 
@@ -30,9 +34,13 @@ Colour lightFromPoint(const ShadeContext& ctx, const Hit& hit, const Material& m
     if (!(r > 0.0) || emission <= 0.0) return Colour(0.0);
     const Vec3 l = toLight / r;
     if (glm::dot(n, l) <= 0.0) return Colour(0.0);  // light behind the shading normal
+    // [exercise-shadow-ray]
+    // Exercise 2.2, the shadow ray: read ch02-equations.
+    // Blank: 
     // Cast a shadow ray from the (offset) hit point to the light: t in (0, 1).
     const Vec3 origin = offsetRayOrigin(hit.p, ng, l);
     if (ctx.integrator.occluded(Ray{origin, from - origin}, 1.0, ctx.counters)) return Colour(0.0);
+    // [exercise-shadow-ray]
     return emission * light.intensityAt(r) * phongBrdfTerm(m, n, l, v);
 }
 // [shadow-ray]

@@ -44,12 +44,16 @@ Colour ReflectionTerm::apply(const ShadeContext& ctx, const Ray& ray, const Hit&
                              const Colour& colour) const {
     const double r = hit.material ? hit.material->param("reflect") : 0.0;
     if (r <= 0.0 || ctx.depth >= ctx.scene.maxDepth) return colour;
+    // [exercise-mirror]
+    // Exercise 4.2, the mirror term: read ch04-equations.
+    // Blank: return colour;
     // Reflect about the shading normal turned towards the viewer (no back-face culling).
     const Vec3 d = glm::normalize(ray.d);
     const Vec3 n = faceForward(hit.ns, -d);
     const Vec3 mirror = glm::normalize(reflect(d, n));
     return colour + r * traceSpecular(ctx, hit, mirror, faceForward(hit.ng, -d),
                                       RayKind::Reflection, ctx.media, r);
+    // [exercise-mirror]
 }
 // [reflection-term]
 

@@ -7,6 +7,9 @@ namespace rb {
 
 // [snell]
 bool snellCosTheta_t(double cosTheta_i, double eta_i, double eta_t, double& cosTheta_t) {
+    // [exercise-snell]
+    // Exercise 5.1, Snell's law: read ch05-equations.
+    // Blank: return false;
     // Snell's law on the sines, sin θt = (η_i/η_t) sin θi, squared and written with cosines:
     // cos²θt = 1 − η²(1 − cos²θi) = (1 − η²) + η² cos²θi. The second form keeps the digits of a
     // grazing cos θi, which 1 − cos²θi would round away.
@@ -17,11 +20,15 @@ bool snellCosTheta_t(double cosTheta_i, double eta_i, double eta_t, double& cosT
     if (cos2Theta_t < 0.0) return false;
     cosTheta_t = std::sqrt(cos2Theta_t);
     return true;
+    // [exercise-snell]
 }
 // [snell]
 
 // [fresnel-exact]
 FresnelTerms fresnelDielectricTerms(double cosTheta_i, double eta_i, double eta_t) {
+    // [exercise-fresnel]
+    // Exercise 5.2, the exact Fresnel equations: read ch05-equations.
+    // Blank: return FresnelTerms{};
     FresnelTerms f;  // starts as total reflection
     cosTheta_i = std::clamp(cosTheta_i, 0.0, 1.0);
     // The same index on both sides is no interface at all. Handling it here also avoids 0/0
@@ -54,6 +61,7 @@ FresnelTerms fresnelDielectricTerms(double cosTheta_i, double eta_i, double eta_
     f.Ts = fourProduct / ((sNear + sFar) * (sNear + sFar));
     f.Tp = fourProduct / ((pNear + pFar) * (pNear + pFar));
     return f;
+    // [exercise-fresnel]
 }
 
 double fresnelExact(double cosTheta_i, double eta_i, double eta_t) {

@@ -28,6 +28,8 @@ bool refractDirection(const Vec3& d, const Vec3& n, double eta_i, double eta_t, 
 // [ior-stack]
 MediaCrossing crossSurface(const MediumStack& media, const Instance* instance, double ior,
                            bool entering) {
+    // [exercise-ior-stack]
+    // Exercise 5.3, crossing a surface with the IOR stack: read ch05-equations.
     MediaCrossing c;
     c.entering = entering;
     if (entering) {
@@ -48,6 +50,7 @@ MediaCrossing crossSurface(const MediumStack& media, const Instance* instance, d
         c.beyond = media;
     }
     return c;
+    // [exercise-ior-stack]
 }
 // [ior-stack]
 

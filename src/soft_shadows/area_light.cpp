@@ -43,6 +43,9 @@ RectangleLight::RectangleLight(double length, double width, const Vec3& normal, 
 // [rectangle-sample]
 Vec3 RectangleLight::samplePoint(const Vec3& centre, const Vec3& p, int k, int n, const Vec2& u,
                                  double& weight) const {
+    // [exercise-rectangle-sample]
+    // Exercise 6.1, sampling a rectangular light: read ch06-equations.
+    // Blank: weight = 1.0; return centre;
     // Pick the point: uniform over the panel, pdf_A = 1 / (length · width).
     const Vec2 s = unitSquareSample(k, n, u, sampling_);
     const Vec3 x = centre + ((s.x - 0.5) * length_) * left_ + ((s.y - 0.5) * width_) * up_;
@@ -52,6 +55,7 @@ Vec3 RectangleLight::samplePoint(const Vec3& centre, const Vec3& p, int k, int n
     const double r = glm::length(toP);
     weight = r > 0.0 ? std::max(0.0, glm::dot(normal_, toP) / r) : 0.0;
     return x;
+    // [exercise-rectangle-sample]
 }
 // [rectangle-sample]
 
@@ -94,6 +98,9 @@ Vec3 BallLight::samplePoint(const Vec3& centre, const Vec3& p, int k, int n, con
         weight = r > 0.0 ? 4.0 * std::abs(glm::dot(normal, p - x)) / r : 0.0;
         return x;
     }
+    // [exercise-ball-sample]
+    // Exercise 6.2, sampling the cone of a ball light: read ch06-equations.
+    // Blank: weight = 1.0; return centre;
     // Compute the cone of directions from p that meet the ball: sinθ_max = R / d. The
     // form sin² / (1 + cos) keeps 1 − cosθ_max accurate for small or distant balls.
     const double sin2ThetaMax = (R / d) * (R / d);
@@ -121,6 +128,7 @@ Vec3 BallLight::samplePoint(const Vec3& centre, const Vec3& p, int k, int n, con
     const Vec3 fromP = x - p;
     weight = 2.0 * oneMinusCosThetaMax * glm::dot(fromP, fromP) / (R * R);
     return x;
+    // [exercise-ball-sample]
 }
 
 double BallLight::pdfSolidAngle(const Vec3& centre, const Vec3& p) const {
