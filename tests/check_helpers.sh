@@ -2,6 +2,19 @@
 # header comments that steer a scene.
 passed=0
 failed=0
+# The repository these helpers belong to.
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+## The arguments RT_BINARY OUT_DIR that most test scripts take: sets RT and OUT, both absolute
+## (OUT is created); exits 2 with the usage line for anything else.
+rt_and_out_dir() {
+    if [ $# -ne 2 ]; then
+        echo "usage: $0 RT_BINARY OUT_DIR" >&2
+        exit 2
+    fi
+    RT=$(realpath "$1")
+    OUT=$(mkdir -p "$2" && realpath "$2")
+}
 
 ## Record a passed check.
 ok() { echo "ok   $1"; passed=$((passed + 1)); }

@@ -11,15 +11,9 @@
 # Prints one line per check and a final "N passed, M failed"; exits 1 on any failure.
 set -u
 
-if [ $# -ne 2 ]; then
-    echo "usage: $0 RT_BINARY OUT_DIR" >&2
-    exit 2
-fi
-RT=$(realpath "$1")
-OUT=$(mkdir -p "$2" && realpath "$2")
-ROOT=$(cd "$(dirname "$0")/.." && pwd)
 # shellcheck source=check_helpers.sh
-source "$ROOT/tests/check_helpers.sh"
+source "$(dirname "$0")/check_helpers.sh"
+rt_and_out_dir "$@"
 SLOW="$ROOT/tests/batch/class/student07/stars.lua"
 ENDLESS="$ROOT/tests/bad_input/cases/endless-loop.lua"
 
@@ -44,7 +38,7 @@ signal_case() {
     rm -rf "$work" && mkdir -p "$work"
     (cd "$work" && exec "$RT" --quiet --output out.png "$@" "$scene") 2>"$work/stderr" &
     local pid=$!
-    sleep 1
+    sleep "${SIGNAL_DELAY:-1}"
     local start=$SECONDS
     kill "-$signal" "$pid"
     wait "$pid"
@@ -63,14 +57,27 @@ start=$SECONDS
 rc=$?
 expect_stop time-limit 124 "time limit of 1 s" "$rc" $((SECONDS - start - 1))
 
-# --partial: the tiles finished before the signal are kept, under a name that says so.
+# --partial: the tiles finished before the signal are kept, under a name that says so. The scene
+# puts the camera inside a large sphere lit by ambient light, so every pixel of a finished tile
+# is non-black, and takes 64 samples a pixel, so that it is far from done after 2 seconds.
+PARTIAL_SCENE="$OUT/inside-sphere.lua"
+cat >"$PARTIAL_SCENE" <<'EOF'
+local root = gr.node('root')
+local s = gr.sphere('s')
+s:scale(100, 100, 100)
+s:set_material(gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 10))
+root:add_child(s)
+gr.render(root, 'inside.png', 2000, 2000, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60,
+          {0.5, 0.5, 0.5}, {gr.light({0, 0, 0}, {0.2, 0.2, 0.2}, {1, 0, 0})})
+EOF
 keep=out.partial.png
-signal_case partial-after-sigint INT "$SLOW" 130 "tiles rendered so far to out.partial.png" --partial
+SIGNAL_DELAY=2 signal_case partial-after-sigint INT "$PARTIAL_SCENE" 130 \
+    "tiles rendered so far to out.partial.png" --partial --spp 64
 keep=
-# The partial image is a complete PNG of the scene's full size (the tiles not reached are black),
-# and it is not all black: the tiles finished in the first second are in it.
-size=$(grep -o 'gr.render([^,]*, *[^,]*, *[0-9]*, *[0-9]*' "$SLOW" | grep -o '[0-9]*, *[0-9]*$' | tr -d ' ' | tr , x)
-if python3 - "$OUT/partial-after-sigint/out.partial.png" "$size" <<'PY'
+# The partial image is a whole PNG of the scene's full size, and it holds exactly the tiles that
+# stderr says were finished: that many 16 x 16 tiles have colour, the rest are black.
+tiles=$(grep -o 'wrote the [0-9]* of' "$OUT/partial-after-sigint/stderr" | grep -o '[0-9]*')
+if python3 - "$OUT/partial-after-sigint/out.partial.png" 2000x2000 "${tiles:-missing}" <<'PY'
 import struct, sys, zlib
 data = open(sys.argv[1], "rb").read()
 assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
@@ -84,9 +91,36 @@ while pos < len(data):
         idat += data[pos + 8:pos + 8 + length]
     pos += 12 + length
 raw = zlib.decompress(idat)
-assert len(raw) == (3 * width + 1) * height, "wrong amount of pixel data"
-assert any(b for i, b in enumerate(raw) if i % (3 * width + 1) != 0), "all black"
+stride = 3 * width
+assert len(raw) == (stride + 1) * height, "wrong amount of pixel data"
+# Undo the PNG row filters (Source: the PNG specification, section 9) to get the pixels.
+rows, prev = [], bytearray(stride)
+for y in range(height):
+    start = y * (stride + 1)
+    kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
+    for i in range(stride):
+        a = line[i - 3] if i >= 3 else 0
+        b, c = prev[i], (prev[i - 3] if i >= 3 else 0)
+        if kind == 1:
+            line[i] = (line[i] + a) & 255
+        elif kind == 2:
+            line[i] = (line[i] + b) & 255
+        elif kind == 3:
+            line[i] = (line[i] + (a + b) // 2) & 255
+        elif kind == 4:
+            p = a + b - c
+            pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+            line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+    rows.append(line)
+    prev = line
+lit = sum(1 for ty in range(0, height, 16) for tx in range(0, width, 16)
+          if any(rows[y][3 * tx:3 * min(tx + 16, width)].strip(b"\0")
+                 for y in range(ty, min(ty + 16, height))))
+assert sys.argv[3].isdigit(), "stderr does not say how many tiles were written"
+assert int(sys.argv[3]) > 0, "no tile was finished before the signal"
+assert lit == int(sys.argv[3]), f"{lit} tiles have colour, stderr says {sys.argv[3]}"
 PY
-then ok "partial-image-is-a-whole-png"; else fail "partial-image-is-a-whole-png" "see above"; fi
+then ok "partial-image-holds-the-finished-tiles"; else
+    fail "partial-image-holds-the-finished-tiles" "see above"; fi
 
 finish

@@ -15,15 +15,10 @@
 # Prints one line per check and "N passed, M failed"; exits 1 on any failure.
 set -u
 
-if [ $# -ne 2 ]; then
-    echo "usage: $0 RT_BINARY OUT_DIR" >&2
-    exit 2
-fi
-RT=$(realpath "$1")
-OUT=$(mkdir -p "$2" && realpath "$2")
 HERE=$(cd "$(dirname "$0")" && pwd)
 LIMIT=${BATCH_TIME_LIMIT:-5}
 source "$HERE/../check_helpers.sh"
+rt_and_out_dir "$@"
 
 # ---- Run the batch on a fresh copy of the class -------------------------------------------------
 rm -rf "$OUT/class"

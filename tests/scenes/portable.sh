@@ -12,18 +12,11 @@
 # Prints one line per check and a final "N passed, M failed"; exits 1 on any failure.
 set -u
 
-if [ $# -ne 2 ]; then
-    echo "usage: $0 RT_BINARY OUT_DIR" >&2
-    exit 2
-fi
-RT=$(realpath "$1")
-OUT=$(mkdir -p "$2" && realpath "$2")
-ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 TIMEOUT=${SCENES_TIMEOUT:-60}
 
 # shellcheck source=../check_helpers.sh
 source "$(dirname "$0")/../check_helpers.sh"
-
+rt_and_out_dir "$@"
 
 # A copy of the scenes, far from the repository: top-level scenes in copy/, the rest in
 # copy/<folder>/, meshes in copy/assets/.

@@ -30,21 +30,12 @@
 # equalities): the golden tests do that for the chapter and seed scenes.
 set -u
 
-if [ $# -ne 2 ]; then
-    echo "usage: $0 RT_BINARY OUT_DIR" >&2
-    exit 2
-fi
-RT=$(realpath "$1")
-OUT=$(mkdir -p "$2" && realpath "$2")
-ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+# shellcheck source=../check_helpers.sh
+source "$(dirname "$0")/../check_helpers.sh"
+rt_and_out_dir "$@"
 cd "$ROOT" || exit 2
 SIZE=${SCENES_SIZE:-160x120}
 TIMEOUT=${SCENES_TIMEOUT:-60}
-
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-fail() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
 
 # Check a PNG: prints "WxH max mean" (8-bit values), then the maximum inside each region
 # given as "x0 y0 x1 y1" in fractions of the image size, or an error. Python's standard
@@ -106,9 +97,6 @@ except Exception as e:
     print('error: %s' % e)
 PY
 }
-
-# Lines of a scene's header comments (the comment block at the top) with the given key.
-header() { sed -n "/^--/!q; s/^-- $2: *//p" "$1"; }
 
 # A path with its "." and ".." parts resolved, without touching the file system (so the same
 # scene named two ways, scenes/a4/x.lua and scenes/legacy/../a4/x.lua, is one key).
@@ -250,5 +238,4 @@ for scene in "${scenes[@]}"; do
     fi
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -11,16 +11,11 @@
 # Prints one line per case and a final "N passed, M failed"; exits 1 on any failure.
 set -u
 
-if [ $# -ne 2 ]; then
-    echo "usage: $0 RT_BINARY OUT_DIR" >&2
-    exit 2
-fi
-RT=$(realpath "$1")
-OUT=$(mkdir -p "$2" && realpath "$2")
 HERE=$(cd "$(dirname "$0")" && pwd)
 
 # shellcheck source=../check_helpers.sh
 source "$(dirname "$0")/../check_helpers.sh"
+rt_and_out_dir "$@"
 
 
 for scene in "$HERE"/warnings/*.lua; do
