@@ -141,7 +141,7 @@ SCENARIO("on a flat region adaptive supersampling equals uniform, with far fewer
         const auto flatU = picture([](const Vec2&) { return true; }, uniformRays);
         const auto flatA = picture([](const Vec2&) { return true; }, adaptiveRays);
         const rb::AdaptiveSettings settings{0.1, 3};
-        rb::LatticeSamples lattice(16, settings.maxDepth, seed(), flatA);
+        rb::LatticeSamples lattice(0, 0, 16, 16, 16, settings.maxDepth, seed(), flatA);
         WHEN("each pixel is sampled uniformly (4 × 4) and adaptively (depth 3)") {
             bool equal = true;
             for (int y = 0; y < 16; ++y)
@@ -204,7 +204,7 @@ SCENARIO("a straight edge across a pixel gets the area it covers", "[ch08]") {
                 for (const HalfPlane& h : edges) {
                     std::uint64_t rays = 0;
                     const auto edge = picture([&](const Vec2& p) { return h.contains(p); }, rays);
-                    rb::LatticeSamples lattice(1, depth, seed(), edge);
+                    rb::LatticeSamples lattice(0, 0, 1, 1, 1, depth, seed(), edge);
                     const double estimate = rb::adaptivePixel(0, 0, {0.1, depth}, lattice).x;
                     const double error = std::abs(estimate - coverage(h, 0, 0));
                     worst = std::max(worst, error);
@@ -247,7 +247,7 @@ SCENARIO("adaptive supersampling misses a feature thinner than its first sample 
                 std::uint64_t rays = 0;
                 const auto stripe = picture(
                     [&](const Vec2& p) { return p.x - x0 - std::floor(p.x - x0) < w; }, rays);
-                rb::LatticeSamples lattice(1, 3, seed(), stripe);
+                rb::LatticeSamples lattice(0, 0, 1, 1, 1, 3, seed(), stripe);
                 const Colour a = rb::adaptivePixel(0, 0, {0.1, 3}, lattice);
                 const Colour u = rb::uniformPixel({0, 0, seed(), 0}, 4, stripe);
                 finite = finite && rbtest::finiteNonNegative(a) && rbtest::finiteNonNegative(u);
@@ -401,14 +401,14 @@ SCENARIO("antialiased images are the same for any thread count and any tile orde
         std::uint64_t rays = 0;
         const HalfPlane h{0.3, 1.0, 7.3};
         const auto edge = picture([&](const Vec2& p) { return h.contains(p); }, rays);
-        rb::LatticeSamples shared(16, 3, seed(), edge);
+        rb::LatticeSamples shared(0, 0, 16, 16, 16, 3, seed(), edge);
         for (int y = 0; y < 16; ++y)
             for (int x = 0; x < 16; ++x) rb::adaptivePixel(x, y, {0.1, 3}, shared);
         THEN("every pixel comes out the same: a corner sample does not depend on who traced it") {
             bool same = true;
             for (int y = 0; y < 16; ++y)
                 for (int x = 0; x < 16; ++x) {
-                    rb::LatticeSamples alone(16, 3, seed(), edge);
+                    rb::LatticeSamples alone(x, y, x + 1, y + 1, 16, 3, seed(), edge);
                     same = same && rb::adaptivePixel(x, y, {0.1, 3}, alone) ==
                                        rb::adaptivePixel(x, y, {0.1, 3}, shared);
                 }

@@ -83,7 +83,8 @@ AaSettings aaSettings(const RenderContext& context) {
                          ") takes n x n rays per pixel, so it needs a square number (4, 9, 16, ...)");
     if (s.mode == AaMode::Adaptive && !spp.empty())
         throw InputError("--spp does not apply to the adaptive sampler (from " + where +
-                         "): its rays follow --aa-threshold and --aa-depth");
+                         "): its rays follow --aa-threshold and --aa-depth; add --aa=jittered (or uniform, "
+                         "random) to choose a sampler that takes --spp");
     // The adaptive sampler's threshold and depth.
     const std::string threshold = context.cliOption("aa-threshold");
     s.adaptive.threshold = threshold.empty() ? context.sceneOption("aa_threshold", 0.1)
@@ -112,8 +113,15 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
         rays.add(RayKind::Camera);
         return integrator.trace(ray, sampler, rays, 0);
     };
-    // The adaptive sampler's samples, shared by the pixels of this tile.
-    LatticeSamples lattice(width, settings_.adaptive.maxDepth, seed, radiance);
+    if (settings_.mode == AaMode::Adaptive) {
+        // The adaptive sampler's samples, shared by the pixels of this tile.
+        LatticeSamples lattice(tile.x0, tile.y0, tile.x1, tile.y1, width,
+                               settings_.adaptive.maxDepth, seed, radiance);
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x)
+                image.set(x, y, adaptivePixel(x, y, settings_.adaptive, lattice));
+        return;
+    }
     const int n = static_cast<int>(std::lround(std::sqrt(settings_.samples)));
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
@@ -123,7 +131,7 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
                 case AaMode::Random: c = randomPixel(pixel, settings_.samples, radiance); break;
                 case AaMode::Uniform: c = uniformPixel(pixel, n, radiance); break;
                 case AaMode::Jittered: c = jitteredPixel(pixel, n, radiance); break;
-                case AaMode::Adaptive: c = adaptivePixel(x, y, settings_.adaptive, lattice); break;
+                case AaMode::Adaptive:  // rendered above
                 case AaMode::None: break;  // never installed
             }
             image.set(x, y, c);

@@ -43,25 +43,36 @@ Colour jitteredPixel(const PixelRef& pixel, int n, const RadianceAt& radiance) {
 }
 // [jittered-pixel]
 
-LatticeSamples::LatticeSamples(int width, int maxDepth, std::uint64_t seed,
-                               const RadianceAt& radiance)
+LatticeSamples::LatticeSamples(int x0, int y0, int x1, int y1, int width, int maxDepth,
+                               std::uint64_t seed, const RadianceAt& radiance)
     : perPixel_(std::int64_t(2) << maxDepth),
       rowLength_(static_cast<std::int64_t>(width) * perPixel_ + 1),
+      i0_(x0 * perPixel_),
+      j0_(y0 * perPixel_),
+      columns_((x1 - x0) * perPixel_ + 1),
       seed_(seed),
-      radiance_(radiance) {}
+      radiance_(radiance) {
+    const std::int64_t points = columns_ * ((y1 - y0) * perPixel_ + 1);
+    samples_.reset(new Colour[points]);  // uninitialised on purpose (see done_)
+    done_.assign((points + 63) / 64, 0);
+}
 
 // [lattice-sample]
-const Colour& LatticeSamples::at(std::int64_t i, std::int64_t j) {
-    const std::int64_t key = j * rowLength_ + i;
-    auto it = samples_.find(key);
-    if (it != samples_.end()) return it->second;
+Colour LatticeSamples::at(std::int64_t i, std::int64_t j) {
+    // Already traced: share it.
+    const std::int64_t slot = (j - j0_) * columns_ + (i - i0_);
+    const std::uint64_t bit = std::uint64_t(1) << (slot % 64);
+    if (done_[slot / 64] & bit) return samples_[slot];
     // First use: trace it. Its position and its random stream depend only on (i, j) and the
     // seed, so whoever traces this point gets this colour. L is a power of two, so i / L is
     // exact: the lattice point and a pixel centre (i = (x + ½)·L) are the very same position.
+    const std::int64_t key = j * rowLength_ + i;
     Sampler sampler(seed_, static_cast<std::uint64_t>(key), 0);
     const double L = static_cast<double>(perPixel_);
-    const Colour c = radiance_(Vec2(i / L, j / L), sampler);
-    return samples_.emplace(key, c).first->second;
+    samples_[slot] = radiance_(Vec2(i / L, j / L), sampler);
+    done_[slot / 64] |= bit;
+    ++traced_;
+    return samples_[slot];
 }
 // [lattice-sample]
 

@@ -6,7 +6,8 @@
 
 #include <cstdint>
 #include <functional>
-#include <unordered_map>
+#include <memory>
+#include <vector>
 
 #include "core/sampler.h"
 #include "core/vec.h"
@@ -46,28 +47,37 @@ struct AdaptiveSettings {
 /// The largest `AdaptiveSettings::maxDepth` allowed: 4^6 = 4096 sub-squares per pixel.
 inline constexpr int kMaxAdaptiveDepth = 6;
 
-/// The samples of adaptive supersampling, on a lattice of L = 2^(maxDepth+1) points per pixel
-/// side. A lattice point's sample is a pure function of its position: its ray goes through
-/// (i/L, j/L) and draws from stream (seed, i + j·(width·L + 1), 0). So a corner shared by two
-/// pixels (or two sub-squares) is traced once here, and any other cache (another tile,
-/// another thread) that traces it gets the same colour.
+/// The samples of adaptive supersampling over a rectangle of pixels, on a lattice of
+/// L = 2^(maxDepth+1) points per pixel side. A lattice point's sample is a pure function of its
+/// position: its ray goes through (i/L, j/L) and draws from stream (seed, i + j·(width·L + 1),
+/// 0). So a corner shared by two pixels (or two sub-squares) is traced once here, and any other
+/// LatticeSamples (another tile, another thread) that traces it gets the same colour.
 class LatticeSamples {
   public:
-    /// The lattice of an image `width` pixels wide, for squares split at most maxDepth times.
-    LatticeSamples(int width, int maxDepth, std::uint64_t seed, const RadianceAt& radiance);
-    /// The sample at lattice point (i, j), traced on first use.
-    const Colour& at(std::int64_t i, std::int64_t j);
+    /// The lattice of pixels [x0, x1) × [y0, y1) of an image `width` pixels wide, for squares
+    /// split at most maxDepth times.
+    LatticeSamples(int x0, int y0, int x1, int y1, int width, int maxDepth, std::uint64_t seed,
+                   const RadianceAt& radiance);
+    /// The sample at lattice point (i, j) (image coordinates × L; inside the rectangle), traced
+    /// on first use.
+    Colour at(std::int64_t i, std::int64_t j);
     /// Lattice points per pixel side: 2^(maxDepth+1).
     std::int64_t perPixel() const { return perPixel_; }
     /// How many samples were traced (each lattice point once).
-    std::uint64_t traced() const { return samples_.size(); }
+    std::uint64_t traced() const { return traced_; }
 
   private:
     std::int64_t perPixel_;
-    std::int64_t rowLength_;
+    std::int64_t rowLength_;  ///< Lattice points per row of the whole image: the key's stride.
+    std::int64_t i0_, j0_;    ///< The rectangle's top-left lattice point.
+    std::int64_t columns_;    ///< Lattice points per row of the rectangle.
     std::uint64_t seed_;
     const RadianceAt& radiance_;
-    std::unordered_map<std::int64_t, Colour> samples_;
+    // One slot per lattice point of the rectangle, left uninitialised: only the pages of points
+    // actually traced are ever touched, and `done_` (one bit a point) says which those are.
+    std::unique_ptr<Colour[]> samples_;
+    std::vector<std::uint64_t> done_;
+    std::uint64_t traced_ = 0;
 };
 
 /// Adaptive recursive supersampling of pixel (x, y), in the manner of POV-Ray's method 2 and

@@ -12,7 +12,8 @@
 # edges to antialias). Each renderer's error is its RMSE against its own converged reference,
 # since the two renderers' pictures differ slightly (POV-Ray's shadows through glass, its
 # Fresnel): raybook's reference is jittered 16 x 16 (256 rays per pixel), POV-Ray's is +AM2 with
-# threshold 0 and depth 4 (+A0.0 +R4: every pixel split into 16 x 16). Both write linear colour
+# threshold 0 and depth 4 (+A0.0 +R4: every pixel split into 16 x 16). POV-Ray runs without
+# jitter (-J), so its samples, like raybook's adaptive ones, sit on a fixed lattice. Both write linear colour
 # (POV-Ray with File_Gamma=1.0), 8 bits per channel. Times: raybook's render phase (--stats),
 # POV-Ray's Trace Time; the fastest of 3 runs each, runs alternating.
 # The sweep: thresholds 0.4, 0.2, 0.1, 0.05, 0.025, 0.01 at depth 3 (raybook --aa-depth 3,
@@ -51,7 +52,7 @@ fastest() { sort -g | head -1; }
 
 echo "aa_vs_povray: references ($size)" >&2
 rb "$tmp/rb-ref.png" --aa=jittered --spp 256 --seed 7 >/dev/null
-pv "$tmp/pv-ref.png" +A0.0 +AM2 +R4 >/dev/null
+pv "$tmp/pv-ref.png" +A0.0 +AM2 +R4 -J >/dev/null
 
 dat=$out/povray.dat
 {
@@ -66,7 +67,7 @@ dat=$out/povray.dat
           times+=("$(rb "$tmp/img.png" --aa=adaptive --aa-threshold "$t" --aa-depth 3)")
           ref=$tmp/rb-ref.png
         else
-          times+=("$(pv "$tmp/img.png" +A"$t" +AM2 +R3)")
+          times+=("$(pv "$tmp/img.png" +A"$t" +AM2 +R3 -J)")
           ref=$tmp/pv-ref.png
         fi
       done

@@ -37,13 +37,16 @@ set title 'Antialiasing error against rays (chapter scene, 128x96)'
 set xlabel 'camera rays per pixel'
 set ylabel 'RMSE against jittered 32x32'
 set logscale xy
+set yrange [0.003:0.2]
 set grid
-set key bottom left
+set key top right
 plot '$data/rays.dat' index 0 using 1:3 with linespoints pt 6 title 'random (seed 000)', \
      '' index 1 using 1:3 with linespoints pt 5 title 'uniform n x n', \
      '' index 2 using 1:3 with linespoints pt 7 title 'jittered n x n', \
-     '' index 3 using 1:3 with linespoints pt 9 lw 2 title 'adaptive (thresholds)', \
-     '' index 3 using 1:3:4 with labels offset char 1.5,0.6 font ',9' notitle
+     '' index 3 using 1:3 with linespoints pt 9 lw 2 title 'adaptive, depth 3 (thresholds)', \
+     '' index 3 using 1:3:((\$4 == 0.4 || \$4 == 0.1 || \$4 == 0.01 || \$4 == 0) ? sprintf('%g', \$4) : '') \
+        with labels offset char 0,-1 font ',9' notitle, \
+     '' index 4 using 1:3 with points pt 8 ps 1.5 lw 2 title 'adaptive, depth 4, threshold 0.01'
 "
 
 draw ch08-time "
@@ -52,18 +55,19 @@ set xlabel 'render CPU time, both threads (s)'
 set ylabel 'RMSE against jittered 32x32'
 set logscale xy
 set grid
-set key bottom left
+set key top right
 plot '$data/rays.dat' index 0 using 2:3 with linespoints pt 6 title 'random (seed 000)', \
      '' index 1 using 2:3 with linespoints pt 5 title 'uniform n x n', \
      '' index 2 using 2:3 with linespoints pt 7 title 'jittered n x n', \
-     '' index 3 using 2:3 with linespoints pt 9 lw 2 title 'adaptive (thresholds)'
+     '' index 3 using 2:3 with linespoints pt 9 lw 2 title 'adaptive, depth 3 (thresholds)', \
+     '' index 4 using 2:3 with points pt 8 ps 1.5 lw 2 title 'adaptive, depth 4, threshold 0.01'
 "
 
 if command -v povray >/dev/null; then
     bash "$root/tests/perf/ch08/aa_vs_povray.sh" "$build" "$data" | tee "$data/povray.txt"
     cp "$data/povray.txt" "$charts/ch08-povray.txt"
     draw ch08-povray "
-set title 'Adaptive antialiasing against POV-Ray +AM2 (mirror_glass, 256x256, 1 thread)'
+set title 'Adaptive antialiasing against POV-Ray +AM2 (mirror-glass scene, 256x256, 1 thread)'
 set xlabel 'render time (s): raybook render phase, POV-Ray Trace Time'
 set ylabel 'RMSE against own converged reference'
 set logscale xy
