@@ -134,8 +134,7 @@ const rb::SupersamplingSampler* installed(const rb::World& w) {
 // ---- Flat regions -------------------------------------------------------------------------
 
 // [ch08-flat]
-SCENARIO("on a flat region adaptive supersampling equals uniform, with far fewer rays",
-         "[ch08]") {
+SCENARIO("on a flat region adaptive supersampling equals uniform, with far fewer rays", "[ch08]") {
     GIVEN("a picture of one colour, 16 × 16 pixels (one tile)") {
         std::uint64_t uniformRays = 0, adaptiveRays = 0;
         const auto flatU = picture([](const Vec2&) { return true; }, uniformRays);
@@ -151,7 +150,9 @@ SCENARIO("on a flat region adaptive supersampling equals uniform, with far fewer
                     const Colour a = rb::adaptivePixel(x, y, settings, lattice);
                     equal = equal && u == Colour(1.0) && a == Colour(1.0);
                 }
-            THEN("both give the flat colour exactly") { CHECK(equal); }
+            THEN("both give the flat colour exactly") {
+                CHECK(equal);
+            }
             THEN("adaptive traces each pixel corner once and each centre once") {
                 // Source: 17 × 17 shared corners + 16 × 16 centres = 545, against 16 rays in
                 // each of 256 pixels = 4096 for the uniform grid.
@@ -199,7 +200,8 @@ SCENARIO("a straight edge across a pixel gets the area it covers", "[ch08]") {
                 // (the worst is 5/12: centre and three corners covered, the edge near a
                 // diagonal). Squares the edge misses are exact. So
                 // |estimate − coverage| < (2^(D+1) − 1) / (2 · 4^D).
-                const double bound = (std::ldexp(1.0, depth + 1) - 1) / (2.0 * std::ldexp(1.0, 2 * depth));
+                const double bound =
+                    (std::ldexp(1.0, depth + 1) - 1) / (2.0 * std::ldexp(1.0, 2 * depth));
                 double worst = 0.0, sumAbs = 0.0;
                 for (const HalfPlane& h : edges) {
                     std::uint64_t rays = 0;
@@ -352,9 +354,9 @@ SCENARIO("seed 001's aa = 1 is a 2 × 2 uniform supersample: render at double si
             double worst = 0.0;
             for (int y = 0; y < 30; ++y)
                 for (int x = 0; x < 40; ++x) {
-                    const Colour mean = 0.25 * (big.get(2 * x, 2 * y) + big.get(2 * x + 1, 2 * y) +
-                                                big.get(2 * x, 2 * y + 1) +
-                                                big.get(2 * x + 1, 2 * y + 1));
+                    const Colour mean =
+                        0.25 * (big.get(2 * x, 2 * y) + big.get(2 * x + 1, 2 * y) +
+                                big.get(2 * x, 2 * y + 1) + big.get(2 * x + 1, 2 * y + 1));
                     worst = std::max(worst, rb::maxAbsComponent(mean - small.get(x, y)));
                 }
             THEN("it is the 2 × 2 supersampled image (to float rounding)") {
@@ -372,8 +374,7 @@ SCENARIO("seed 001's aa = 1 is a 2 × 2 uniform supersample: render at double si
 // ---- Determinism ----------------------------------------------------------------------------
 
 // [ch08-determinism]
-SCENARIO("antialiased images are the same for any thread count and any tile order",
-         "[ch08]") {
+SCENARIO("antialiased images are the same for any thread count and any tile order", "[ch08]") {
     // Soft shadows from a ball light make every sample draw random numbers too.
     std::string soft = kEdges;
     soft.replace(soft.find("gr.light({3, 5, 4}, {0.9, 0.9, 0.9}, {1, 0, 0})"),
@@ -386,8 +387,8 @@ SCENARIO("antialiased images are the same for any thread count and any tile orde
                 rb::RayCounters c1, c2;
                 std::vector<int> tileThreads;
                 const rb::Image one = rbtest::renderAt(*w, 192, 144, {.threads = 1}, c1);
-                const rb::Image two = rbtest::renderAt(
-                    *w, 192, 144, {.threads = 2, .tileThreads = &tileThreads}, c2);
+                const rb::Image two =
+                    rbtest::renderAt(*w, 192, 144, {.threads = 2, .tileThreads = &tileThreads}, c2);
                 THEN("the images are bit-identical, and both threads rendered tiles") {
                     CHECK(rbtest::bitIdentical(one, two));
                     CHECK(rbtest::allFiniteNonNegative(one));
@@ -461,15 +462,16 @@ SCENARIO("antialiasing is asked for by the command line, the scene or seed 001's
     }
     GIVEN("bad gr.antialias calls") {
         THEN("each fails naming the field") {
-            CHECK_THAT(rbtest::loadError("gr.antialias{sampler = 'fancy'}\n" + render,
-                                         allChapters()),
-                       Contains("field 'sampler'"));
+            CHECK_THAT(
+                rbtest::loadError("gr.antialias{sampler = 'fancy'}\n" + render, allChapters()),
+                Contains("field 'sampler'"));
             CHECK_THAT(rbtest::loadError("gr.antialias{sampler = 'adaptive', depht = 2}\n" + render,
                                          allChapters()),
                        Contains("unknown field 'depht'"));
-            CHECK_THAT(rbtest::loadError("gr.antialias{sampler = 'jittered', samples = 0}\n" +
-                                             render, allChapters()),
-                       Contains("field 'aa_samples'"));
+            CHECK_THAT(
+                rbtest::loadError("gr.antialias{sampler = 'jittered', samples = 0}\n" + render,
+                                  allChapters()),
+                Contains("field 'aa_samples'"));
         }
     }
     GIVEN("a chapter-7 build") {
@@ -478,9 +480,9 @@ SCENARIO("antialiasing is asked for by the command line, the scene or seed 001's
                 "gr.antialias{sampler = 'adaptive'}\n" + render, rbtest::chapters(7));
             CHECK_THAT(call, Contains("chapter 8 (adaptive_aa)"));
             CHECK_THAT(call, Contains("make chapter8"));
-            CHECK_THAT(rbtest::loadError("gr.option('aa_depth', 2)\n" + render,
-                                         rbtest::chapters(7)),
-                       Contains("needs chapter 8"));
+            CHECK_THAT(
+                rbtest::loadError("gr.option('aa_depth', 2)\n" + render, rbtest::chapters(7)),
+                Contains("needs chapter 8"));
         }
     }
 }

@@ -40,8 +40,8 @@ bool isSquare(int n) {
 AaMode modeNamed(const std::string& name, const std::string& what) {
     for (int k = 0; k < 5; ++k)
         if (name == kAaModeNames[k]) return static_cast<AaMode>(k);
-    throw InputError(what + ": expected none, random, uniform, jittered or adaptive, got '" +
-                     name + "'");
+    throw InputError(what + ": expected none, random, uniform, jittered or adaptive, got '" + name +
+                     "'");
 }
 
 }  // namespace
@@ -78,13 +78,15 @@ AaSettings aaSettings(const RenderContext& context) {
         throw InputError(sppSource + ": expected 1 to " + std::to_string(kMaxSamples) +
                          " rays per pixel, got " + std::to_string(s.samples));
     if ((s.mode == AaMode::Uniform || s.mode == AaMode::Jittered) && !isSquare(s.samples))
-        throw InputError(sppSource + " " + std::to_string(s.samples) + ": the " +
-                         kAaModeNames[static_cast<int>(s.mode)] + " sampler (from " + where +
-                         ") takes n x n rays per pixel, so it needs a square number (4, 9, 16, ...)");
+        throw InputError(
+            sppSource + " " + std::to_string(s.samples) + ": the " +
+            kAaModeNames[static_cast<int>(s.mode)] + " sampler (from " + where +
+            ") takes n x n rays per pixel, so it needs a square number (4, 9, 16, ...)");
     if (s.mode == AaMode::Adaptive && !spp.empty())
-        throw InputError("--spp does not apply to the adaptive sampler (from " + where +
-                         "): its rays follow --aa-threshold and --aa-depth; add --aa=jittered (or uniform, "
-                         "random) to choose a sampler that takes --spp");
+        throw InputError(
+            "--spp does not apply to the adaptive sampler (from " + where +
+            "): its rays follow --aa-threshold and --aa-depth; add --aa=jittered (or uniform, "
+            "random) to choose a sampler that takes --spp");
     // The adaptive sampler's threshold and depth.
     const std::string threshold = context.cliOption("aa-threshold");
     s.adaptive.threshold = threshold.empty() ? context.sceneOption("aa_threshold", 0.1)
@@ -93,7 +95,8 @@ AaSettings aaSettings(const RenderContext& context) {
         throw InputError("--aa-threshold: expected a number >= 0, got " +
                          show(s.adaptive.threshold));
     const std::string depth = context.cliOption("aa-depth");
-    const double d = depth.empty() ? context.sceneOption("aa_depth", 3) : parseNumber("--aa-depth", depth);
+    const double d =
+        depth.empty() ? context.sceneOption("aa_depth", 3) : parseNumber("--aa-depth", depth);
     if (d != std::floor(d) || d < 0 || d > kMaxAdaptiveDepth)
         throw InputError("--aa-depth: expected a whole number from 0 to " +
                          std::to_string(kMaxAdaptiveDepth) + ", got " + show(d));
@@ -128,11 +131,18 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
             const PixelRef pixel{x, y, seed, static_cast<std::uint64_t>(y) * width + x};
             Colour c(0.0);
             switch (settings_.mode) {
-                case AaMode::Random: c = randomPixel(pixel, settings_.samples, radiance); break;
-                case AaMode::Uniform: c = uniformPixel(pixel, n, radiance); break;
-                case AaMode::Jittered: c = jitteredPixel(pixel, n, radiance); break;
+                case AaMode::Random:
+                    c = randomPixel(pixel, settings_.samples, radiance);
+                    break;
+                case AaMode::Uniform:
+                    c = uniformPixel(pixel, n, radiance);
+                    break;
+                case AaMode::Jittered:
+                    c = jitteredPixel(pixel, n, radiance);
+                    break;
                 case AaMode::Adaptive:  // rendered above
-                case AaMode::None: break;  // never installed
+                case AaMode::None:
+                    break;  // never installed
             }
             image.set(x, y, c);
         }

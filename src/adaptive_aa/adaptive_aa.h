@@ -25,13 +25,12 @@ enum class AaMode {
 
 /// The value of gr.option('aa_sampler', k) for each mode (k = 0 … 4), and of gr.antialias's
 /// `sampler` field, --aa and messages (names[k]).
-inline constexpr const char* kAaModeNames[] = {"none", "random", "uniform", "jittered",
-                                               "adaptive"};
+inline constexpr const char* kAaModeNames[] = {"none", "random", "uniform", "jittered", "adaptive"};
 
 /// The settings chapter 8 reads for one render.
 struct AaSettings {
     AaMode mode = AaMode::None;
-    int samples = 1;            ///< Rays per pixel for random, uniform and jittered (n² for a grid).
+    int samples = 1;  ///< Rays per pixel for random, uniform and jittered (n² for a grid).
     AdaptiveSettings adaptive;  ///< Threshold and depth for adaptive.
 };
 

@@ -28,7 +28,8 @@ namespace {
 double optionalField(lua_State* L, const char* name) {
     const int type = lua_getfield(L, 1, name);
     double v = std::nan("");
-    if (type != LUA_TNIL) v = checkNumberAt(L, -1, std::string("gr.antialias: field '") + name + "'");
+    if (type != LUA_TNIL)
+        v = checkNumberAt(L, -1, std::string("gr.antialias: field '") + name + "'");
     lua_pop(L, 1);
     return v;
 }
@@ -50,8 +51,9 @@ void setOption(lua_State* L, const char* name, double value) {
 /// gr.antialias{sampler=, samples=, threshold=, depth=}: raybook's named form of the options.
 int grAntialias(lua_State* L) {
     if (lua_gettop(L) != 1 || lua_type(L, 1) != LUA_TTABLE)
-        throw InputError("gr.antialias expects one table {sampler = 'none' | 'random' | "
-                         "'uniform' | 'jittered' | 'adaptive', samples =, threshold =, depth =}");
+        throw InputError(
+            "gr.antialias expects one table {sampler = 'none' | 'random' | "
+            "'uniform' | 'jittered' | 'adaptive', samples =, threshold =, depth =}");
     // Only known fields: a typo would otherwise be ignored.
     lua_pushnil(L);
     while (lua_next(L, 1) != 0) {
@@ -65,8 +67,9 @@ int grAntialias(lua_State* L) {
     }
     if (lua_getfield(L, 1, "sampler") != LUA_TSTRING) {
         lua_pop(L, 1);
-        throw InputError("gr.antialias: field 'sampler' must be 'none', 'random', 'uniform', "
-                         "'jittered' or 'adaptive'");
+        throw InputError(
+            "gr.antialias: field 'sampler' must be 'none', 'random', 'uniform', "
+            "'jittered' or 'adaptive'");
     }
     const std::string sampler = lua_tostring(L, -1);
     lua_pop(L, 1);
@@ -74,8 +77,10 @@ int grAntialias(lua_State* L) {
     for (int k = 0; k < 5; ++k)
         if (sampler == kAaModeNames[k]) mode = k;
     if (mode < 0)
-        throw InputError("gr.antialias: field 'sampler' must be 'none', 'random', 'uniform', "
-                         "'jittered' or 'adaptive', got '" + sampler + "'");
+        throw InputError(
+            "gr.antialias: field 'sampler' must be 'none', 'random', 'uniform', "
+            "'jittered' or 'adaptive', got '" +
+            sampler + "'");
     setOption(L, "aa_sampler", mode);
     setOption(L, "aa_samples", optionalField(L, "samples"));
     setOption(L, "aa_threshold", optionalField(L, "threshold"));

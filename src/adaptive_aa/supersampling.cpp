@@ -89,9 +89,8 @@ double visibleDifference(const Colour& a, const Colour& b) {
 /// The mean radiance over the square with top-left lattice point (i, j) and side `size`
 /// (lattice units), whose corner samples are c00 (top-left), c10, c01 and c11.
 Colour adaptiveSquare(std::int64_t i, std::int64_t j, std::int64_t size, int depth,
-                      const AdaptiveSettings& settings, LatticeSamples& lattice,
-                      const Colour& c00, const Colour& c10, const Colour& c01,
-                      const Colour& c11) {
+                      const AdaptiveSettings& settings, LatticeSamples& lattice, const Colour& c00,
+                      const Colour& c10, const Colour& c01, const Colour& c11) {
     // Sample the centre, and compare it with the four corners.
     const std::int64_t h = size / 2;
     const Colour centre = lattice.at(i + h, j + h);
@@ -107,11 +106,11 @@ Colour adaptiveSquare(std::int64_t i, std::int64_t j, std::int64_t size, int dep
     const Colour top = lattice.at(i + h, j), bottom = lattice.at(i + h, j + size);
     const Colour left = lattice.at(i, j + h), right = lattice.at(i + size, j + h);
     const int d = depth + 1;
-    return 0.25 * (adaptiveSquare(i, j, h, d, settings, lattice, c00, top, left, centre) +
-                   adaptiveSquare(i + h, j, h, d, settings, lattice, top, c10, centre, right) +
-                   adaptiveSquare(i, j + h, h, d, settings, lattice, left, centre, c01, bottom) +
-                   adaptiveSquare(i + h, j + h, h, d, settings, lattice, centre, right, bottom,
-                                  c11));
+    return 0.25 *
+           (adaptiveSquare(i, j, h, d, settings, lattice, c00, top, left, centre) +
+            adaptiveSquare(i + h, j, h, d, settings, lattice, top, c10, centre, right) +
+            adaptiveSquare(i, j + h, h, d, settings, lattice, left, centre, c01, bottom) +
+            adaptiveSquare(i + h, j + h, h, d, settings, lattice, centre, right, bottom, c11));
 }
 // [adaptive-square]
 

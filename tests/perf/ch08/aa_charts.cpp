@@ -1,7 +1,8 @@
 // Chapter 8's chart data (make charts) and an image metric (make bench).
 //
 //   ch08_aa_charts rays SCENE OUT_DIR   RMSE against rays per pixel, written to OUT_DIR:
-//       rays.dat     one block per sampler (random, uniform, jittered, adaptive at depth 3, adaptive
+//       rays.dat     one block per sampler (random, uniform, jittered, adaptive at depth 3,
+//       adaptive
 //                    at depth 4): camera rays per pixel, render CPU seconds, RMSE against the
 //                    converged reference (adaptive adds its threshold and depth)
 //       finding.txt  one sentence with the numbers, for the chapter page
@@ -74,8 +75,8 @@ Point measure(const std::string& scene, const std::map<std::string, std::string>
         settings.seed = 1;
         rb::RayCounters counters;
         const double t0 = rbchart::cpuSeconds();
-        image = rb::render(world->scene, world->pipeline, camera, kWidth, kHeight, settings,
-                           counters);
+        image =
+            rb::render(world->scene, world->pipeline, camera, kWidth, kHeight, settings, counters);
         best = std::min(best, rbchart::cpuSeconds() - t0);
         cameraRays = counters.count[static_cast<int>(rb::RayKind::Camera)];
     }
@@ -101,8 +102,8 @@ int raysChart(const std::string& scene, const std::string& out) {
     for (const char* sampler : {"random", "uniform", "jittered"}) {
         dat << "# " << sampler << "\n";
         for (int n = 1; n <= 8; ++n) {
-            const Point p = measure(scene, {{"aa", sampler}, {"spp", std::to_string(n * n)}},
-                                    reference);
+            const Point p =
+                measure(scene, {{"aa", sampler}, {"spp", std::to_string(n * n)}}, reference);
             points[sampler].push_back(p);
             dat << p.raysPerPixel << " " << p.seconds << " " << p.error << "\n";
         }
@@ -126,9 +127,9 @@ int raysChart(const std::string& scene, const std::string& out) {
     }
     // The finding, from the measurements: equal rays near 16 per pixel, and the lowest errors.
     const Point u16 = points["uniform"][3], j16 = points["jittered"][3];
-    const Point a = points["adaptive"][2];       // threshold 0.1, depth 3: the chapter's default
-    const Point aFine = points["adaptive"][5];   // threshold 0.01, depth 3
-    const Point aDeep = points["adaptive"][7];   // threshold 0.01, depth 4
+    const Point a = points["adaptive"][2];      // threshold 0.1, depth 3: the chapter's default
+    const Point aFine = points["adaptive"][5];  // threshold 0.01, depth 3
+    const Point aDeep = points["adaptive"][7];  // threshold 0.01, depth 4
     const Point j64 = points["jittered"][7];
     std::ofstream finding(out + "/finding.txt");
     char line[1400];
@@ -161,7 +162,8 @@ int main(int argc, char** argv) {
             return 2;
         }
         double sum = 0.0;
-        for (size_t i = 0; i < a.rgb.size(); ++i) sum += double(a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
+        for (size_t i = 0; i < a.rgb.size(); ++i)
+            sum += double(a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
         std::printf("%.6f\n", std::sqrt(sum / a.rgb.size()));
         return 0;
     }
