@@ -43,7 +43,7 @@ local mirror = gr.nh_sphere('mirror', {1.4, 0, -4.5}, 1)
 mirror:set_material(steel)
 scene:add_child(mirror)
 
--- Posts of falling thickness (0.16 down to 0.01 units, about 1.6 to 0.1 pixels at this
+-- Posts of falling thickness (0.16 down to 0.01 units, about 2 to 0.1 pixels at this
 -- distance), and two wires across them.
 local widths = {0.16, 0.1, 0.06, 0.04, 0.025, 0.015, 0.01}
 for n, w in ipairs(widths) do
