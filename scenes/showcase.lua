@@ -15,9 +15,10 @@
 -- Glass casts full shadows (raybook's shadow rays are opaque), so nothing stands in the light
 -- of the softbox behind a glass object.
 --
--- Run:  make demo, which runs  ./rt --features=all scenes/showcase.lua  (writes showcase.png).
--- Add --spp 4 for smooth edges: the scene cannot ask for supersampling itself yet (gr.render's
--- aa argument belongs to chapter 8). Meshes are named relative to this file's folder.
+-- Run:  make demo, which runs  ./rt --features=all --spp 4 scenes/showcase.lua  (writes
+-- showcase.png): four random rays per pixel smooth the edges. The scene asks for no sampler of
+-- its own, so docs/images/showcase.png stays that image; try --aa=adaptive or
+-- --aa=jittered --spp 16 (chapter 8). Meshes are named relative to this file's folder.
 -- The rt-stats line above is checked by tests/scenes/run_all.sh: 3,694 unique triangles (the
 -- bunny's 3,674 once, however often it is shown, and the icosahedron's 20).
 gr.option('max_depth', 6)

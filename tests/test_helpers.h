@@ -43,6 +43,7 @@
 #include "core/render_context.h"
 #include "core/sphere.h"
 #include "core/world.h"
+#include "adaptive_aa/adaptive_aa.h"
 #include "glossy/glossy.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
@@ -91,7 +92,7 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
     const std::vector<rb::Feature> all = {rb::chapter01Feature(),  rb::phongFeature(),
                                           rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
-                                          rb::glossyFeature()};
+                                          rb::glossyFeature(),     rb::adaptiveAaFeature()};
     return rb::FeatureSet(std::vector<rb::Feature>(all.begin(), all.begin() + last), spec);
 }
 

@@ -4,11 +4,11 @@
 -- through a window in the roof; the water refracts the tiled basin and mirrors the room.
 --
 -- Chapters used: 1-3 (A4 scene), 4 ("reflect"), 5 ("refract"), 6 (the roof window is an
--- area light), 7 ("glossy"). Parts of the seed's scene that wait for later chapters:
+-- area light), 7 ("glossy"), 8 (10x supersampling). Parts of the seed's scene that wait for later chapters:
 --   * gr.texture(material, "JapanWood.jpg") on the wood         chapter 10 (texture)
 --   * steam above the water (volume scattering)                  chapter 17 (media)
 --   * light bouncing off the water onto the walls (photon map)   chapter 16 (photon_map)
---   * supersampling and depth of field                           chapters 8 and 13
+--   * depth of field                                             chapter 13
 -- Seed 000 has no light call of its own (its roof window was to be "a planar light
 -- source"), so the window uses raybook's gr.area_light from chapter 6.
 
@@ -153,6 +153,8 @@ local lantern = gr.light({3.5, 2.4, -1.5}, {0.45, 0.32, 0.18}, {1, 0, 0.04})
 gr.option('max_depth', 4)
 gr.option('glossy_samples', 4)
 gr.option('light_samples', 3)
+-- Seed 000's "10x super-sampling": ten random positions in each pixel (chapter 8).
+gr.antialias{sampler = 'random', samples = 10}
 gr.render(scene, '000-bathhouse.png', 320, 240,
           {0, 2, 0}, {0, -0.2, -1}, {0, 1, 0}, 50,
           {0.3, 0.3, 0.3}, {window, lantern})

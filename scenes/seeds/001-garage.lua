@@ -13,8 +13,7 @@
 -- so on stderr; no flag is needed.
 --
 -- Chapters used: 1-3, 4 (reflectivity), 5 (gr.transMat), 6 (the rectangular light and ss),
--- 7 (glossiness, scatter and dist). Parts of the seed's scene that wait for later chapters:
---   * aa = 1, supersampling                                     chapter 8 (adaptive_aa)
+-- 7 (glossiness, scatter and dist), 8 (aa). Parts of the seed's scene that wait for later chapters:
 --   * dof > 0, the thin-lens camera                             chapter 13 (dof)
 --   * node:csg(other, 'u'|'n'|'d'), e.g. cutting wheel arches   chapter 14 (csg)
 --   * gr.cyllinder / gr.cone for the wheels and the lamps       chapter 15 (quadrics)
@@ -108,9 +107,9 @@ local panel = gr.light({0, 3.95, -5}, {0.85, 0.85, 0.8}, {1, 0, 0},
                        {4, 2}, {0, -1, 0}, {1, 0, 0})
 local fill  = gr.light({4, 3, 2}, {0.25, 0.25, 0.28}, {1, 0, 0})
 
--- aa = 0 (chapter 8), ss = 3 (3 x 3 shadow rays per light), dist = 2 (2 x 2 glossy rays),
+-- aa = 1 (2 x 2 supersampling, chapter 8), ss = 3 (3 x 3 shadow rays per light), dist = 2 (2 x 2 glossy rays),
 -- and the depth of field switched off (dof = 0; chapter 13).
 gr.render(root, '001-garage.png', 320, 240,
           {4.2, 2.3, 1.2}, {-4.2, -1.7, -6.2}, {0, 1, 0}, 45,
           {0.3, 0.3, 0.3}, {panel, fill},
-          0, 3, 2, {0.05, 9, 0})
+          1, 3, 2, {0.05, 9, 0})

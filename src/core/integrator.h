@@ -32,6 +32,7 @@ struct Scene {
 };
 
 class Integrator;
+class PixelSampler;
 
 /// What a shading routine may use: the scene, the integrator (to trace more rays), this
 /// sample's random stream, this thread's counters, the recursion depth and the media the
@@ -79,6 +80,9 @@ struct Pipeline {
     AggregateBuilder buildAggregate = nullptr;              ///< Acceleration (chapter 1, then 3).
     std::vector<std::shared_ptr<const ShadingTerm>> terms;  ///< Secondary terms, in order.
     std::shared_ptr<const LobeSampler> lobe;                ///< Glossy lobes (chapter 7), or null.
+    /// Where a pixel's camera rays go (chapter 8's supersampling), or null: the core's one
+    /// ray through each pixel centre (or --spp random positions).
+    std::shared_ptr<const PixelSampler> pixelSampler;
 };
 
 /// Traces rays through a scene with a pipeline.

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
 
 #include "core/batch.h"
@@ -126,8 +127,12 @@ int run(int argc, char** argv) {
 
         // Build the world: instances, lights, settings, the features' shading, the aggregate.
         t0 = Clock::now();
+        // --spp reaches the features too, as the option "spp": a pixel sampler (chapter 8)
+        // that takes n x n rays reads it.
+        std::map<std::string, std::string> featureOptions = cl.featureOptions;
+        if (cl.samplesPerPixel > 0) featureOptions["spp"] = std::to_string(cl.samplesPerPixel);
         const std::unique_ptr<World> world =
-            buildWorld(std::move(r), features, cl.featureOptions, cl.maxDepth);
+            buildWorld(std::move(r), features, featureOptions, cl.maxDepth);
         const Scene& scene = world->scene;
         const Pipeline& pipeline = world->pipeline;
         const double buildSeconds = since(t0);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/interrupt.h"
+#include "core/pixel_sampler.h"
 
 namespace rb {
 
@@ -164,7 +165,13 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         const std::uint64_t raysBefore = rays.total();
         progress.tileStarted(k);
         if (settings.tileThreads) (*settings.tileThreads)[k] = omp_get_thread_num();
-        renderTile(tiles[k], integrator, camera, width, spp, settings.seed, image, rays);
+        // A pixel sampler (chapter 8), when one is installed, takes the whole tile; otherwise
+        // the core's loop runs, so a scene without antialiasing pays one test per tile.
+        if (pipeline.pixelSampler)
+            pipeline.pixelSampler->renderTile(tiles[k], integrator, camera, width, height,
+                                              settings.seed, image, rays);
+        else
+            renderTile(tiles[k], integrator, camera, width, spp, settings.seed, image, rays);
         progress.tileDone(k, rays.total() - raysBefore);
         ++tilesDone;
     }

@@ -55,6 +55,12 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
                            " is ignored: it needs chapter " + std::to_string(a.chapter) + " (" +
                            a.feature + "), and " + whyAbsent(features, a.feature, a.chapter));
     }
+    // Chapter 8's own options, when the chapter is built but switched off.
+    const auto sampler = job.options.find("aa_sampler");
+    if (sampler != job.options.end() && sampler->second != 0.0 && !features.enabled("adaptive_aa"))
+        warnings.push_back(job.where + ": the scene's antialiasing (gr.antialias or aa_sampler) " +
+                           "is ignored: it needs chapter 8 (adaptive_aa), and " +
+                           whyAbsent(features, "adaptive_aa", 8));
     // The course framework writes PNG data whatever the name says; so does rt, but says so.
     if (!hasPngExtension(output))
         warnings.push_back(job.where + ": the output '" + output +

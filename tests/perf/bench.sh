@@ -198,6 +198,43 @@ else
   say "  (the images DIFFER)"
 fi
 
+# ---- Chapter 8 costs nothing when a scene asks for no antialiasing -------------------------
+# The chapter-2 and chapter-7 scenes, rendered by the chapter-7 binary and by the chapter-8 binary
+# with every feature on, alternating, 1 thread, 3 x BENCH_RUNS runs each. Neither scene asks for
+# antialiasing, so chapter 8 installs no pixel sampler and the core's loop runs; the only new
+# work is one null test per tile.
+if [ -x "$build/rt_ch8" ] && [ -x "$build/rt_ch7" ]; then
+  progress "chapter 8 unused"
+  say ""
+  say "Chapter 8 unused costs nothing: rt_ch7 against rt_ch8 --features=all, 1 thread, $feature_runs alternating runs,"
+  say "render s, ratio of medians (target within 2%):"
+  for entry in "scenes/chapter02-phong.lua 1600x1200" "scenes/chapter07-glossy.lua 512x384"; do
+    read -r scene size <<<"$entry"
+    r7=(); r8=()
+    for ((i = 0; i < feature_runs; i++)); do
+      r7+=("$( (cd "$root" && "$build/rt_ch7" --quiet --stats --threads 1 --size "$size" --output "$tmp/r7.png" "$scene" 2>&1) |
+               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
+      r8+=("$( (cd "$root" && "$build/rt_ch8" --features=all --quiet --stats --threads 1 --size "$size" --output "$tmp/r8.png" "$scene" 2>&1) |
+               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
+    done
+    read -r m7 _ < <(printf "%s\n" "${r7[@]}" | stats)
+    read -r m8 _ < <(printf "%s\n" "${r8[@]}" | stats)
+    same=$(cmp -s "$tmp/r7.png" "$tmp/r8.png" && echo "images byte-identical" || echo "images DIFFER")
+    line=$(awk -v a="$m7" -v b="$m8" -v sa="$(printf "%s\n" "${r7[@]}" | spread)" -v sb="$(printf "%s\n" "${r8[@]}" | spread)" \
+             -v n="$(basename "$scene" .lua) $size" -v same="$same" 'BEGIN { d = (b / a - 1) * 100
+               printf "  %-28s rt_ch7 %s, rt_ch8 %s: ratio %.3f (%+.1f%%) %s; %s", n, sa, sb, b / a, d,
+                      (d <= 2 && d >= -2) ? "met" : "MISSED", same }')
+    say "$line"
+  done
+fi
+
+# ---- Adaptive antialiasing against POV-Ray's +AM2, at equal error ---------------------------
+if [ -x "$build/tests/perf/ch08/ch08_aa_charts" ]; then
+  progress "adaptive antialiasing against POV-Ray +AM2"
+  say ""
+  bash "$root/tests/perf/ch08/aa_vs_povray.sh" "$build" "$out/ch08" | tee -a "$report"
+fi
+
 # ---- raybook's BVH against Embree ----------------------------------------------------------
 if [ -x "$build/tests/perf/bvh_vs_embree" ]; then
   for threads in 1 2; do
