@@ -181,13 +181,23 @@ class SceneWriter {
         return s.str();
     }
 
-    /// Scene-wide options of the chapter, kept small so that a scene renders in milliseconds.
+    /// Scene-wide options and the pixel sampler of the chapter, kept small so that a scene renders
+    /// in milliseconds.
     std::string options() {
         std::ostringstream s;
         if (chapter_ >= 4) s << "gr.option('max_depth', " << count(6) << ")\n";
         if (chapter_ >= 7) {
             s << "gr.option('glossy_samples', " << count(4) << ")\n";
             s << "gr.option('glossy_sampler', " << count(1) << ")\n";
+        }
+        if (chapter_ >= 8) {
+            // A pixel sampler: none, random, uniform, jittered (n² samples) or adaptive.
+            static const char* const kSamplers[] = {"none", "random", "uniform", "jittered",
+                                                    "adaptive"};
+            const char* sampler = kSamplers[choose(5)];
+            const int n = 1 + count(2);
+            s << "gr.antialias{sampler = '" << sampler << "', samples = " << n * n
+              << ", threshold = " << rng_.uniform(0.0, 0.5) << ", depth = " << count(3) << "}\n";
         }
         return s.str();
     }

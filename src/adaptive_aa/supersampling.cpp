@@ -30,6 +30,9 @@ Colour uniformPixel(const PixelRef& pixel, int n, const RadianceAt& radiance) {
 
 // [jittered-pixel]
 Colour jitteredPixel(const PixelRef& pixel, int n, const RadianceAt& radiance) {
+    // [exercise-jittered]
+    // Exercise 8.1, jittered supersampling: read ch08-equations.
+    // Blank: return Colour(0.0);
     // One uniform position in each cell: the cell is chosen, only the place inside it is random.
     Colour sum(0.0);
     for (int j = 0; j < n; ++j)
@@ -40,6 +43,7 @@ Colour jitteredPixel(const PixelRef& pixel, int n, const RadianceAt& radiance) {
             sum += radiance(p, sampler);
         }
     return sum / static_cast<double>(n * n);
+    // [exercise-jittered]
 }
 // [jittered-pixel]
 
@@ -91,6 +95,9 @@ double visibleDifference(const Colour& a, const Colour& b) {
 Colour adaptiveSquare(std::int64_t i, std::int64_t j, std::int64_t size, int depth,
                       const AdaptiveSettings& settings, LatticeSamples& lattice, const Colour& c00,
                       const Colour& c10, const Colour& c01, const Colour& c11) {
+    // [exercise-adaptive-square]
+    // Exercise 8.2, adaptive recursive supersampling: read ch08-equations.
+    // Blank: return Colour(0.0);
     // Sample the centre, and compare it with the four corners.
     const std::int64_t h = size / 2;
     const Colour centre = lattice.at(i + h, j + h);
@@ -111,6 +118,7 @@ Colour adaptiveSquare(std::int64_t i, std::int64_t j, std::int64_t size, int dep
             adaptiveSquare(i + h, j, h, d, settings, lattice, top, c10, centre, right) +
             adaptiveSquare(i, j + h, h, d, settings, lattice, left, centre, c01, bottom) +
             adaptiveSquare(i + h, j + h, h, d, settings, lattice, centre, right, bottom, c11));
+    // [exercise-adaptive-square]
 }
 // [adaptive-square]
 
