@@ -7,6 +7,14 @@ namespace rb {
 
 void bindReflection(LuaBindings& lua);
 
+Vec3 reflect(const Vec3& d, const Vec3& n) {
+    // [exercise-reflect]
+    // Exercise 4.1, the law of reflection: read ch04-equations.
+    // Blank: return d;
+    return d - 2.0 * glm::dot(d, n) * n;
+    // [exercise-reflect]
+}
+
 // [trace-specular]
 Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, const Vec3& side,
                      RayKind kind, const MediumStack& media, double weight) {

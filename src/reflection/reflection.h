@@ -8,13 +8,7 @@
 namespace rb {
 
 /// The mirror direction of d about the unit normal n: d − 2(d·n)n (d need not be unit length).
-inline Vec3 reflect(const Vec3& d, const Vec3& n) {
-    // [exercise-reflect]
-    // Exercise 4.1, the law of reflection: read ch04-equations.
-    // Blank: return d;
-    return d - 2.0 * glm::dot(d, n) * n;
-    // [exercise-reflect]
-}
+Vec3 reflect(const Vec3& d, const Vec3& n);
 
 /// Radiance arriving at hit from the specular direction `axis` (unit), leaving on the side of
 /// the unit normal `side`. With a glossy lobe installed (chapter 7) and a glossy material, the
