@@ -24,6 +24,9 @@ struct SceneLoadOptions {
     std::vector<std::string> assetDirs;          ///< --assets DIR, searched after the scene's folder.
     bool lenient = false;  ///< --lenient: unknown calls and methods are ignored, with a warning.
     std::vector<std::string> dialects;  ///< --dialect FILE.lua: run before the scene.
+    /// The script itself, when it is not to be read from the scene path (the fuzz harness);
+    /// the path still names it in messages and still decides the scene's folder.
+    std::string sceneText;
 };
 
 /// A render request after the script ran: the job plus the world it renders.
