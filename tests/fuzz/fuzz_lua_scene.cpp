@@ -8,6 +8,8 @@
 /// The script runs as if it were scenes/fuzz-input.lua (the file need not exist: the text is
 /// handed over in SceneLoadOptions::sceneText), so gr.mesh, require and the read-only io find
 /// the project's own meshes in scenes/, scenes/a4, scenes/legacy and scenes/assets.
+/// A line `-- rt-args: ...` (as in the bad-input cases) switches on --lenient, --legacy or
+/// --modern for that input, so the fuzzer reaches those paths too.
 /// Limits are smaller than ./rt's, so one input stays well under libFuzzer's -timeout and
 /// -rss_limit_mb: 5 million Lua instructions and 64 MiB of Lua memory.
 #include <cstddef>
@@ -33,6 +35,18 @@ rb::SceneLoadOptions fuzzLoadOptions() {
     return options;
 }
 
+/// Apply the --lenient, --legacy and --modern named on a `-- rt-args:` line of the script.
+void applyRtArgs(const std::string& text, rb::SceneLoadOptions& options) {
+    const std::size_t at = text.find("-- rt-args:");
+    if (at == std::string::npos) return;
+    const std::string line = text.substr(at, text.find('\n', at) - at);
+    options.lenient = line.find("--lenient") != std::string::npos;
+    if (line.find("--legacy") != std::string::npos)
+        options.era = rb::EraChoice::Legacy;
+    else if (line.find("--modern") != std::string::npos)
+        options.era = rb::EraChoice::Modern;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -42,6 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static const rb::FeatureSet features(built, "all");
     rb::SceneLoadOptions options = fuzzLoadOptions();
     options.sceneText.assign(reinterpret_cast<const char*>(data), size);
+    applyRtArgs(options.sceneText, options);
     try {
         std::vector<rb::LoadedRender> renders =
             rb::loadScene(RB_SOURCE_DIR "/scenes/fuzz-input.lua", features, options);
