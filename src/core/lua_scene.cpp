@@ -46,11 +46,35 @@ const char* typeName(lua_State* L, int arg) {
 }
 }  // namespace
 
+// Lua's allocator sees only a node's userdata (a pointer), so without this a loop of gr.node
+// calls with long names, or of gr.render calls, could take all the machine's memory under
+// the limit. Never given back: a node may live on as another node's child after its userdata
+// is collected.
+void chargeMemory(lua_State* L, size_t bytes) {
+    SceneBuilder& builder = sceneBuilder(L);
+    if (builder.bytesInUse + bytes > builder.options.memoryLimit)
+        throw InputError("the scene script exceeded the memory limit of " +
+                         std::to_string(builder.options.memoryLimit >> 20) +
+                         " MiB (its nodes and materials count too)");
+    builder.bytesInUse += bytes;
+}
+
 void pushNode(lua_State* L, std::shared_ptr<SceneNode> node) {
+    chargeMemory(L, sizeof(SceneNode) + node->name.capacity());
     pushShared(L, std::move(node), kNodeType);
 }
 void pushMaterial(lua_State* L, std::shared_ptr<Material> material) {
+    chargeMemory(L, sizeof(Material));
     pushShared(L, std::move(material), kMaterialType);
+}
+
+void chargeInstructions(lua_State* L, size_t count, const char* call) {
+    SceneBuilder& builder = sceneBuilder(L);
+    builder.instructions += static_cast<long long>(count);
+    if (builder.instructions > builder.options.instructionLimit)
+        throw InputError(std::string(call) + ": the scene script ran more than " +
+                         std::to_string(builder.options.instructionLimit) +
+                         " Lua instructions, counting the work of its calls (an endless loop?)");
 }
 
 // ---- Argument checks ----------------------------------------------------------------------
@@ -470,7 +494,7 @@ int unknownName(lua_State* L, const char* prefix, const char* suffix, const char
             lua_pushstring(L, chapter ? ("needs chapter " + std::to_string(chapter) + ", " + title)
                                             .c_str()
                                       : "unknown to raybook");
-            lua_pushcclosure(L, lenientCall, 2);
+            lua_pushcclosure(L, luaGuard<lenientCall>, 2);  // the stand-in may throw
             return 1;
         }
         if (chapter) {
