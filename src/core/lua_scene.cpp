@@ -384,8 +384,8 @@ int sandboxRequire(lua_State* L) {
             if (c == '.') c = '/';
         std::string fileOrError;
         try {
-            fileOrError =
-                findSceneFile(sceneBuilder(L), name + ".lua", std::string("require('") + raw + "')");
+            fileOrError = findSceneFile(sceneBuilder(L), name + ".lua",
+                                        std::string("require('") + raw + "')");
             found = true;
         } catch (const InputError& e) {
             fileOrError = e.what();
@@ -491,9 +491,9 @@ int unknownName(lua_State* L, const char* prefix, const char* suffix, const char
         if (sceneBuilder(L).options.lenient) {
             const bool method = std::strcmp(prefix, "gr.") != 0;
             lua_pushstring(L, ((method ? "node:" : "gr.") + std::string(name)).c_str());
-            lua_pushstring(L, chapter ? ("needs chapter " + std::to_string(chapter) + ", " + title)
-                                            .c_str()
-                                      : "unknown to raybook");
+            lua_pushstring(
+                L, chapter ? ("needs chapter " + std::to_string(chapter) + ", " + title).c_str()
+                           : "unknown to raybook");
             lua_pushcclosure(L, luaGuard<lenientCall>, 2);  // the stand-in may throw
             return 1;
         }
