@@ -9,9 +9,14 @@ LAST       := $(lastword $(CHAPTERS))
 CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
 DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox
+# make fuzz: libFuzzer and the sanitizers come with clang; the targets run one after the other.
+FUZZ_DEBS    := clang libclang-rt-14-dev libomp-14-dev
+FUZZ_BUILD   ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS := obj lua_scene options
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps bench-deps configure rt test test-exercises demo docs golden-update bench charts clean $(CHAPTER_TARGETS)
+.PHONY: deps bench-deps configure rt test test-exercises demo docs golden-update bench charts fuzz clean $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
 deps:
@@ -89,5 +94,15 @@ charts: bench-deps configure
 	cmake --build $(BUILD) -j $(JOBS)
 	bash tests/perf/charts.sh $(BUILD)
 
+# Fuzz the OBJ reader, the Lua scene loader and the command line, FUZZ_SECONDS each (60 by
+# default; make fuzz FUZZ_SECONDS=600 for longer), built with clang, libFuzzer, ASan and UBSan
+# in their own folder. Never part of make test, which replays the corpus instead.
+fuzz:
+	@$(MAKE) --no-print-directory deps DEBS="$(DEBS) $(FUZZ_DEBS)"
+	@[ -f $(FUZZ_BUILD)/CMakeCache.txt ] || CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRB_FUZZ=ON -DBUILD_TESTING=OFF
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_TARGETS))
+	bash tests/fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
 clean:
-	rm -rf $(BUILD) rt
+	rm -rf $(BUILD) $(FUZZ_BUILD) rt

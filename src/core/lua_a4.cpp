@@ -278,8 +278,15 @@ int nodeRotate(lua_State* L) {
 int nodeAddChild(lua_State* L) {
     auto parent = checkSelf(L, "node:add_child", 1, "(child)");
     auto child = checkNode(L, 2, "node:add_child", "child");
-    // Instancing makes the graph a DAG; a cycle would make it infinite.
-    if (reaches(*child, parent.get()))
+    // Instancing makes the graph a DAG; a cycle would make it infinite. The nodes the check
+    // visits count as the script's instructions: adding ever new parents above a large graph
+    // would otherwise take quadratic time that no Lua instruction limit sees.
+    size_t visited = 0;
+    const bool cycle = reaches(*child, parent.get(), &visited);
+    // A visit (a hash-set insert and a pointer chase) takes about as long as 100 Lua
+    // instructions: a loop of them should hit the limit in about the same time.
+    chargeInstructions(L, 100 * visited, "node:add_child");
+    if (cycle)
         throw InputError("node:add_child: adding '" + child->name + "' under '" + parent->name +
                          "' would make a cycle in the scene graph");
     parent->children.push_back(child);
@@ -349,13 +356,18 @@ int grRender(lua_State* L) {
         job.options["focal_length"] = dof[1];
         job.options["dof"] = dof[2];
     }
-    // Freeze the graph as it is now and flatten it, so errors point at this line.
+    // Freeze the graph as it is now and flatten it, so errors point at this line. Both
+    // recurse once per level: refuse a graph too deep for that first.
+    checkGraphDepth(*root);
     std::map<const SceneNode*, std::shared_ptr<SceneNode>> copies;
     auto frozen = snapshot(root, copies);
     r.snapshot = frozen;
     r.fallback = sceneBuilder(L).defaultMaterial;
     r.instances = flatten(*frozen, r.fallback.get());
     job.root = frozen;
+    // Copying and flattening the graph is work done for the script, as are its instances.
+    chargeInstructions(L, copies.size() + r.instances.size(), "gr.render");
+    chargeMemory(L, copies.size() * sizeof(SceneNode) + r.instances.size() * sizeof(Instance));
     sceneBuilder(L).renders.push_back(std::move(r));
     return 0;
 }

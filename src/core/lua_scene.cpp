@@ -46,11 +46,35 @@ const char* typeName(lua_State* L, int arg) {
 }
 }  // namespace
 
+// Lua's allocator sees only a node's userdata (a pointer), so without this a loop of gr.node
+// calls with long names, or of gr.render calls, could take all the machine's memory under
+// the limit. Never given back: a node may live on as another node's child after its userdata
+// is collected.
+void chargeMemory(lua_State* L, size_t bytes) {
+    SceneBuilder& builder = sceneBuilder(L);
+    if (builder.bytesInUse + bytes > builder.options.memoryLimit)
+        throw InputError("the scene script exceeded the memory limit of " +
+                         std::to_string(builder.options.memoryLimit >> 20) +
+                         " MiB (its nodes and materials count too)");
+    builder.bytesInUse += bytes;
+}
+
 void pushNode(lua_State* L, std::shared_ptr<SceneNode> node) {
+    chargeMemory(L, sizeof(SceneNode) + node->name.capacity());
     pushShared(L, std::move(node), kNodeType);
 }
 void pushMaterial(lua_State* L, std::shared_ptr<Material> material) {
+    chargeMemory(L, sizeof(Material));
     pushShared(L, std::move(material), kMaterialType);
+}
+
+void chargeInstructions(lua_State* L, size_t count, const char* call) {
+    SceneBuilder& builder = sceneBuilder(L);
+    builder.instructions += static_cast<long long>(count);
+    if (builder.instructions > builder.options.instructionLimit)
+        throw InputError(std::string(call) + ": the scene script ran more than " +
+                         std::to_string(builder.options.instructionLimit) +
+                         " Lua instructions, counting the work of its calls (an endless loop?)");
 }
 
 // ---- Argument checks ----------------------------------------------------------------------
@@ -327,33 +351,55 @@ void instructionHook(lua_State* L, lua_Debug* ar) {
                static_cast<lua_Integer>(builder.options.instructionLimit));
 }
 
+/// Push "file:line: message" for the Lua code that called the running C function, as
+/// luaL_error would, so that lua_error can be raised once the C++ objects that built the
+/// message are destroyed (lua_error longjmps over destructors: strings would leak).
+void pushCallerError(lua_State* L, const std::string& message) {
+    luaL_where(L, 1);
+    lua_pushlstring(L, message.data(), message.size());
+    lua_concat(L, 2);
+}
+
 /// require(name): name.lua (dots become slashes) from the places scene files are searched.
+/// No C++ object may be alive where Lua raises an error (see pushCallerError).
 int sandboxRequire(lua_State* L) {
     const char* raw = luaL_checkstring(L, 1);
-    std::string name = raw;
-    for (char c : name)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-'))
+    for (const char* c = raw; *c; ++c)
+        if (!(std::isalnum(static_cast<unsigned char>(*c)) || *c == '_' || *c == '.' || *c == '-'))
             return luaL_error(L, "require: module name '%s' may use only letters, digits, _ . -",
                               raw);
-    if (name.find("..") != std::string::npos || name.front() == '.')
+    if (std::strstr(raw, "..") || raw[0] == '.')
         return luaL_error(L, "require: module name '%s' may not leave the scene's folder", raw);
     // Return the cached module if it was loaded before.
     lua_getfield(L, LUA_REGISTRYINDEX, "rb.loaded");
     lua_getfield(L, -1, raw);
     if (!lua_isnil(L, -1)) return 1;
     lua_pop(L, 1);
-    for (char& c : name)
-        if (c == '.') c = '/';
-    // Search the same places as meshes and textures; a missing module lists them all.
-    std::string file;
-    try {
-        file = findSceneFile(sceneBuilder(L), name + ".lua", std::string("require('") + raw + "')");
-    } catch (const InputError& e) {
-        return luaL_error(L, "%s", e.what());
+    // Search the same places as meshes and textures; a missing module lists them all. The
+    // result (the file, or the error) leaves this block as a Lua string.
+    bool found = false;
+    {
+        std::string name = raw;
+        for (char& c : name)
+            if (c == '.') c = '/';
+        std::string fileOrError;
+        try {
+            fileOrError = findSceneFile(sceneBuilder(L), name + ".lua",
+                                        std::string("require('") + raw + "')");
+            found = true;
+        } catch (const InputError& e) {
+            fileOrError = e.what();
+        }
+        if (found)
+            lua_pushlstring(L, fileOrError.data(), fileOrError.size());
+        else
+            pushCallerError(L, fileOrError);
     }
+    if (!found) return lua_error(L);
     // Text chunks only: precompiled bytecode can crash the VM.
-    const int status = luaL_loadfilex(L, file.c_str(), "t");
+    const int status = luaL_loadfilex(L, lua_tostring(L, -1), "t");
     if (status != LUA_OK) return lua_error(L);
+    lua_remove(L, -2);  // the file name
     lua_pushstring(L, raw);
     lua_call(L, 1, 1);
     if (lua_isnil(L, -1)) {
@@ -438,22 +484,30 @@ int unknownName(lua_State* L, const char* prefix, const char* suffix, const char
     if (!name) return luaL_error(L, "%sindex must be a string", prefix);
     for (const EraCall& c : kEraCalls)
         if (std::strcmp(name, c.name) == 0) noteEraSign(L, c.era, c.what);
-    std::string title;
-    const int chapter = missingChapter(L, name, title);
-    if (sceneBuilder(L).options.lenient) {
-        const bool method = std::strcmp(prefix, "gr.") != 0;
-        lua_pushstring(L, ((method ? "node:" : "gr.") + std::string(name)).c_str());
-        lua_pushstring(L, chapter
-                              ? ("needs chapter " + std::to_string(chapter) + ", " + title).c_str()
-                              : "unknown to raybook");
-        lua_pushcclosure(L, lenientCall, 2);
-        return 1;
+    // The message is built in this block and raised after it (see pushCallerError).
+    {
+        std::string title;
+        const int chapter = missingChapter(L, name, title);
+        if (sceneBuilder(L).options.lenient) {
+            const bool method = std::strcmp(prefix, "gr.") != 0;
+            lua_pushstring(L, ((method ? "node:" : "gr.") + std::string(name)).c_str());
+            lua_pushstring(
+                L, chapter ? ("needs chapter " + std::to_string(chapter) + ", " + title).c_str()
+                           : "unknown to raybook");
+            lua_pushcclosure(L, luaGuard<lenientCall>, 2);  // the stand-in may throw
+            return 1;
+        }
+        if (chapter) {
+            pushCallerError(L, prefix + std::string(name) + suffix + " needs chapter " +
+                                   std::to_string(chapter) + " (" + title +
+                                   "), which this build does not have; " + chapterAdvice(chapter));
+        } else {
+            luaL_where(L, 1);
+            lua_pushfstring(L, unknown, name);
+            lua_concat(L, 2);
+        }
     }
-    if (chapter)
-        return luaL_error(L, "%s%s%s needs chapter %d (%s), which this build does not have; %s",
-                          prefix, name, suffix, chapter, title.c_str(),
-                          chapterAdvice(chapter).c_str());
-    return luaL_error(L, unknown, name);
+    return lua_error(L);
 }
 
 /// A node or material method nobody defined.
@@ -584,8 +638,11 @@ namespace {
 
 /// Run one Lua file in the scene's state: text only, errors raised as InputError with
 /// "file:line:" (or the memory limit named).
-void runFile(lua_State* L, const std::string& file, const SceneLoadOptions& options) {
-    int status = luaL_loadfilex(L, file.c_str(), "t");
+void runFile(lua_State* L, const std::string& file, const SceneLoadOptions& options,
+             const std::string* text = nullptr) {
+    // "@file" names the chunk the way luaL_loadfilex does, so messages read "file:line:".
+    int status = text ? luaL_loadbufferx(L, text->data(), text->size(), ("@" + file).c_str(), "t")
+                      : luaL_loadfilex(L, file.c_str(), "t");
     if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
     if (status == LUA_OK) return;
     if (const int signal = pendingInterrupt()) throw interruptedBy(signal);
@@ -628,7 +685,8 @@ void runScene(const std::string& path, const FeatureSet& features, bool legacy,
             throw InputError("--dialect: cannot open '" + dialect + "'");
         runFile(L, dialect, builder.options);
     }
-    runFile(L, path, builder.options);
+    const std::string& text = builder.options.sceneText;
+    runFile(L, path, builder.options, text.empty() ? nullptr : &text);
     if (builder.renders.empty()) throw InputError(path + ": the scene never calls gr.render");
 }
 

@@ -26,6 +26,9 @@ struct SceneLoadOptions {
     std::vector<std::string> assetDirs;          ///< --assets DIR, searched after the scene's folder.
     bool lenient = false;  ///< --lenient: unknown calls and methods are ignored, with a warning.
     std::vector<std::string> dialects;  ///< --dialect FILE.lua: run before the scene.
+    /// The script itself, when it is not to be read from the scene path (the fuzz harness);
+    /// the path still names it in messages and still decides the scene's folder.
+    std::string sceneText;
 };
 
 /// A render request after the script ran: the job plus the world it renders.
@@ -167,10 +170,17 @@ std::shared_ptr<SceneNode> checkNode(lua_State* L, int arg, const char* call, co
 /// A material argument.
 std::shared_ptr<Material> checkMaterial(lua_State* L, int arg, const char* call,
                                         const char* argName);
-/// Push a new scene node userdata.
+/// Push a new scene node userdata. Its C++ size (and its name's) counts against the script's
+/// memory limit, for good: throws InputError past the limit (call it inside luaGuard).
 void pushNode(lua_State* L, std::shared_ptr<SceneNode> node);
-/// Push a new material userdata.
+/// Push a new material userdata; counted like a node.
 void pushMaterial(lua_State* L, std::shared_ptr<Material> material);
+/// Count `bytes` that C++ holds for the script (nodes, copies, instances) against its memory
+/// limit, for good; throws InputError past the limit.
+void chargeMemory(lua_State* L, size_t bytes);
+/// Count `count` units of C++ work done for the script (nodes visited, say) as Lua
+/// instructions; throws InputError naming `call` past the instruction limit.
+void chargeInstructions(lua_State* L, size_t count, const char* call);
 /// The places a file named by the scene is looked for, in order: the working directory, the
 /// scene's folder, then each --assets folder (only the name itself when it is absolute).
 std::vector<std::string> sceneFileCandidates(const SceneBuilder& builder, const std::string& name);

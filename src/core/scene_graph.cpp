@@ -1,5 +1,6 @@
 #include "core/scene_graph.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <unordered_map>
 #include <unordered_set>
@@ -9,15 +10,6 @@
 namespace rb {
 
 namespace {
-
-bool reachesVisited(const SceneNode& from, const SceneNode* to,
-                    std::unordered_set<const SceneNode*>& seen) {
-    if (&from == to) return true;
-    if (!seen.insert(&from).second) return false;  // explored already
-    for (const auto& child : from.children)
-        if (reachesVisited(*child, to, seen)) return true;
-    return false;
-}
 
 /// The number of root-to-node paths under `node` (capped), each node counted once.
 double countPaths(const SceneNode& node, std::unordered_map<const SceneNode*, double>& memo) {
@@ -32,9 +24,61 @@ double countPaths(const SceneNode& node, std::unordered_map<const SceneNode*, do
 
 }  // namespace
 
-bool reaches(const SceneNode& from, const SceneNode* to) {
+SceneNode::~SceneNode() {
+    // Take over the children whose last owner this is, level by level, with an explicit list:
+    // each node then dies with no children of its own left to destroy recursively.
+    std::vector<std::shared_ptr<SceneNode>> pending = std::move(children);
+    while (!pending.empty()) {
+        std::shared_ptr<SceneNode> node = std::move(pending.back());
+        pending.pop_back();
+        if (node.use_count() == 1)
+            for (auto& child : node->children) pending.push_back(std::move(child));
+    }
+}
+
+bool reaches(const SceneNode& from, const SceneNode* to, size_t* visited) {
+    // Depth-first with an explicit stack: a recursive walk would overflow on a deep chain.
     std::unordered_set<const SceneNode*> seen;
-    return reachesVisited(from, to, seen);
+    std::vector<const SceneNode*> stack = {&from};
+    bool found = false;
+    while (!stack.empty() && !found) {
+        const SceneNode* node = stack.back();
+        stack.pop_back();
+        found = node == to;
+        if (!seen.insert(node).second) continue;  // explored already
+        for (const auto& child : node->children) stack.push_back(child.get());
+    }
+    if (visited) *visited = seen.size();
+    return found;
+}
+
+size_t graphDepth(const SceneNode& root) {
+    // Post-order with an explicit stack of (node, next child); each node's height once.
+    std::unordered_map<const SceneNode*, size_t> height;
+    std::vector<std::pair<const SceneNode*, size_t>> stack = {{&root, 0}};
+    while (!stack.empty()) {
+        const SceneNode* node = stack.back().first;
+        const size_t next = stack.back().second++;
+        if (next < node->children.size()) {
+            const SceneNode* child = node->children[next].get();
+            if (!height.count(child)) stack.push_back({child, 0});
+            continue;
+        }
+        size_t levels = 1;
+        for (const auto& child : node->children)
+            levels = std::max(levels, 1 + height.at(child.get()));
+        height[node] = levels;
+        stack.pop_back();
+    }
+    return height.at(&root);
+}
+
+void checkGraphDepth(const SceneNode& root) {
+    const size_t depth = graphDepth(root);
+    if (depth > kMaxGraphDepth)
+        throw InputError("the scene graph under '" + root.name + "' is " + std::to_string(depth) +
+                         " levels deep, more than the limit of " + std::to_string(kMaxGraphDepth) +
+                         " (a chain of nodes built in a loop?)");
 }
 
 namespace {
@@ -64,6 +108,8 @@ void flattenNode(const SceneNode& node, const Mat4& parentToWorld, const Materia
 
 std::vector<Instance> flatten(const SceneNode& root, const Material* fallback) {
     std::vector<Instance> instances;
+    // Both walks below recurse once per level.
+    checkGraphDepth(root);
     // A DAG can hold exponentially many paths: count them first (linear time, memoised) and
     // refuse before allocating anything.
     std::unordered_map<const SceneNode*, double> memo;

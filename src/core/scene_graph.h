@@ -24,11 +24,29 @@ struct SceneNode {
     std::shared_ptr<const Shape> shape;        ///< Null for group nodes.
     std::shared_ptr<const Material> material;  ///< Null until set_material.
     std::vector<std::shared_ptr<SceneNode>> children;
+
+    /// Releases the children without recursing once per level, so that dropping a chain of a
+    /// million nested nodes cannot overflow the stack.
+    ~SceneNode();
+    SceneNode() = default;
+    SceneNode(const SceneNode&) = default;             ///< gr.render's snapshot copies nodes.
+    SceneNode& operator=(const SceneNode&) = default;  ///< As the copy.
 };
 
 /// True when `to` can be reached from `from` along child links (used to refuse cycles).
-/// Visits each node once, so it stays linear however much the DAG shares.
-bool reaches(const SceneNode& from, const SceneNode* to);
+/// Visits each node once, so it stays linear however much the DAG shares; `visited`, when
+/// given, receives how many nodes it looked at (the caller charges that work to the script).
+bool reaches(const SceneNode& from, const SceneNode* to, size_t* visited = nullptr);
+
+/// The most levels a scene graph may have (root to deepest leaf): flattening and copying it
+/// recurse once per level. Real scenes stay far below; a chain built in a loop does not.
+inline constexpr size_t kMaxGraphDepth = 1000;
+
+/// The number of levels under root (1 for a leaf), without recursion; visits each node once.
+size_t graphDepth(const SceneNode& root);
+
+/// Throw InputError when the graph under root is deeper than kMaxGraphDepth.
+void checkGraphDepth(const SceneNode& root);
 
 /// The most instances (and node paths) a scene may flatten to, so that a DAG that doubles
 /// at every level fails cleanly instead of exhausting memory: 2 million instances take

@@ -72,7 +72,7 @@ class Fields {
     }
     /// True when the field is present.
     bool has(const char* name) const {
-        const bool present = lua_getfield(L_, table_, name) != LUA_TNIL;
+        const bool present = rawField(name) != LUA_TNIL;
         lua_pop(L_, 1);
         return present;
     }
@@ -80,7 +80,7 @@ class Fields {
     std::vector<double> tuple(const char* name, int n) const {
         const std::string what = std::string(call_) + ": field '" + name + "' must be a table of " +
                                  std::to_string(n) + " numbers";
-        const int type = lua_getfield(L_, table_, name);
+        const int type = rawField(name);
         if (type == LUA_TNIL) {
             lua_pop(L_, 1);
             throw InputError(std::string(call_) + ": missing field '" + name + "'");
@@ -109,7 +109,7 @@ class Fields {
     }
     /// A required field holding one finite number.
     double number(const char* name) const {
-        const int type = lua_getfield(L_, table_, name);
+        const int type = rawField(name);
         const double v = lua_tonumber(L_, -1);
         lua_pop(L_, 1);
         if (type == LUA_TNIL)
@@ -129,6 +129,13 @@ class Fields {
     }
 
   private:
+    /// Push field `name` without metamethods and return its type. A table's __index could run
+    /// Lua code that raises an error, which would longjmp over this object's C++ strings.
+    int rawField(const char* name) const {
+        lua_pushstring(L_, name);
+        return lua_rawget(L_, table_);
+    }
+
     lua_State* L_;
     int table_;
     const char* call_;
