@@ -11,7 +11,8 @@ DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-d
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps bench-deps configure rt test demo docs golden-update bench charts clean $(CHAPTER_TARGETS)
+.PHONY: deps bench-deps configure rt test test-sanitize demo docs golden-update bench charts clean \
+        $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
 deps:
@@ -50,6 +51,24 @@ test: configure
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"
 
+# The same CTest suite (unit tests, golden images, determinism, bad input, scenes, batch,
+# interrupt, docs) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
+# folder (no benchmarks; the ladder is left out, since it rebuilds ./rt). Any report fails its test:
+#   halt_on_error, -fno-sanitize-recover=all  the first report ends the program;
+#   exitcode=66                               ... with an exit code no test expects;
+#   detect_leaks=1                            LeakSanitizer checks the heap at exit;
+#   allocator_may_return_null=1               an allocation too large for memory throws
+#                                             std::bad_alloc, as in the normal build (rt says
+#                                             "out of memory"), instead of a sanitizer abort;
+#   print_stacktrace=1                        UBSan prints where, not only what.
+SANITIZE_BUILD ?= build-sanitize
+SANITIZER_ENV  := ASAN_OPTIONS=halt_on_error=1:exitcode=66:detect_leaks=1:allocator_may_return_null=1 \
+                  UBSAN_OPTIONS=halt_on_error=1:exitcode=66:print_stacktrace=1
+test-sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DRB_SANITIZE=ON
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
+
 demo: rt
 	./rt --features=all --spp 4 scenes/showcase.lua
 	@echo "demo image: $$(pwd)/showcase.png"
@@ -82,4 +101,4 @@ charts: bench-deps configure
 	bash tests/perf/charts.sh $(BUILD)
 
 clean:
-	rm -rf $(BUILD) rt
+	rm -rf $(BUILD) $(SANITIZE_BUILD) rt

@@ -330,30 +330,44 @@ void instructionHook(lua_State* L, lua_Debug* ar) {
 /// require(name): name.lua (dots become slashes) from the places scene files are searched.
 int sandboxRequire(lua_State* L) {
     const char* raw = luaL_checkstring(L, 1);
-    std::string name = raw;
-    for (char c : name)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-'))
+    for (const char* c = raw; *c; ++c)
+        if (!(std::isalnum(static_cast<unsigned char>(*c)) || *c == '_' || *c == '.' || *c == '-'))
             return luaL_error(L, "require: module name '%s' may use only letters, digits, _ . -",
                               raw);
-    if (name.find("..") != std::string::npos || name.front() == '.')
+    if (std::strstr(raw, "..") || raw[0] == '.')
         return luaL_error(L, "require: module name '%s' may not leave the scene's folder", raw);
     // Return the cached module if it was loaded before.
     lua_getfield(L, LUA_REGISTRYINDEX, "rb.loaded");
     lua_getfield(L, -1, raw);
     if (!lua_isnil(L, -1)) return 1;
     lua_pop(L, 1);
-    for (char& c : name)
-        if (c == '.') c = '/';
-    // Search the same places as meshes and textures; a missing module lists them all.
-    std::string file;
-    try {
-        file = findSceneFile(sceneBuilder(L), name + ".lua", std::string("require('") + raw + "')");
-    } catch (const InputError& e) {
-        return luaL_error(L, "%s", e.what());
+    // Search the same places as meshes and textures; a missing module lists them all. The C++
+    // strings live in this block only: the Lua errors below (a missing module, or one the module
+    // raises) must not jump over them, or their memory would leak.
+    bool found = true;
+    {
+        std::string name = raw;
+        for (char& c : name)
+            if (c == '.') c = '/';
+        try {
+            const std::string file = findSceneFile(sceneBuilder(L), name + ".lua",
+                                                   std::string("require('") + raw + "')");
+            lua_pushstring(L, file.c_str());
+        } catch (const InputError& e) {
+            lua_pushstring(L, e.what());
+            found = false;
+        }
+    }
+    if (!found) {
+        luaL_where(L, 1);
+        lua_insert(L, -2);
+        lua_concat(L, 2);
+        return lua_error(L);
     }
     // Text chunks only: precompiled bytecode can crash the VM.
-    const int status = luaL_loadfilex(L, file.c_str(), "t");
+    const int status = luaL_loadfilex(L, lua_tostring(L, -1), "t");
     if (status != LUA_OK) return lua_error(L);
+    lua_remove(L, -2);  // the file name
     lua_pushstring(L, raw);
     lua_call(L, 1, 1);
     if (lua_isnil(L, -1)) {
@@ -438,22 +452,30 @@ int unknownName(lua_State* L, const char* prefix, const char* suffix, const char
     if (!name) return luaL_error(L, "%sindex must be a string", prefix);
     for (const EraCall& c : kEraCalls)
         if (std::strcmp(name, c.name) == 0) noteEraSign(L, c.era, c.what);
-    std::string title;
-    const int chapter = missingChapter(L, name, title);
-    if (sceneBuilder(L).options.lenient) {
-        const bool method = std::strcmp(prefix, "gr.") != 0;
-        lua_pushstring(L, ((method ? "node:" : "gr.") + std::string(name)).c_str());
-        lua_pushstring(L, chapter
-                              ? ("needs chapter " + std::to_string(chapter) + ", " + title).c_str()
-                              : "unknown to raybook");
-        lua_pushcclosure(L, lenientCall, 2);
-        return 1;
+    // The C++ strings live in this block only: lua_error below must not jump over them (their
+    // memory would leak; LeakSanitizer caught it).
+    {
+        std::string title;
+        const int chapter = missingChapter(L, name, title);
+        if (sceneBuilder(L).options.lenient) {
+            const bool method = std::strcmp(prefix, "gr.") != 0;
+            lua_pushstring(L, ((method ? "node:" : "gr.") + std::string(name)).c_str());
+            lua_pushstring(L, chapter ? ("needs chapter " + std::to_string(chapter) + ", " + title)
+                                            .c_str()
+                                      : "unknown to raybook");
+            lua_pushcclosure(L, lenientCall, 2);
+            return 1;
+        }
+        luaL_where(L, 1);
+        if (chapter)
+            lua_pushfstring(L, "%s%s%s needs chapter %d (%s), which this build does not have; %s",
+                            prefix, name, suffix, chapter, title.c_str(),
+                            chapterAdvice(chapter).c_str());
+        else
+            lua_pushfstring(L, unknown, name);
+        lua_concat(L, 2);
     }
-    if (chapter)
-        return luaL_error(L, "%s%s%s needs chapter %d (%s), which this build does not have; %s",
-                          prefix, name, suffix, chapter, title.c_str(),
-                          chapterAdvice(chapter).c_str());
-    return luaL_error(L, unknown, name);
+    return lua_error(L);
 }
 
 /// A node or material method nobody defined.
