@@ -185,8 +185,8 @@ SCENARIO("a helper that raises an error while require() loads it stops the scene
     GIVEN("a scene that requires a helper whose first line raises an error") {
         rbtest::TempDir dir;
         dir.write("a_helper_with_a_long_name.lua", "error('this helper refuses to load')\n");
-        const std::string scene = dir.write(
-            "scene.lua", "require('a_helper_with_a_long_name')\n" + rbtest::renderLine());
+        const std::string scene =
+            dir.write("scene.lua", "require('a_helper_with_a_long_name')\n" + rbtest::renderLine());
         WHEN("the scene loads") {
             std::string message;
             try {

@@ -460,9 +460,9 @@ int unknownName(lua_State* L, const char* prefix, const char* suffix, const char
         if (sceneBuilder(L).options.lenient) {
             const bool method = std::strcmp(prefix, "gr.") != 0;
             lua_pushstring(L, ((method ? "node:" : "gr.") + std::string(name)).c_str());
-            lua_pushstring(L, chapter ? ("needs chapter " + std::to_string(chapter) + ", " + title)
-                                            .c_str()
-                                      : "unknown to raybook");
+            lua_pushstring(
+                L, chapter ? ("needs chapter " + std::to_string(chapter) + ", " + title).c_str()
+                           : "unknown to raybook");
             lua_pushcclosure(L, lenientCall, 2);
             return 1;
         }
