@@ -16,7 +16,8 @@ FUZZ_SECONDS ?= 60
 FUZZ_TARGETS := obj lua_scene options
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps bench-deps configure rt test test-exercises demo docs golden-update bench charts fuzz clean $(CHAPTER_TARGETS)
+.PHONY: deps bench-deps configure rt test test-exercises test-sanitize demo docs golden-update bench \
+        charts fuzz clean $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
 deps:
@@ -63,6 +64,24 @@ test-exercises: configure
 	cmake --build $(BUILD) -j $(JOBS) --target raybook_tests
 	python3 tests/exercises/regions.py mutate $(BUILD)
 
+# The same CTest suite (unit tests, golden images, determinism, bad input, scenes, batch,
+# interrupt, docs) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
+# folder (no benchmarks; the ladder is left out, since it rebuilds ./rt). Any report fails its test:
+#   halt_on_error, -fno-sanitize-recover=all  the first report ends the program;
+#   exitcode=66                               ... with an exit code no test expects;
+#   detect_leaks=1                            LeakSanitizer checks the heap at exit;
+#   allocator_may_return_null=1               an allocation too large for memory throws
+#                                             std::bad_alloc, as in the normal build (rt says
+#                                             "out of memory"), instead of a sanitizer abort;
+#   print_stacktrace=1                        UBSan prints where, not only what.
+SANITIZE_BUILD ?= build-sanitize
+SANITIZER_ENV  := ASAN_OPTIONS=halt_on_error=1:exitcode=66:detect_leaks=1:allocator_may_return_null=1 \
+                  UBSAN_OPTIONS=halt_on_error=1:exitcode=66:print_stacktrace=1
+test-sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DRB_SANITIZE=ON
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
+
 demo: rt
 	./rt --features=all --spp 4 scenes/showcase.lua
 	@echo "demo image: $$(pwd)/showcase.png"
@@ -105,4 +124,4 @@ fuzz:
 	bash tests/fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 clean:
-	rm -rf $(BUILD) $(FUZZ_BUILD) rt
+	rm -rf $(BUILD) $(FUZZ_BUILD) $(SANITIZE_BUILD) rt

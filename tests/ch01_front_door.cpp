@@ -180,6 +180,31 @@ SCENARIO(
     }
 }
 
+SCENARIO("a helper that raises an error while require() loads it stops the scene with that error",
+         "[ch01][front-door]") {
+    GIVEN("a scene that requires a helper whose first line raises an error") {
+        rbtest::TempDir dir;
+        dir.write("a_helper_with_a_long_name.lua", "error('this helper refuses to load')\n");
+        const std::string scene =
+            dir.write("scene.lua", "require('a_helper_with_a_long_name')\n" + rbtest::renderLine());
+        WHEN("the scene loads") {
+            std::string message;
+            try {
+                rb::loadScene(scene, rbtest::coreFeatures(), {});
+            } catch (const rb::InputError& e) {
+                message = e.what();
+            }
+            // Under make test-sanitize this test also checks that require lets go of the
+            // helper's path when the error passes through it: rt once leaked that string
+            // (LeakSanitizer reported it at exit).
+            THEN("the helper's own error, with its file and line, is what the student sees") {
+                CHECK_THAT(message, Contains("a_helper_with_a_long_name.lua:1:") &&
+                                        Contains("this helper refuses to load"));
+            }
+        }
+    }
+}
+
 SCENARIO("--features=-glossy on its own means everything built except glossy",
          "[ch01][front-door]") {
     GIVEN("the chapter-7 build") {
