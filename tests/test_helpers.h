@@ -93,7 +93,10 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
                                           rb::glossyFeature(),     rb::adaptiveAaFeature()};
-    return rb::FeatureSet(std::vector<rb::Feature>(all.begin(), all.begin() + last), spec);
+    std::vector<rb::Feature> upTo;
+    for (const rb::Feature& f : all)
+        if (f.chapter <= last) upTo.push_back(f);
+    return rb::FeatureSet(upTo, spec);
 }
 
 /// The three core chapters, all switched on: what `rt_ch3 --features=all` runs with.
