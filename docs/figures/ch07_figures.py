@@ -1,18 +1,22 @@
 #!/usr/bin/env python3
-"""Chapter 7's figure (SVG, written next to this script): the glossy lobes of
+"""Chapter 7's figures (SVG, written next to this script): the glossy lobes of
 chapters/07-glossy.md, drawn from their densities.
 
     python3 docs/figures/ch07_figures.py
 
-ch07-lobes.svg   glossiness g = 0.3, so fuzz radius f = 0.3 and Phong exponent n = 5/f^2 - 2.
-                 Left: both densities in the plane of incidence, as polar curves around the
-                 mirror direction a, on one scale: p_Phong = (n+1)/(2 pi) cos^n alpha (peaked)
-                 and p_fuzz = (r+^3 - max(0, r-)^3) / (4 pi f^3) (flat-topped, ending at
-                 arcsin f). Middle: seed 000's construction, a ball of radius f at the tip of
-                 a, a point b of the unit ball, omega = (a + f b)/|a + f b|, and the chord
-                 [r-, r+] of omega's line through the ball. Right: a mirror direction 10 degrees
-                 above the surface; the part of the lobe below it is rejected, and the lost
-                 share P_lost is integrated here from the page's formula.
+Glossiness g = 0.3, so fuzz radius f = 0.3 and Phong exponent n = 5/f^2 - 2.
+
+ch07-lobes.svg        both densities in the plane of incidence, as polar curves around the
+                      mirror direction a, on one scale: p_Phong = (n+1)/(2 pi) cos^n alpha (peaked)
+                      and p_fuzz = (r+^3 - max(0, r-)^3) / (4 pi f^3) (flat-topped, ending at
+                      arcsin f).
+ch07-fuzz-sphere.svg  seed 000's construction, a ball of radius f at the tip of a, a point b of
+                      the unit ball, omega = (a + f b)/|a + f b|, and the chord [r-, r+] of
+                      omega's line through the ball.
+ch07-grazing.svg      a mirror direction 10 degrees above the surface: the lobe in the plane of
+                      incidence, and 400 samples of the page's sampler seen along a, those below
+                      the horizon rejected; the lost share P_lost integrated from the page's
+                      formula.
 """
 import math
 
@@ -78,9 +82,10 @@ def lobe_curve(F, axis_angle, density, scale, clip_below=False):
     return pts
 
 
-def lobes_figure(name):
-    fig = Figure(930, 400, "glossy lobes: the Phong lobe and the fuzz sphere")
+def lobes_figure(names):
+    """Three panels, each written to its own file (the page shows each at its own section)."""
     peak = p_phong(0.0)
+    fig = Figure(330, 400, "the Phong lobe and the fuzz lobe on one scale")
 
     # Left: the two densities around the mirror direction.
     F = Frame2D((150, 300), 200)
@@ -110,7 +115,10 @@ def lobes_figure(name):
     fig.text((150, 381), f"fuzz lobe ends at arcsin ~f~ = {math.degrees(math.asin(F_FUZZ)):.1f}°",
              size=12)
 
+    made = [fig.write(names[0])]
+
     # Middle: the fuzz sphere.
+    fig = Figure(310, 400, "the fuzz sphere: omega = (a + f b) / |a + f b|")
     H = Frame2D((345, 300), 215)
     axis2 = math.radians(62)
     a2 = (math.cos(axis2), math.sin(axis2))
@@ -154,7 +162,10 @@ def lobes_figure(name):
     fig.text((460, 363), "~p~_{fuzz} ∝ the chord's volume ∫ ~r~² d~r~ from ~r~_− to ~r~_+",
              size=12)
 
+    made.append(fig.write(names[1], shift=305))
+
     # Right: near grazing the lobe pokes under the surface. Above, the plane of incidence.
+    fig = Figure(320, 400, "near grazing, part of the lobe is below the surface")
     K = Frame2D((625, 128), 135)
     theta3 = math.radians(80)
     axis3 = math.pi / 2 - theta3
@@ -207,8 +218,10 @@ def lobes_figure(name):
     fig.text((770, 363), f"grey: below the surface, rejected ({below_count})", size=12)
     fig.text((770, 381), f"~P~_{{lost}}(80°, ~n~ = {N_PHONG:.1f}) = {100 * lost:.1f}%", size=12,
              fill=RED)
-    return fig.write(name)
+    made.append(fig.write(names[2], shift=610))
+    return made
 
 
 if __name__ == "__main__":
-    print("wrote docs/figures/" + lobes_figure("ch07-lobes.svg"))
+    made = lobes_figure(["ch07-lobes.svg", "ch07-fuzz-sphere.svg", "ch07-grazing.svg"])
+    print("wrote", ", ".join("docs/figures/" + m for m in made))

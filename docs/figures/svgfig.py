@@ -80,7 +80,9 @@ class Figure:
     def add(self, element):
         self.body.append(element)
 
-    def write(self, name):
+    def write(self, name, shift=0):
+        """Write the file; shift moves everything left by that many units (one panel of a
+        figure drawn in several)."""
         defs = "".join(
             f'<marker id="arrow-{c[1:]}" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" '
             f'markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" '
@@ -89,7 +91,8 @@ class Figure:
                 f'height="{self.height}" viewBox="0 0 {self.width} {self.height}" '
                 f'font-family="sans-serif" font-size="14">\n<title>{self.title}</title>\n'
                 f'<defs>{defs}</defs>\n<rect width="100%" height="100%" fill="white"/>\n'
-                + "\n".join(self.body) + "\n</svg>\n")
+                + (f'<g transform="translate({-shift},0)">\n' if shift else "")
+                + "\n".join(self.body) + ("\n</g>" if shift else "") + "\n</svg>\n")
         with open(os.path.join(HERE, name), "w") as f:
             f.write(text)
         return name
