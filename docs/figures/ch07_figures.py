@@ -6,7 +6,7 @@ chapters/07-glossy.md, drawn from their densities.
 
 Glossiness g = 0.3, so fuzz radius f = 0.3 and Phong exponent n = 5/f^2 - 2.
 
-ch07-lobes.svg        both densities in the plane of incidence, as polar curves around the
+ch07-polar-lobes.svg        both densities in the plane of incidence, as polar curves around the
                       mirror direction a, on one scale: p_Phong = (n+1)/(2 pi) cos^n alpha (peaked)
                       and p_fuzz = (r+^3 - max(0, r-)^3) / (4 pi f^3) (flat-topped, ending at
                       arcsin f).
@@ -223,5 +223,5 @@ def lobes_figure(names):
 
 
 if __name__ == "__main__":
-    made = lobes_figure(["ch07-lobes.svg", "ch07-fuzz-sphere.svg", "ch07-grazing.svg"])
+    made = lobes_figure(["ch07-polar-lobes.svg", "ch07-fuzz-sphere.svg", "ch07-grazing.svg"])
     print("wrote", ", ".join("docs/figures/" + m for m in made))
