@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Chapter 6's figure (SVG, written next to this script): the area light seen from a shading
+"""Chapter 6's figures (SVG, written next to this script): the area light seen from a shading
 point, in the notation of chapters/06-soft-shadows.md.
 
     python3 docs/figures/ch06_figures.py
@@ -18,7 +18,7 @@ this script does.
 import math
 
 from svgfig import (BLUE, DARK, FILL_BLUE, FILL_GREY, FILL_ORANGE, GRID, INK, ORANGE, RED,
-                    Figure, Projection, add, cross, dot, length, mul, normalize, sub)
+                    Figure, Frame2D, Projection, add, cross, dot, length, mul, normalize, sub)
 
 
 def lcg(seed):
@@ -154,5 +154,128 @@ def solid_angle_figure(name):
     return fig.write(name)
 
 
+def ball_figure(name):
+    """The ball light's cone, in the plane of p, n and the centre: sin theta_max = R/d."""
+    fig = Figure(800, 340, "a ball light seen from p: the cone of half-angle theta_max")
+    F = Frame2D((60, 290), 100)
+    p = (0.0, 0.0)
+    centre = (2.6, 1.5)
+    R = 0.7
+    d = math.hypot(*centre)
+    theta_max = math.asin(R / d)
+    axis = math.atan2(centre[1], centre[0])
+    fig.line(F((-0.5, 0)), F((3.9, 0)), DARK, 2.5)
+    x = -0.5
+    while x <= 3.9:
+        fig.line(F((x, 0)), F((x - 0.06, -0.06)), GRID, 1)
+        x += 0.1
+    # The cone: tangent lines from p, touching the ball at distance sqrt(d^2 - R^2).
+    fig.polygon([F(p)] + [F((math.cos(axis + s * theta_max) * math.sqrt(d * d - R * R),
+                            math.sin(axis + s * theta_max) * math.sqrt(d * d - R * R)))
+                          for s in (-1, 1)], FILL_ORANGE, "none", opacity=0.7)
+    for s in (-1, 1):
+        a = axis + s * theta_max
+        tl = math.sqrt(d * d - R * R)
+        fig.line(F(p), F((math.cos(a) * tl, math.sin(a) * tl)), ORANGE, 1.5, "5 3")
+        touch = (math.cos(a) * tl, math.sin(a) * tl)
+        fig.line(F(touch), F(centre), GRID, 1, "2 3")
+    fig.circle(F(centre), R * F.scale, DARK, "#fff6dc", 2)
+    fig.dot(F(centre), INK, 3)
+    fig.line(F(p), F(centre), DARK, 1.2, "2 3")
+    fig.text(add(F(mul(centre, 0.55)), (4, 16)), "~d~", "start", 14)
+    fig.line(F(centre), F(add(centre, (0, R))), DARK, 1.5)
+    fig.text(add(F(add(centre, (0, R / 2))), (6, 4)), "~R~", "start", 14)
+    # A sample direction inside the cone (the page's 1 - cos theta = u1 (1 - cos theta_max)),
+    # and where it meets the sphere first: distance r_k.
+    u1 = 0.55
+    theta = math.acos(1 - u1 * (1 - math.cos(theta_max)))
+    a = axis + theta
+    w = (math.cos(a), math.sin(a))
+    b = w[0] * centre[0] + w[1] * centre[1]
+    r_k = b - math.sqrt(b * b - (d * d - R * R))
+    x_k = mul(w, r_k)
+    fig.arrow(F(p), F(x_k), RED, 2.2)
+    fig.dot(F(x_k), RED, 4)
+    fig.text(add(F(x_k), (-4, -10)), "*x*_k", "end", 14, RED)
+    fig.text(add(F(mul(x_k, 0.5)), (-6, -8)), "~r~_k", "end", 14, RED)
+    fig.arc(F(p), 1.15 * F.scale, axis, axis - theta_max, ORANGE, 1.5)
+    fig.text(add(F((1.3 * math.cos(axis - theta_max / 2), 1.3 * math.sin(axis - theta_max / 2))),
+                 (4, 6)), "~θ~_{max}", "start", 13, ORANGE)
+    fig.arc(F(p), 0.85 * F.scale, axis, a, RED, 1.5)
+    fig.text(add(F((0.75 * math.cos(axis + theta / 2), 0.75 * math.sin(axis + theta / 2))),
+                 (-4, 0)), "~θ~", "end", 13, RED)
+    fig.arrow(F(p), F((0, 0.9)), DARK, 2)
+    fig.text(add(F((0, 0.9)), (0, -8)), "*n*")
+    fig.dot(F(p), INK, 4.5)
+    fig.text(add(F(p), (0, 20)), "*p*")
+    lines = [
+        (f"sin ~θ~_{{max}} = ~R~/~d~ = {R / d:.3f}, ~θ~_{{max}} = {math.degrees(theta_max):.1f}°",
+         ORANGE),
+        ("~p~_ω = 1 / (2π(1 − cos ~θ~_{max})) inside the cone", INK),
+        (f"this sample: ~u~_1 = {u1}, ~θ~ = {math.degrees(theta):.1f}°, ~r~_k = {r_k:.3f}", RED),
+        (f"~w~_k = 2(1 − cos ~θ~_{{max}}) ~r~_k² / ~R~² = "
+         f"{2 * (1 - math.cos(theta_max)) * r_k ** 2 / R ** 2:.3f}", RED),
+    ]
+    for k, (line, colour) in enumerate(lines):
+        fig.text((450, 60 + 24 * k), line, "start", 13, colour)
+    return fig.write(name)
+
+
+def penumbra_figure(name):
+    """Side view: a light of width l at height H, an occluder's edge at height h, and the floor
+    shaded by the visible share of the light, computed point by point."""
+    ell, H, h, x_e = 1.2, 3.0, 1.0, 0.0
+    fig = Figure(760, 410, "where the penumbra is: similar triangles")
+    F = Frame2D((300, 330), 90)
+    # The floor, shaded by the share of the light segment each point sees past the edge.
+    x0, x1 = -3.0, 3.6
+    steps = 264
+    for k in range(steps):
+        x = x0 + (x1 - x0) * (k + 0.5) / steps
+        # A light point a is hidden when the line from (x, 0) to (a, H) passes the occluder's
+        # height h at some x' < x_e (the occluder is the half-plane left of its edge).
+        a_edge = x + (x_e - x) * H / h  # the light point seen exactly past the edge
+        lo, hi = -ell / 2, ell / 2
+        visible = (hi - max(lo, min(hi, a_edge))) / ell
+        level = int(255 - 200 * (1 - visible))
+        colour = f"#{level:02x}{level:02x}{min(255, level + 10):02x}"
+        xa = x0 + (x1 - x0) * k / steps
+        xb = x0 + (x1 - x0) * (k + 1.6) / steps  # overlap: no seams between strips
+        fig.rect(*F((xa, 0)), *F((xb, -0.25)), "none", colour, 0)
+    fig.line(F((x0, 0)), F((x1, 0)), DARK, 2)
+    # The occluder (a plate ending at its edge) and the light.
+    fig.rect(*F((x0, h + 0.06)), *F((x_e, h - 0.06)), DARK, "#777", 1)
+    fig.line(F((-ell / 2, H)), F((ell / 2, H)), ORANGE, 6)
+    # The two boundary rays through the edge.
+    feet = []
+    for a in (-ell / 2, ell / 2):
+        foot = x_e + (x_e - a) * h / (H - h)
+        feet.append(foot)
+        fig.line(F((a, H)), F((foot, 0)), GRID, 1.2, "5 3")
+    fig.dot(F((x_e, h)), RED, 4)
+    # Labels: the light's width, heights, and the penumbra's width on the floor.
+    fig.text(add(F((0, H)), (0, -10)), "ℓ", size=15, fill=ORANGE)
+    fig.line(F((2.6, 0)), F((2.6, H)), DARK, 1)
+    fig.text(add(F((2.6, H / 2)), (6, 4)), "~H~", "start", 14)
+    fig.line(F((-2.6, 0)), F((-2.6, h)), DARK, 1)
+    fig.text(add(F((-2.6, h / 2)), (-6, 4)), "~h~", "end", 14)
+    lo_f, hi_f = min(feet), max(feet)
+    fig.line(F((lo_f, -0.4)), F((hi_f, -0.4)), RED, 2)
+    for xf in (lo_f, hi_f):
+        fig.line(F((xf, -0.32)), F((xf, -0.48)), RED, 2)
+    width = ell * h / (H - h)
+    assert abs((hi_f - lo_f) - width) < 1e-12
+    fig.text(add(F(((lo_f + hi_f) / 2, -0.4)), (0, 18)), "~w~_{penumbra}", size=13, fill=RED)
+    fig.text(add(F(((x0 + lo_f) / 2, -0.12)), (0, 4)), "umbra", size=12, fill="white")
+    fig.text(add(F(((hi_f + x1) / 2, -0.12)), (0, 4)), "lit", size=12)
+    fig.text((560, 40), f"~w~_{{penumbra}} = ℓ ~h~ / (~H~ − ~h~)", "start", 14, RED)
+    fig.text((560, 62), f"= {ell} · {h} / ({H} − {h}) = {width:.2f}", "start", 13, RED)
+    fig.text((560, 90), "floor shaded by the share", "start", 12, "#555")
+    fig.text((560, 106), "of the light it sees", "start", 12, "#555")
+    return fig.write(name)
+
+
 if __name__ == "__main__":
-    print("wrote docs/figures/" + solid_angle_figure("ch06-solid-angle.svg"))
+    made = [solid_angle_figure("ch06-solid-angle.svg"), ball_figure("ch06-ball.svg"),
+            penumbra_figure("ch06-penumbra.svg")]
+    print("wrote", ", ".join("docs/figures/" + m for m in made))
