@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Chapter 5's figure (SVG, written next to this script): Snell's law as vectors and total
+"""Chapter 5's figures (SVG, written next to this script): Snell's law as vectors and total
 internal reflection, from the equations of chapters/05-refraction.md.
 
     python3 docs/figures/ch05_figures.py
@@ -10,6 +10,9 @@ ch05-snell.svg   left, air into glass at 45 degrees: the unit circle around the 
                  Right, glass into air at 50 degrees, past the critical angle: eta sin theta_i
                  is longer than the circle's radius, cos^2 theta_t < 0, and only the mirror ray
                  is left; the ray at the critical angle leaves along the surface.
+ch05-nested.svg  a ray through a water ball inside a glass ball, refracted at each surface with
+                 the indices the medium stack gives (push on entering, pop on leaving), and the
+                 table of crossings: eta_i -> eta_t and the stack after each.
 """
 import math
 
@@ -118,5 +121,86 @@ def snell_figure(name):
     return fig.write(name)
 
 
+def nested_figure(name):
+    """A ray through a water ball inside a glass ball (2D), refracted at every surface with the
+    indices the medium stack gives: push on entering, pop on leaving."""
+    objects = {"glass": ((0.0, 0.0), 1.0, 1.5), "water": ((0.12, -0.08), 0.55, 1.33)}
+    o, d = (-1.9, 0.6), (1.0, 0.0)
+    stack = []  # names, innermost last
+
+    def current():
+        return objects[stack[-1]][2] if stack else 1.0
+
+    path, crossings = [o], []
+    for _ in range(8):
+        # The nearest surface ahead.
+        best = None
+        for name_, (c, radius, _eta) in objects.items():
+            oc = sub(o, c)
+            b = dot(oc, d)
+            disc = b * b - (dot(oc, oc) - radius * radius)
+            if disc < 0:
+                continue
+            for t in (-b - math.sqrt(disc), -b + math.sqrt(disc)):
+                if t > 1e-9 and (best is None or t < best[0]):
+                    best = (t, name_)
+        if best is None:
+            break
+        t, name_ = best
+        c, radius, eta_obj = objects[name_]
+        p = add(o, mul(d, t))
+        n_out = mul(sub(p, c), 1 / radius)
+        entering = dot(d, n_out) < 0
+        eta_i = current()
+        if entering:
+            eta_t, after = eta_obj, stack + [name_]
+        else:
+            after = [s_ for s_ in stack if s_ != name_]
+            eta_t = objects[after[-1]][2] if after else 1.0
+        n = n_out if entering else mul(n_out, -1)  # towards the side the ray comes from
+        refracted, _cos2 = refract(d, n, eta_i / eta_t)
+        assert refracted is not None  # no total internal reflection on this path
+        crossings.append((p, eta_i, eta_t, list(after), n))
+        stack = after
+        path.append(p)
+        o, d = p, refracted
+    path.append(add(o, mul(d, 0.7)))
+
+    fig = Figure(900, 340, "a ray through a water ball inside a glass ball")
+    F = Frame2D((300, 170), 140)
+    for name_, (c, radius, eta) in objects.items():
+        fill = "#e3ebf8" if name_ == "glass" else "#c9daf2"
+        fig.circle(F(c), radius * F.scale, DARK, fill, 1.8)
+    fig.text(add(F((0, 0.78)), (0, 0)), "glass, ~η~ = 1.5", size=12)
+    fig.text(add(F(objects["water"][0]), (0, 34)), "water, ~η~ = 1.33", size=12)
+    fig.text(add(F((-1.75, -1.0)), (0, 0)), "air, ~η~ = 1", size=12)
+    # The straight line the ray would follow without refraction, then the refracted path.
+    fig.line(F(path[0]), F(add(path[0], (3.4, 0))), GRID, 1, "4 4")
+    for k in range(len(path) - 1):
+        if k == len(path) - 2:
+            fig.arrow(F(path[k]), F(path[k + 1]), RED, 2.2)
+        else:
+            fig.line(F(path[k]), F(path[k + 1]), RED, 2.2)
+    for k, (p, eta_i, eta_t, after, n) in enumerate(crossings, 1):
+        fig.line(F(add(p, mul(n, 0.22))), F(add(p, mul(n, -0.22))), GRID, 1)
+        fig.dot(F(p), INK, 3.5)
+        fig.text(add(F(p), (0, -9 if k % 2 else 18)), str(k), size=12, weight="bold")
+    fig.text(add(F(path[0]), (0, -8)), "*o*")
+    # The table of crossings.
+    tx, ty = 560, 70
+    fig.text((tx, ty - 28), "crossing", "start", 13)
+    fig.text((tx + 74, ty - 28), "~η~_i → ~η~_t", "start", 13)
+    fig.text((tx + 174, ty - 28), "stack after", "start", 13)
+    for k, (p, eta_i, eta_t, after, n) in enumerate(crossings, 1):
+        names = ", ".join(after) if after else "(air)"
+        fig.text((tx, ty + 24 * (k - 1)), f"{k}", "start", 13, weight="bold")
+        fig.text((tx + 74, ty + 24 * (k - 1)), f"{eta_i:g} → {eta_t:g}", "start", 13, RED)
+        fig.text((tx + 174, ty + 24 * (k - 1)), names, "start", 13)
+    fig.text((tx, ty + 24 * len(crossings) + 14),
+             "the water's surface bends by 1.5/1.33, not 1/1.33", "start", 12, "#555")
+    return fig.write(name)
+
+
 if __name__ == "__main__":
-    print("wrote docs/figures/" + snell_figure("ch05-snell.svg"))
+    made = [snell_figure("ch05-snell.svg"), nested_figure("ch05-nested.svg")]
+    print("wrote", ", ".join("docs/figures/" + m for m in made))
