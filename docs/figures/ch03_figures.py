@@ -1,9 +1,14 @@
 #!/usr/bin/env python3
-"""Chapter 3's figure (SVG, written next to this script): the binned SAH split of
+"""Chapter 3's figures (SVG, written next to this script): the binned SAH split of
 chapters/03-bvh.md, computed as src/bvh/bvh.cpp computes it.
 
     python3 docs/figures/ch03_figures.py
 
+ch03-watertight.svg   two triangles sharing an edge, moved into the ray's frame by the page's
+               permutation and shear (the ray is the origin, seen head-on), and the three edge
+               functions U, V, W as the signed areas the origin makes with each edge; left, a
+               ray through one triangle, right, a ray through a point of the shared edge, where
+               the neighbour's function for that edge is exactly -U.
 ch03-sah.svg   eight triangles in a node N; their centroids (box centres) binned along x into
                B = min(16, 8) = 8 bins; every candidate plane between bins priced by
                C_split = C_trav + (A(L)|L| + A(R)|R|) / A(N), the cheapest one drawn with its
@@ -153,5 +158,81 @@ def sah_figure(name):
     return fig.write(name)
 
 
+def to_ray_space(o, d, points):
+    """The page's steps 1 and 2: choose the axes, then translate by o and shear every vertex so
+    that the ray becomes the +z axis. Returns the (x, y) of each vertex in that frame."""
+    kz = max(range(3), key=lambda i: abs(d[i]))
+    kx, ky = (kz + 1) % 3, (kz + 2) % 3
+    if d[kz] < 0:
+        kx, ky = ky, kx
+    sx, sy = d[kx] / d[kz], d[ky] / d[kz]
+    out = []
+    for p in points:
+        a = [p[i] - o[i] for i in range(3)]
+        out.append((a[kx] - sx * a[kz], a[ky] - sy * a[kz]))
+    return out
+
+
+def edge_functions(A, B, C):
+    """Step 3: U for edge (p1, p2), V for (p2, p0), W for (p0, p1)."""
+    U = C[0] * B[1] - C[1] * B[0]
+    V = A[0] * C[1] - A[1] * C[0]
+    W = B[0] * A[1] - B[1] * A[0]
+    return U, V, W
+
+
+def watertight_figure(name):
+    # Two triangles sharing the edge (p1, p2), and two rays: one through the first triangle,
+    # one exactly through a point of the shared edge.
+    p0, p1, p2, p3 = (0.0, 0.0, 0.0), (2.0, 0.4, 0.3), (0.5, 1.8, -0.2), (2.4, 2.2, 0.1)
+    d = (0.1, 0.05, -1.0)
+    on_edge = tuple(0.45 * a + 0.55 * b for a, b in zip(p1, p2))
+    rays = [("a ray through triangle 0", (0.9, 0.75, 3.0)),
+            ("a ray through a point of the shared edge",
+             tuple(on_edge[i] - 3.0 * d[i] for i in range(3)))]
+    fig = Figure(900, 395, "the watertight test in ray space: edge functions U, V, W")
+    for k, (title, o) in enumerate(rays):
+        A, B, C, D = to_ray_space(o, d, [p0, p1, p2, p3])
+        U, V, W = edge_functions(A, B, C)
+        # The neighbour (p1, p3, p2): its V is the shared edge's function, from the same
+        # products in the other order.
+        U_n, V_n, W_n = edge_functions(B, D, C)
+        assert V_n == -U
+        F = Frame2D((450 * k + 190, 200), 105)
+        origin = (0.0, 0.0)
+        fig.polygon([F(A), F(B), F(C)], "#f4f6f9", DARK, 2)
+        fig.polygon([F(B), F(D), F(C)], "#f4f6f9", DARK, 2)
+        # The three signed areas with the ray: shaded when positive (blue) or negative (red).
+        for (P, Q), value, label in (((B, C), U, "~U~"), ((C, A), V, "~V~"),
+                                      ((A, B), W, "~W~")):
+            colour = BLUE if value > 0 else RED if value < 0 else DARK
+            fig.polygon([F(origin), F(P), F(Q)], colour, colour, 1, opacity=0.18)
+            if label == "~U~":  # a thin sliver: label it beside the shared edge, outside
+                mid = ((P[0] + Q[0]) / 2 + 0.28, (P[1] + Q[1]) / 2 + 0.22)
+            else:
+                mid = ((P[0] + Q[0] + origin[0]) / 3, (P[1] + Q[1] + origin[1]) / 3)
+            fig.text(add(F(mid), (0, 5)), f"{label} = {value:.3f}".replace("-", "−"), size=12,
+                     fill=colour)
+        for P, s in ((A, "*p*_0"), (B, "*p*_1"), (C, "*p*_2"), (D, "*p*_3")):
+            fig.dot(F(P), INK, 3.5)
+            off = (-8, 4) if P[0] < 0.3 else (8, 4)
+            fig.text(add(F(P), off), s, "end" if P[0] < 0.3 else "start", 13)
+        cx, cy = F(origin)
+        fig.circle((cx, cy), 6, RED, "white", 2)
+        fig.dot((cx, cy), RED, 2)
+        fig.text((cx + 10, cy + 18), "ray", "start", 12, RED)
+        fig.text((450 * k + 225, 24), title, weight="bold")
+        hits = [all(x >= 0 for x in e) or all(x <= 0 for x in e)
+                for e in ((U, V, W), (U_n, V_n, W_n))]
+        claim = {(True, True): "both claim it", (True, False): "triangle 0 claims it",
+                 (False, True): "the neighbour claims it", (False, False): "neither (a crack)"}
+        fig.text((450 * k + 225, 358),
+                 f"the neighbour's ~V~ for the same edge is −~U~ = {V_n:.3g}".replace("-", "−"),
+                 size=12, fill="#555")
+        fig.text((450 * k + 225, 380), f"{claim[tuple(hits)]}", size=13, weight="bold")
+    return fig.write(name)
+
+
 if __name__ == "__main__":
-    print("wrote docs/figures/" + sah_figure("ch03-sah.svg"))
+    made = [sah_figure("ch03-sah.svg"), watertight_figure("ch03-watertight.svg")]
+    print("wrote", ", ".join("docs/figures/" + m for m in made))
