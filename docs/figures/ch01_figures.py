@@ -16,7 +16,7 @@ ch01-slab.svg     the slab test in 2D: the x and y slabs of a box, the t interva
 import math
 
 from svgfig import (BLUE, DARK, FILL_BLUE, FILL_GREY, FILL_ORANGE, FILL_RED, GRID, INK, ORANGE,
-                    RED, Figure, Frame2D, Projection, add, cross, dot, length, mul, normalize, sub)
+                    RED, Figure, Frame2D, Projection, add, cross, dot, mul, normalize, sub)
 
 # --- the camera --------------------------------------------------------------------------------
 
@@ -36,7 +36,7 @@ def camera_figure(name):
     s_x = s_y * W / H
 
     def plane(x, y):
-        """The point of the image plane at pixel position (x, y): w + (2x/W-1)s_x u + (1-2y/H)s_y v'."""
+        """The image plane's point at pixel position (x, y): w + (2x/W-1)s_x u + (1-2y/H)s_y v'."""
         return add(add(eye, w), add(mul(u, (2 * x / W - 1) * s_x), mul(vp, (1 - 2 * y / H) * s_y)))
 
     fig = Figure(940, 430, "the pinhole camera: frame, image plane and fovy")
@@ -170,9 +170,8 @@ def sphere_figure(name):
         fig.text(add(F(o), (0, -10)), "*o*", "middle")
         fig.text(add(F(add(o, mul(d, 0.5))), (0, -8)), "*d*", "middle")
         # f: from the centre to the closest point of the line, at t = -h/a.
-        foot = mul(f, 1.0)
-        fig.arrow(F((0, 0)), F(foot), BLUE, 2)
-        fig.text(add(F(mul(foot, 0.5)), (8, 4)), "*f*", "start", fill=BLUE)
+        fig.arrow(F((0, 0)), F(f), BLUE, 2)
+        fig.text(add(F(mul(f, 0.5)), (8, 4)), "*f*", "start", fill=BLUE)
         for t in roots or ():
             fig.dot(F(add(o, mul(d, t))), RED, 5)
         if roots and label == "two hits":
@@ -206,7 +205,8 @@ def sphere_figure(name):
         fig.line(plot(tv, 0), plot(tv, qmin), GRID, 1, "3 3")
         fig.dot(plot(tv, qmin), BLUE, 3)
         fig.text(add(plot(tv, qmin), (8, 14 if qmin < 0 else -6)),
-                 f"−Δ/~a~ = |*f*|² − 1 = {0.0 if abs(qmin) < 5e-3 else qmin:.2f}".replace("-", "−"),
+                 f"−Δ/~a~ = |*f*|² − 1 = {0.0 if abs(qmin) < 5e-3 else qmin:.2f}"
+                 .replace("-", "−"),
                  "start", 12, BLUE)
         for t in roots or ():
             fig.dot(plot(t, 0), RED, 4.5)
@@ -217,7 +217,8 @@ def sphere_figure(name):
                 f"Δ > 0: ~t~_0 = {roots[0]:.2f}, ~t~_1 = {roots[1]:.2f}")
         fig.text((ox + 150, 400), what, size=13)
         fig.text(add(plot(tv, 0), (0, -8 if qmin < 0 else 16)), "−~h~/~a~", size=11, fill="#555")
-    fig.text((450, 430), f"the same *d* in all three: ~a~ = |*d*|² = {dot(d, d):.4g}; *f* = *o* − (~h~/~a~) *d*", size=12, fill="#555")
+    fig.text((450, 430), f"the same *d* in all three: ~a~ = |*d*|² = {dot(d, d):.4g}; "
+             "*f* = *o* − (~h~/~a~) *d*", size=12, fill="#555")
     return fig.write(name)
 
 

@@ -13,7 +13,7 @@ ch02-normals.svg   a circle squashed by M = diag(2, 0.6): a tangent t goes to M 
 """
 import math
 
-from svgfig import (BLUE, DARK, FILL_BLUE, FILL_ORANGE, FILL_RED, GRID, INK, ORANGE, RED,
+from svgfig import (BLUE, DARK, FILL_BLUE, FILL_ORANGE, GRID, INK, ORANGE, RED,
                     Figure, Frame2D, add, dot, mul, normalize, sub)
 
 

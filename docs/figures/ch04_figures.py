@@ -74,7 +74,8 @@ def reflection_figure(name):
     fig.text(add(F((0.56 * math.cos(mid_i), 0.56 * math.sin(mid_i))), (0, 5)), "~θ~_i")
     fig.text(add(F((0.6 * math.cos(mid_r), 0.6 * math.sin(mid_r))), (0, 5)), "~θ~_r", fill=RED)
     fig.text((360, 400), f"~θ~_i = ~θ~_r = {math.degrees(THETA_I):.0f}°,  "
-             f"*d*·*n* = −cos ~θ~_i = {d_dot_n:.3f}".replace("-", "−") + ",  |*r*| = |*d*| = 1", size=13)
+             f"*d*·*n* = −cos ~θ~_i = {d_dot_n:.3f}".replace("-", "−")
+             + ",  |*r*| = |*d*| = 1", size=13)
     fig.text((360, 420), "*r* = *d*_∥ − *d*_⊥ = *d* − 2(*d*·*n*)*n*", size=13, fill=RED)
     return fig.write(name)
 

@@ -98,7 +98,8 @@ def panel(fig, ox, eta_i, eta_t, theta_i_deg, title):
                  12, ORANGE)
         fig.arrow(F(o), F(r), RED, 3)
         fig.text(add(F(r), (8, 0)), "*r*: all the light", "start", 13, RED)
-        fig.text(add(F((-0.1, -0.55)), (0, 0)), f"cos² ~θ~_t = {cos2_t:.2f} < 0".replace("-", "−"),
+        fig.text(add(F((-0.1, -0.55)), (0, 0)),
+                 f"cos² ~θ~_t = {cos2_t:.2f} < 0".replace("-", "−"),
                  "end", 12, RED)
     # theta_i between -d and n.
     a_in = math.atan2(-d[1], -d[0])
@@ -110,7 +111,8 @@ def panel(fig, ox, eta_i, eta_t, theta_i_deg, title):
         what = (f"~η~ = {eta_i:g}/{eta_t:g}, ~θ~_i = {theta_i_deg:g}°, "
                 f"~θ~_t = {math.degrees(theta_t):.4f}°")
     else:
-        what = f"~η~ = {eta_i:g}/{eta_t:g}, ~θ~_i = {theta_i_deg:g}° > ~θ~_c: total internal reflection"
+        what = (f"~η~ = {eta_i:g}/{eta_t:g}, ~θ~_i = {theta_i_deg:g}° > ~θ~_c: "
+                "total internal reflection")
     fig.text((ox + 215, 448), what, size=13)
 
 
@@ -168,7 +170,7 @@ def nested_figure(name):
 
     fig = Figure(900, 340, "a ray through a water ball inside a glass ball")
     F = Frame2D((300, 170), 140)
-    for name_, (c, radius, eta) in objects.items():
+    for name_, (c, radius, _eta) in objects.items():
         fill = "#e3ebf8" if name_ == "glass" else "#c9daf2"
         fig.circle(F(c), radius * F.scale, DARK, fill, 1.8)
     fig.text(add(F((0, 0.78)), (0, 0)), "glass, ~η~ = 1.5", size=12)

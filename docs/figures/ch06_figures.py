@@ -17,7 +17,7 @@ this script does.
 """
 import math
 
-from svgfig import (BLUE, DARK, FILL_BLUE, FILL_GREY, FILL_ORANGE, GRID, INK, ORANGE, RED,
+from svgfig import (BLUE, DARK, FILL_GREY, FILL_ORANGE, GRID, INK, ORANGE, RED,
                     Figure, Frame2D, Projection, add, cross, dot, length, mul, normalize, sub)
 
 
@@ -119,9 +119,9 @@ def solid_angle_figure(name):
         mid = add(mul(a, math.cos(ang / 2)), mul(perp, math.sin(ang / 2)))
         return add(at, mul(mid, radius * 1.45)), math.degrees(ang)
 
-    lab_s, theta_s = angle_arc(p, n, to_x, 0.32, INK)
+    lab_s, _ = angle_arc(p, n, to_x, 0.32, INK)
     fig.text(add(P(lab_s), (0, 5)), "~θ~_s", size=13)
-    lab_l, theta_l = angle_arc(x, n_light, to_p, 0.34, BLUE)
+    lab_l, _ = angle_arc(x, n_light, to_p, 0.34, BLUE)
     fig.text(add(P(lab_l), (-6, 5)), "~θ~_l", "end", 13, BLUE)
     fig.dot(P(p), INK, 4.5)
     fig.text(add(P(p), (-8, 16)), "*p*", "end")
@@ -209,8 +209,8 @@ def ball_figure(name):
     fig.dot(F(p), INK, 4.5)
     fig.text(add(F(p), (0, 20)), "*p*")
     lines = [
-        (f"sin ~θ~_{{max}} = ~R~/~d~ = {R / d:.3f}, ~θ~_{{max}} = {math.degrees(theta_max):.1f}°",
-         ORANGE),
+        (f"sin ~θ~_{{max}} = ~R~/~d~ = {R / d:.3f}, "
+         f"~θ~_{{max}} = {math.degrees(theta_max):.1f}°", ORANGE),
         ("~p~_ω = 1 / (2π(1 − cos ~θ~_{max})) inside the cone", INK),
         (f"this sample: ~u~_1 = {u1}, ~θ~ = {math.degrees(theta):.1f}°, ~r~_k = {r_k:.3f}", RED),
         (f"~w~_k = 2(1 − cos ~θ~_{{max}}) ~r~_k² / ~R~² = "

@@ -73,7 +73,8 @@ def surface(fig, F, x0, x1):
         x += 0.1
 
 
-def lobe_curve(F, axis_angle, density, scale, clip_below=False):
+def lobe_curve(axis_angle, density, scale):
+    """A polar curve: radius scale * density(alpha) at angle axis_angle + alpha."""
     pts = []
     for k in range(721):
         alpha = -math.pi / 2 + math.pi * k / 720
@@ -99,8 +100,8 @@ def lobes_figure(names):
     fig.arrow(F((0, 0)), F((0, 0.55)), DARK, 1.8)
     fig.text(add(F((0, 0.55)), (0, -6)), "*n*")
     scale = 1.0 / peak
-    phong = lobe_curve(F, axis, p_phong, scale)
-    fuzz = lobe_curve(F, axis, p_fuzz, scale)
+    phong = lobe_curve(axis, p_phong, scale)
+    fuzz = lobe_curve(axis, p_fuzz, scale)
     fig.polygon([F(q) for q in phong], FILL_RED, RED, 2)
     fig.polyline([F(q) for q in fuzz], BLUE, 2, dash="6 3")
     fig.line(F((0, 0)), F(mul(a, 1.12)), GRID, 1, "3 3")
@@ -170,7 +171,7 @@ def lobes_figure(names):
     theta3 = math.radians(80)
     axis3 = math.pi / 2 - theta3
     a3 = (math.cos(axis3), math.sin(axis3))
-    lobe3 = lobe_curve(K, axis3, p_phong, 1.2 / peak)  # drawn 1.2 times larger
+    lobe3 = lobe_curve(axis3, p_phong, 1.2 / peak)  # drawn 1.2 times larger
     fig.polygon([K(q) for q in lobe3], FILL_RED, RED, 2)
     surface(fig, K, -0.1, 1.35)
     fig.arrow(K((0, 0)), K((0, 0.45)), DARK, 1.8)
