@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Chapter 4's figure (SVG, written next to this script): the law of reflection of
+"""Chapter 4's figures (SVG, written next to this script): the law of reflection of
 chapters/04-reflection.md, with r computed from r = d - 2(d.n)n.
 
     python3 docs/figures/ch04_figures.py
@@ -8,10 +8,13 @@ ch04-reflection.svg   the incoming unit direction d at 40 degrees from the norma
                       d_perp = (d.n)n and d_par = d - d_perp, and the mirror direction r: d
                       drawn again from the hit point (through the surface), then -2(d.n)n
                       from its tip up to the tip of r; the equal angles theta_i and theta_r.
+ch04-mirrors.svg      two parallel mirrors and a camera ray reflected k = 4 times by the same
+                      formula before it reaches a wall: each bounce multiplies by r.
 """
 import math
 
-from svgfig import (BLUE, DARK, GRID, INK, ORANGE, RED, Figure, Frame2D, add, dot, mul, sub)
+from svgfig import (BLUE, DARK, GRID, INK, ORANGE, RED, Figure, Frame2D, add, dot, mul,
+                    normalize, sub)
 
 THETA_I = math.radians(40)
 
@@ -80,5 +83,58 @@ def reflection_figure(name):
     return fig.write(name)
 
 
+def mirrors_figure(name):
+    """Two parallel mirrors (y = 0 and y = 1), a camera ray that zig-zags k = 4 times between
+    them by r = d - 2(d.n)n, then reaches a wall: the radiance it carries back is r^k L_w."""
+    r_mirror, k_bounces = 0.8, 4
+    fig = Figure(850, 300, "two parallel mirrors: r^k after k bounces")
+    F = Frame2D((60, 230), 170)
+    x_wall = 4.1
+    for y in (0.0, 1.0):
+        fig.line(F((0, y)), F((x_wall, y)), DARK, 2.5)
+        x = 0.0
+        while x <= x_wall:
+            dy = -0.05 if y == 0 else 0.05
+            fig.line(F((x, y)), F((x - 0.05, y + dy)), GRID, 1)
+            x += 0.08
+    fig.rect(*F((x_wall, 1.0)), *F((x_wall + 0.12, 0.0)), DARK, "#f3c4c4", 1.5)
+    fig.text(add(F((x_wall + 0.06, 0.5)), (12, 4)), "wall ~L~_w", "start", 13)
+    # The path: from the eye, the direction chosen so that the ray meets the wall after k
+    # bounces; each bounce uses the page's reflection formula.
+    o = (0.0, 0.5)
+    slope = k_bounces / x_wall  # k mirror gaps in all: the wall is met half-way up
+    d = normalize((1.0, slope))
+    path = [o]
+    p = o
+    bounces = 0
+    while True:
+        t_wall = (x_wall - p[0]) / d[0]
+        t_hit = ((1.0 if d[1] > 0 else 0.0) - p[1]) / d[1]
+        if t_wall <= t_hit:
+            path.append(add(p, mul(d, t_wall)))
+            break
+        p = add(p, mul(d, t_hit))
+        n = (0.0, -1.0) if d[1] > 0 else (0.0, 1.0)  # facing the ray
+        d = sub(d, mul(n, 2 * dot(d, n)))
+        path.append(p)
+        bounces += 1
+    assert bounces == k_bounces
+    for j in range(len(path) - 1):
+        # Segment j carries L_j, what is seen after j reflections: L_j = r L_(j+1).
+        fig.line(F(path[j]), F(path[j + 1]), RED, 2.5)
+        mid = mul(add(path[j], path[j + 1]), 0.5)
+        label = f"~L~_{j}" + (" = ~L~_w" if j == len(path) - 2 else "")
+        fig.text(add(F(mid), (10, 4)), label, "start", 12, RED)
+    for j, p in enumerate(path[1:-1], 1):
+        fig.dot(F(p), INK, 3.5)
+        fig.text(add(F(p), (0, 18 if p[1] == 0 else -8)), "×~r~", size=12)
+    fig.dot(F(o), INK, 5)
+    fig.text(add(F(o), (-8, 4)), "eye", "end", 12)
+    fig.text((410, 270), f"~L~_0 = ~r~ ~L~_1 = … = ~r~^k ~L~_w:  ~r~ = {r_mirror}, "
+             f"~k~ = {k_bounces}, ~L~_0 = {r_mirror ** k_bounces:.4f} ~L~_w", size=13)
+    return fig.write(name)
+
+
 if __name__ == "__main__":
-    print("wrote docs/figures/" + reflection_figure("ch04-reflection.svg"))
+    made = [reflection_figure("ch04-reflection.svg"), mirrors_figure("ch04-mirrors.svg")]
+    print("wrote", ", ".join("docs/figures/" + m for m in made))
