@@ -223,25 +223,30 @@ def ball_figure(name):
 
 def penumbra_figure(name):
     """Side view: a light of width l at height H, an occluder's edge at height h, and the floor
-    shaded by the visible share of the light, computed point by point."""
+    shaded by the visible share of the light (linear across the penumbra: one gradient)."""
     ell, H, h, x_e = 1.2, 3.0, 1.0, 0.0
     fig = Figure(760, 410, "where the penumbra is: similar triangles")
     F = Frame2D((300, 330), 90)
-    # The floor, shaded by the share of the light segment each point sees past the edge.
+    # The floor, shaded by the share of the light segment each point sees past the edge. A
+    # light point a is hidden from floor point x when the line between them passes the
+    # occluder's height h left of the edge; the last visible one is a_edge(x), linear in x, so
+    # the share is linear across the penumbra and one gradient draws it exactly.
     x0, x1 = -3.0, 3.6
-    steps = 264
-    for k in range(steps):
-        x = x0 + (x1 - x0) * (k + 0.5) / steps
-        # A light point a is hidden when the line from (x, 0) to (a, H) passes the occluder's
-        # height h at some x' < x_e (the occluder is the half-plane left of its edge).
-        a_edge = x + (x_e - x) * H / h  # the light point seen exactly past the edge
-        lo, hi = -ell / 2, ell / 2
-        visible = (hi - max(lo, min(hi, a_edge))) / ell
-        level = int(255 - 200 * (1 - visible))
-        colour = f"#{level:02x}{level:02x}{min(255, level + 10):02x}"
-        xa = x0 + (x1 - x0) * k / steps
-        xb = x0 + (x1 - x0) * (k + 1.6) / steps  # overlap: no seams between strips
-        fig.rect(*F((xa, 0)), *F((xb, -0.25)), "none", colour, 0)
+
+    def share(x):
+        a_edge = x + (x_e - x) * H / h
+        return (ell / 2 - max(-ell / 2, min(ell / 2, a_edge))) / ell
+
+    def grey(v):
+        level = int(round(255 - 200 * (1 - v)))
+        return f"#{level:02x}{level:02x}{min(255, level + 10):02x}"
+
+    foot_dark = x_e + (x_e - ell / 2) * h / (H - h)  # sees none of the light left of here
+    foot_lit = x_e + (x_e + ell / 2) * h / (H - h)  # sees all of it right of here
+    assert abs(share(foot_dark)) < 1e-12 and abs(share(foot_lit) - 1.0) < 1e-12
+    fill = fig.linear_gradient("penumbra", F((foot_dark, 0))[0], F((foot_lit, 0))[0],
+                               [(0.0, grey(0.0)), (1.0, grey(1.0))])
+    fig.rect(*F((x0, 0)), *F((x1, -0.25)), "none", fill, 0)
     fig.line(F((x0, 0)), F((x1, 0)), DARK, 2)
     # The occluder (a plate ending at its edge) and the light.
     fig.rect(*F((x0, h + 0.06)), *F((x_e, h - 0.06)), DARK, "#777", 1)

@@ -76,6 +76,7 @@ class Figure:
         self.width, self.height, self.title = width, height, title
         self.body = []
         self.markers = set()
+        self.defs = []
 
     def add(self, element):
         self.body.append(element)
@@ -86,7 +87,7 @@ class Figure:
         defs = "".join(
             f'<marker id="arrow-{c[1:]}" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" '
             f'markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" '
-            f'fill="{c}"/></marker>' for c in sorted(self.markers))
+            f'fill="{c}"/></marker>' for c in sorted(self.markers)) + "".join(self.defs)
         text = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{self.width}" '
                 f'height="{self.height}" viewBox="0 0 {self.width} {self.height}" '
                 f'font-family="sans-serif" font-size="14">\n<title>{self.title}</title>\n'
@@ -96,6 +97,13 @@ class Figure:
         with open(os.path.join(HERE, name), "w") as f:
             f.write(text)
         return name
+
+    def linear_gradient(self, ident, x0, x1, stops):
+        """A horizontal gradient from page x0 to x1; stops are (offset 0..1, colour)."""
+        s = "".join(f'<stop offset="{o:.4f}" stop-color="{c}"/>' for o, c in stops)
+        self.defs.append(f'<linearGradient id="{ident}" gradientUnits="userSpaceOnUse" '
+                         f'x1="{x0:.2f}" y1="0" x2="{x1:.2f}" y2="0">{s}</linearGradient>')
+        return f"url(#{ident})"
 
     # Primitives, all in page units.
 
