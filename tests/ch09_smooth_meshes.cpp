@@ -360,7 +360,7 @@ SCENARIO("gr.smooth_mesh checks its options", "[ch09]") {
     }
 }
 
-// [stability]
+// [ch09-stability]
 SCENARIO("degenerate triangles and zero-length or cancelling normals give no NaN",
          "[ch09][stability]") {
     GIVEN("an OBJ with a zero-area triangle, a zero-length vn and a vn with no direction") {
@@ -434,4 +434,4 @@ SCENARIO("degenerate triangles and zero-length or cancelling normals give no NaN
         }
     }
 }
-// [stability]
+// [ch09-stability]
