@@ -252,8 +252,9 @@ SCENARIO("shadow rays from the curved surface are not blocked at a low-poly sphe
         WHEN("shadow rays start on the flat facet") {
             const double share = blockedShare(rb::SmoothNormals::Terminator::Never);
             THEN("the sphere shadows itself at lit points: the stepped terminator") {
-                // Source: a lit point within one facet of the terminator sees the light below
-                // its facet's plane or behind the next facet.
+                // Source: a lit point within one facet of the terminator can see the light
+                // above its shading normal's horizon but below its facet's plane; its shadow
+                // ray then runs through the inside and meets the next facet from within.
                 CAPTURE(share);
                 REQUIRE(share > 0.03);
             }
