@@ -24,11 +24,11 @@
 #include <string>
 #include <vector>
 
+#include "ch09_sphere_error.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
 #include "smooth_mesh/smooth_mesh.h"
 #include "smooth_mesh/vertex_normals.h"
-#include "ch09_sphere_error.h"
 #include "test_helpers.h"
 
 using Catch::Contains;
@@ -107,14 +107,17 @@ SCENARIO("the interpolated normal is exact at the corners and linear in between"
 
 // [cube-corner]
 SCENARIO("angle weighting makes a vertex normal independent of the triangulation", "[ch09]") {
-    GIVEN("the unit cube as 12 triangles, split so that corner (1,0,0) touches one face's "
-          "two triangles and one triangle of each other face") {
-        const rb::ObjData data = rb::loadObj(std::string(RB_SOURCE_DIR) + "/scenes/assets/cube.obj");
+    GIVEN(
+        "the unit cube as 12 triangles, split so that corner (1,0,0) touches one face's "
+        "two triangles and one triangle of each other face") {
+        const rb::ObjData data =
+            rb::loadObj(std::string(RB_SOURCE_DIR) + "/scenes/assets/cube.obj");
         auto cornersAt = [&](const std::vector<std::array<Vec3, 3>>& normals, const Vec3& vertex) {
             std::vector<Vec3> at;
             for (size_t f = 0; f < data.triangles.size(); ++f)
                 for (int k = 0; k < 3; ++k)
-                    if (data.positions[data.triangles[f][k].v] == vertex) at.push_back(normals[f][k]);
+                    if (data.positions[data.triangles[f][k].v] == vertex)
+                        at.push_back(normals[f][k]);
             return at;
         };
         WHEN("vertex normals are computed with a crease wider than the cube's 90°") {
@@ -126,6 +129,24 @@ SCENARIO("angle weighting makes a vertex normal independent of the triangulation
                 REQUIRE(at.size() == 4);
                 for (const Vec3& n : at)
                     REQUIRE(glm::length(n - glm::normalize(Vec3(1, -1, -1))) < 1e-15);
+            }
+        }
+        WHEN("every position is written twice and each face uses its own copies") {
+            rb::ObjData split = data;
+            const int n = static_cast<int>(data.positions.size());
+            split.positions.insert(split.positions.end(), data.positions.begin(),
+                                   data.positions.end());
+            for (size_t f = 0; f < split.triangles.size(); f += 2)
+                for (auto& corner : split.triangles[f]) corner.v += n;
+            const auto normals = rb::cornerNormals(split, rb::NormalSource::Computed, 100.0);
+            THEN("the copies count as one vertex: the corner normal is the same") {
+                // Source: as above; a file that repeats positions (seams, texture splits)
+                // describes the same surface.
+                for (size_t f = 0; f < split.triangles.size(); ++f)
+                    for (int k = 0; k < 3; ++k)
+                        if (split.positions[split.triangles[f][k].v] == Vec3(1, 0, 0))
+                            REQUIRE(glm::length(normals[f][k] - glm::normalize(Vec3(1, -1, -1))) <
+                                    1e-15);
             }
         }
         WHEN("vertex normals are computed with the default crease (60°)") {
@@ -211,8 +232,9 @@ SCENARIO("a shading normal never sends a mirror or refracted ray through the geo
             if (glm::dot(s.reflected, ng) <= 0.0) ++throughGlass;
             if (!s.totalInternalReflection && glm::dot(s.transmitted, ng) >= 0.0) ++throughGlass;
         }
-        THEN("without adaptation some mirror rays go below; with it none do, and normals whose "
-             "mirror ray is already above are left alone") {
+        THEN(
+            "without adaptation some mirror rays go below; with it none do, and normals whose "
+            "mirror ray is already above are left alone") {
             CAPTURE(belowUnadapted);
             REQUIRE(belowUnadapted > trials / 100);
             REQUIRE(belowAdapted == 0);
@@ -275,8 +297,9 @@ SCENARIO("shadow rays from the curved surface are not blocked at a low-poly sphe
             const std::array<double, 3> b{1.0 / 3, 1.0 / 3, 1.0 / 3};
             const Vec3 p = (v[0] + v[1] + v[2]) / 3.0;
             const Vec3 lifted = p + rb::terminatorOffset(p, b, v, v);
-            THEN("it lies much closer to the sphere than the flat point, and on the corner the "
-                 "offset vanishes") {
+            THEN(
+                "it lies much closer to the sphere than the flat point, and on the corner the "
+                "offset vanishes") {
                 // Source: Phong tessellation follows a sphere more closely than the flat
                 // triangle: here the flat centre lies 0.266 inside, the lifted one 0.072 outside
                 // (this triangle spans nearly an octant; the share shrinks with the triangle).
@@ -308,12 +331,13 @@ SCENARIO("with the chapter switched off a smooth mesh renders as the faceted mes
                    "gr.render(root, 'out.png', 48, 48, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 40,"
                    " {0.1, 0.1, 0.1}, {gr.light({-5, 2, 1}, {1, 1, 1}, {1, 0, 0})})\n";
         };
-        const rb::Image faceted =
-            rbtest::renderSmall(*rbtest::worldFromLua(scene("gr.mesh"), rbtest::chapters(9)), 48, 48);
+        const rb::Image faceted = rbtest::renderSmall(
+            *rbtest::worldFromLua(scene("gr.mesh"), rbtest::chapters(9)), 48, 48);
         WHEN("the smooth mesh renders with --features=all,-smooth_mesh") {
-            const rb::Image off = rbtest::renderSmall(
-                *rbtest::worldFromLua(scene("gr.smooth_mesh"), rbtest::chapters(9, "all,-smooth_mesh")),
-                48, 48);
+            const rb::Image off =
+                rbtest::renderSmall(*rbtest::worldFromLua(scene("gr.smooth_mesh"),
+                                                          rbtest::chapters(9, "all,-smooth_mesh")),
+                                    48, 48);
             THEN("the image is bit-identical to the faceted one") {
                 REQUIRE(rbtest::bitIdentical(off, faceted));
             }
@@ -353,10 +377,26 @@ SCENARIO("gr.smooth_mesh checks its options", "[ch09]") {
                          Contains("argument 3 must be a table"));
         }
     }
+    GIVEN("a mesh written as Lua tables, as gr.mesh's table form") {
+        const std::string lua =
+            "root = gr.node('root')\n"
+            "root:add_child(gr.smooth_mesh('t', {{0,0,0}, {1,0,0}, {0,1,0}, {1,1,0.5}},"
+            " {{0,1,2}, {1,3,2}}, {crease = 80}))\n" +
+            rbtest::renderLine();
+        THEN("it loads as a smooth mesh, and a bad index names the call") {
+            const auto renders = rbtest::loadSceneText(lua, rbtest::chapters(9));
+            REQUIRE(dynamic_cast<const rb::SmoothMesh*>(renders.at(0).instances.at(0).shape));
+            std::string bad = lua;
+            bad.replace(bad.find("{1,3,2}"), 7, "{1,4,2}");
+            REQUIRE_THAT(rbtest::loadError(bad, rbtest::chapters(9)),
+                         Contains("gr.smooth_mesh: face 2"));
+        }
+    }
     GIVEN("a good table") {
         THEN("it loads") {
-            REQUIRE(rbtest::loadError(call(", {normals = 'computed', crease = 30, terminator = false}"),
-                                      rbtest::chapters(9)) == "");
+            REQUIRE(
+                rbtest::loadError(call(", {normals = 'computed', crease = 30, terminator = false}"),
+                                  rbtest::chapters(9)) == "");
         }
     }
 }
@@ -375,8 +415,9 @@ SCENARIO("degenerate triangles and zero-length or cancelling normals give no NaN
         const rb::ObjData data = rb::loadObj(dir.write("bad.obj", obj));
         WHEN("corner normals are taken from the file and computed where it has none") {
             const auto normals = rb::cornerNormals(data, rb::NormalSource::File);
-            THEN("every corner of a real face has a finite unit normal; the degenerate face's "
-                 "are zero") {
+            THEN(
+                "every corner of a real face has a finite unit normal; the degenerate face's "
+                "are zero") {
                 for (size_t f = 0; f < normals.size(); ++f)
                     for (const Vec3& n : normals[f]) {
                         REQUIRE(rb::isFinite(n));
@@ -402,7 +443,9 @@ SCENARIO("degenerate triangles and zero-length or cancelling normals give no NaN
                 REQUIRE(glm::length(hit.ns) == Approx(1.0).margin(1e-12));
                 REQUIRE(rb::isFinite(hit.shadowOffset));
             }
-            THEN("the normals were finite unit vectors at every hit") { REQUIRE(hits > 500); }
+            THEN("the normals were finite unit vectors at every hit") {
+                REQUIRE(hits > 500);
+            }
         }
     }
     GIVEN("a triangle whose corner normals cancel at its middle") {
@@ -423,7 +466,8 @@ SCENARIO("degenerate triangles and zero-length or cancelling normals give no NaN
                 REQUIRE(points.size() == 500);
                 for (const auto& point : points) {
                     rb::Hit hit = point.hit;
-                    rb::SmoothNormals(rb::SmoothNormals::Terminator::Always).apply(point.probe, hit);
+                    rb::SmoothNormals(rb::SmoothNormals::Terminator::Always)
+                        .apply(point.probe, hit);
                     REQUIRE(glm::length(hit.ns) == Approx(1.0).margin(1e-12));
                     // A view this grazing still gets a mirror ray above the surface.
                     const Vec3 d = glm::normalize(point.probe.d);

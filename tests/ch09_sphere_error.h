@@ -7,9 +7,8 @@
 #include <cmath>
 #include <map>
 #include <memory>
-#include <vector>
-
 #include <random>
+#include <vector>
 
 #include "phong/phong.h"
 #include "smooth_mesh/smooth_mesh.h"
@@ -42,13 +41,14 @@ class SphereRng {
 /// sphere normal as `vn`.
 inline rb::ObjData icosphere(int level, bool exactNormals) {
     const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    std::vector<Vec3> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<Vec3> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                           {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                           {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
     for (Vec3& v : p) v = glm::normalize(v);
     std::vector<std::array<int, 3>> f = {
-        {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-        {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (int l = 0; l < level; ++l) {
         std::map<std::pair<int, int>, int> middle;
         auto mid = [&](int a, int b) {
@@ -77,14 +77,15 @@ inline rb::ObjData icosphere(int level, bool exactNormals) {
 
 /// A smooth mesh built from OBJ data, as gr.smooth_mesh builds it.
 inline std::shared_ptr<rb::SmoothMesh> smoothMesh(const rb::ObjData& data,
-                                           const rb::SmoothMeshOptions& options = {}) {
+                                                  const rb::SmoothMeshOptions& options = {}) {
     return std::make_shared<rb::SmoothMesh>(std::make_shared<rb::Mesh>(data, "test.obj"), data,
                                             options);
 }
 
 /// The hit of `ray` on an instance, with chapter 9's shading normal applied when `smooth`.
-inline bool shade(const rb::Instance& instance, const rb::Ray& ray, rb::Hit& hit, bool smooth = true,
-           rb::SmoothNormals::Terminator terminator = rb::SmoothNormals::Terminator::PerMesh) {
+inline bool shade(
+    const rb::Instance& instance, const rb::Ray& ray, rb::Hit& hit, bool smooth = true,
+    rb::SmoothNormals::Terminator terminator = rb::SmoothNormals::Terminator::PerMesh) {
     rb::ObjectHit oh;
     if (!instance.intersect(ray, std::numeric_limits<double>::infinity(), oh)) return false;
     hit = instance.toWorld(ray, oh);
@@ -113,7 +114,8 @@ inline double sphereNormalError(int level, bool exactNormals, bool smooth, int r
         // A ray from a random direction at distance 4, aimed at a random point of the disk of
         // radius 0.9 facing it.
         const Vec3 w = rng.unitVector();
-        const Vec3 u = glm::normalize(glm::cross(w, std::abs(w.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+        const Vec3 u =
+            glm::normalize(glm::cross(w, std::abs(w.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
         const Vec3 v = glm::cross(w, u);
         const double r = 0.9 * std::sqrt(rng.uniform(0.0, 1.0)), phi = rng.uniform(0.0, 2.0 * M_PI);
         const Vec3 origin = 4.0 * w;

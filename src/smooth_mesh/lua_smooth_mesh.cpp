@@ -2,6 +2,7 @@
 //
 //   gr.smooth_mesh(name, 'file.obj')                     the file's vn, computed where missing
 //   gr.smooth_mesh(name, 'file.obj', {normals = 'computed', crease = 30, terminator = false})
+//   gr.smooth_mesh(name, vertices, faces [, {crease =, terminator =}])   gr.mesh's table form
 //   gr.obj_mesh(name, 'file.obj'), gr.obj_mesh('file.obj')   seed 002: smooth, the defaults
 //
 // normals: 'file' (default) or 'computed' (ignore the file's vn); crease: degrees, 0 to 180,
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bvh/lua_mesh.h"
 #include "core/error.h"
 #include "core/lua_scene.h"
 #include "smooth_mesh/smooth_mesh.h"
@@ -24,9 +26,9 @@ namespace {
 SmoothMeshOptions readOptions(lua_State* L, int index) {
     SmoothMeshOptions options;
     if (lua_type(L, index) != LUA_TTABLE)
-        throw InputError(
-            "gr.smooth_mesh: argument 3 must be a table {normals = 'file' | 'computed', crease "
-            "= degrees, terminator = true | false}");
+        throw InputError("gr.smooth_mesh: argument " + std::to_string(index) +
+                         " must be a table {normals = 'file' | 'computed', crease = degrees, "
+                         "terminator = true | false}");
     lua_pushnil(L);
     while (lua_next(L, index) != 0) {
         const std::string key = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : "";
@@ -95,13 +97,27 @@ std::shared_ptr<const Shape> smoothMeshFromFile(lua_State* L, const std::string&
 
 // [lua-smooth-mesh]
 int grSmoothMesh(lua_State* L) {
-    checkArgCount(L, "gr.smooth_mesh", 2, 3,
-                  "(name, 'file.obj' [, {normals =, crease =, terminator =}])");
+    checkArgCount(L, "gr.smooth_mesh", 2, 4,
+                  "(name, 'file.obj' [, options]) or (name, vertices, faces [, options])");
     auto node = std::make_shared<SceneNode>();
     node->name = checkString(L, 1, "gr.smooth_mesh", "name");
-    const std::string file = checkString(L, 2, "gr.smooth_mesh", "file");
-    const SmoothMeshOptions options = lua_gettop(L) == 3 ? readOptions(L, 3) : SmoothMeshOptions{};
-    node->shape = smoothMeshFromFile(L, file, options, "gr.smooth_mesh");
+    if (lua_type(L, 2) == LUA_TTABLE) {
+        // gr.mesh's table form: vertices and 0-based polygons (a mesh a scene builds itself).
+        if (lua_type(L, 3) != LUA_TTABLE)
+            throw InputError("gr.smooth_mesh: argument 3 (faces) must be a table of index lists");
+        const SmoothMeshOptions options =
+            lua_gettop(L) == 4 ? readOptions(L, 4) : SmoothMeshOptions{};
+        const ObjData data = objFromLuaTables(L, "gr.smooth_mesh");
+        auto mesh = std::make_shared<Mesh>(data, sceneBuilder(L).scenePath);
+        node->shape = std::make_shared<SmoothMesh>(mesh, data, options);
+    } else {
+        if (lua_gettop(L) == 4)
+            throw InputError("gr.smooth_mesh: with a file, the options are argument 3");
+        const std::string file = checkString(L, 2, "gr.smooth_mesh", "file");
+        const SmoothMeshOptions options =
+            lua_gettop(L) == 3 ? readOptions(L, 3) : SmoothMeshOptions{};
+        node->shape = smoothMeshFromFile(L, file, options, "gr.smooth_mesh");
+    }
     pushNode(L, node);
     return 1;
 }

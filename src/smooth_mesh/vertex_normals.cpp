@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace rb {
 
@@ -68,12 +69,23 @@ std::vector<std::array<Vec3, 3>> cornerNormals(const ObjData& data, NormalSource
         for (int k = 0; k < 3; ++k)
             angles[f][k] = cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
     }
-    // The faces around each vertex (by position index), with their angles there.
+    // One vertex per distinct position: files often repeat a position (a seam, a texture
+    // split), and its faces should still be averaged together.
+    std::vector<size_t> vertexOf(data.positions.size());
+    {
+        std::map<std::array<double, 3>, size_t> first;
+        for (size_t i = 0; i < data.positions.size(); ++i) {
+            const Vec3& p = data.positions[i];
+            vertexOf[i] = first.emplace(std::array<double, 3>{p.x, p.y, p.z}, i).first->second;
+        }
+    }
+    // The faces around each vertex, with their angles there.
     std::vector<std::vector<FaceAtVertex>> around(data.positions.size());
     for (size_t f = 0; f < count; ++f)
         for (int k = 0; k < 3; ++k)
             if (faceN[f] != Vec3(0.0))
-                around[data.triangles[f][k].v].push_back(FaceAtVertex{faceN[f], angles[f][k]});
+                around[vertexOf[data.triangles[f][k].v]].push_back(
+                    FaceAtVertex{faceN[f], angles[f][k]});
     const double cosCrease = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0, 180.0)));
     std::vector<std::array<Vec3, 3>> normals(count);
     for (size_t f = 0; f < count; ++f) {
@@ -86,7 +98,8 @@ std::vector<std::array<Vec3, 3>> cornerNormals(const ObjData& data, NormalSource
                 normals[f][k] = glm::dot(n, ng) < 0.0 ? -n : n;
                 continue;
             }
-            normals[f][k] = angleWeightedNormal(around[data.triangles[f][k].v], ng, cosCrease);
+            normals[f][k] =
+                angleWeightedNormal(around[vertexOf[data.triangles[f][k].v]], ng, cosCrease);
         }
     }
     return normals;

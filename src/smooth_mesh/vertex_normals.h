@@ -43,8 +43,9 @@ Vec3 angleWeightedNormal(const std::vector<FaceAtVertex>& faces, const Vec3& ng,
 /// One unit normal per triangle corner (triangles in file order), each on the side of its
 /// face's winding normal. A corner takes the file's `vn` when `source` is File and the `vn`
 /// has a finite, non-zero length; otherwise the angle-weighted average of the normals of the
-/// faces around its vertex that meet its own face at no more than `creaseDegrees`. A corner
-/// of a degenerate face gets zero (the mesh drops such faces; they are never hit).
+/// faces around its vertex (vertices at the same position count as one) that meet its own face at
+/// no more than `creaseDegrees`. A corner of a degenerate face gets zero (the mesh drops such
+/// faces; they are never hit).
 std::vector<std::array<Vec3, 3>> cornerNormals(const ObjData& data, NormalSource source,
                                                double creaseDegrees = kDefaultCreaseDegrees);
 

@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
     std::vector<Row> rows;
     for (int level = 0; level <= 5; ++level) {
         const int triangles = 20 << (2 * level);
-        rows.push_back({triangles, degrees * rbtest::sphereNormalError(level, false, false, rays, 1),
+        rows.push_back({triangles,
+                        degrees * rbtest::sphereNormalError(level, false, false, rays, 1),
                         degrees * rbtest::sphereNormalError(level, true, true, rays, 1),
                         degrees * rbtest::sphereNormalError(level, false, true, rays, 1)});
     }
@@ -60,9 +61,9 @@ int main(int argc, char** argv) {
                   "%.2f (drifting towards 1 on this irregular mesh): at %d triangles they are "
                   "%.4f° and %.4f° off, %.0f and %.0f times closer than flat.\n",
                   a.flat, a.triangles, std::log2(rows[4].flat / last.flat),
-                  std::log2(rows[4].exact / last.exact), std::log2(rows[4].computed / last.computed),
-                  last.triangles, last.exact, last.computed, last.flat / last.exact,
-                  last.flat / last.computed);
+                  std::log2(rows[4].exact / last.exact),
+                  std::log2(rows[4].computed / last.computed), last.triangles, last.exact,
+                  last.computed, last.flat / last.exact, last.flat / last.computed);
     finding << text;
     std::fputs(text, stdout);
     return 0;
