@@ -283,9 +283,9 @@ SCENARIO("shadow rays from the curved surface are not blocked at a low-poly sphe
         }
         WHEN("shadow rays start at the Phong-tessellated point above it") {
             const double share = blockedShare(rb::SmoothNormals::Terminator::Always);
-            THEN("at most a tenth as many are blocked") {
+            THEN("at most a fiftieth as many are blocked (measured: 0.025% against 9.5%)") {
                 CAPTURE(share, blockedShare(rb::SmoothNormals::Terminator::Never));
-                REQUIRE(share * 10.0 < blockedShare(rb::SmoothNormals::Terminator::Never));
+                REQUIRE(share * 50.0 < blockedShare(rb::SmoothNormals::Terminator::Never));
             }
         }
     }
