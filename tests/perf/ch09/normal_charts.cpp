@@ -3,7 +3,12 @@
 // for flat facets, interpolated exact `vn` and interpolated angle-weighted computed normals,
 // and the observed order of convergence between neighbouring levels (h halves per level).
 //
-// usage: ch09_normal_charts OUT_DIR   writes OUT_DIR/normals.dat and OUT_DIR/finding.txt
+// usage: ch09_normal_charts normals OUT_DIR     writes OUT_DIR/normals.dat and finding.txt
+//        ch09_normal_charts icospheres OUT_DIR  writes OUT_DIR/icosphere_L0.obj ... L5 (no vn)
+//        ch09_normal_charts rmse A.png B.png    prints the RMSE of two PNGs (channels in [0, 1])
+//        ch09_normal_charts rmse-inside A.png B.png   the same over the pixels that are not black
+//                                              in either image (the object's inside, where only
+//                                              shading differs, not the outline)
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,13 +16,55 @@
 #include <vector>
 
 #include "ch09_sphere_error.h"
+#include "image_compare.h"
 
-int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: ch09_normal_charts OUT_DIR\n");
+namespace {
+
+/// Write the icospheres of levels 0 to 5 as OBJ files without normals.
+int writeIcospheres(const std::string& out) {
+    for (int level = 0; level <= 5; ++level) {
+        const rb::ObjData data = rbtest::icosphere(level, false);
+        std::ofstream obj(out + "/icosphere_L" + std::to_string(level) + ".obj");
+        obj << "# unit icosphere, level " << level << ": " << data.triangles.size()
+            << " triangles (tests/perf/ch09)\n";
+        char line[120];
+        for (const rb::Vec3& p : data.positions) {
+            std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
+            obj << line;
+        }
+        for (const auto& t : data.triangles)
+            obj << "f " << t[0].v + 1 << ' ' << t[1].v + 1 << ' ' << t[2].v + 1 << '\n';
+        if (!obj) return 1;
+    }
+    return 0;
+}
+
+/// The RMSE of two PNG files of the same size; with `inside`, only over the pixels that are
+/// not black in either image.
+int printRmse(const char* a, const char* b, bool inside) {
+    const auto imageA = rb::golden::load_png(a);
+    const auto imageB = rb::golden::load_png(b);
+    if (imageA.w != imageB.w || imageA.h != imageB.h) {
+        std::fprintf(stderr, "ch09_normal_charts: the images differ in size\n");
         return 2;
     }
-    const std::string out = argv[1];
+    double sum = 0.0;
+    size_t count = 0;
+    for (size_t i = 0; i + 2 < imageA.rgb.size(); i += 3) {
+        auto black = [&](const std::vector<float>& rgb) {
+            return rgb[i] == 0 && rgb[i + 1] == 0 && rgb[i + 2] == 0;
+        };
+        if (inside && (black(imageA.rgb) || black(imageB.rgb))) continue;
+        for (size_t c = i; c < i + 3; ++c)
+            sum += double(imageA.rgb[c] - imageB.rgb[c]) * (imageA.rgb[c] - imageB.rgb[c]);
+        count += 3;
+    }
+    std::printf("%.6f\n", count ? std::sqrt(sum / count) : 0.0);
+    return 0;
+}
+
+/// The normal-error table and its finding.
+int normalsChart(const std::string& out) {
     const int rays = 20000;
     const double degrees = 180.0 / M_PI;
     struct Row {
@@ -67,4 +114,18 @@ int main(int argc, char** argv) {
     finding << text;
     std::fputs(text, stdout);
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "normals" && argc == 3) return normalsChart(argv[2]);
+    if (mode == "icospheres" && argc == 3) return writeIcospheres(argv[2]);
+    if (mode == "rmse" && argc == 4) return printRmse(argv[2], argv[3], false);
+    if (mode == "rmse-inside" && argc == 4) return printRmse(argv[2], argv[3], true);
+    std::fprintf(stderr,
+                 "usage: ch09_normal_charts normals OUT_DIR | icospheres OUT_DIR | rmse A.png "
+                 "B.png | rmse-inside A.png B.png\n");
+    return 2;
 }
