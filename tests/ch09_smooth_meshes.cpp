@@ -392,6 +392,17 @@ SCENARIO("gr.smooth_mesh checks its options", "[ch09]") {
                          Contains("gr.smooth_mesh: face 2"));
         }
     }
+    GIVEN("--terminator with a value it does not know") {
+        const std::string lua = call("");
+        THEN("building the world says what it expected") {
+            try {
+                rbtest::worldFromLua(lua, rbtest::chapters(9), {{"terminator", "smooth"}});
+                FAIL("no error");
+            } catch (const rb::InputError& e) {
+                REQUIRE_THAT(e.what(), Contains("--terminator: expected 'offset' or 'none'"));
+            }
+        }
+    }
     GIVEN("a good table") {
         THEN("it loads") {
             REQUIRE(
