@@ -93,6 +93,7 @@ constexpr LaterCall kLaterCalls[] = {
     {"aa_threshold", 8, "adaptive_aa"},
     {"aa_depth", 8, "adaptive_aa"},
     {"smooth_mesh", 9, "smooth_mesh"},
+    {"terminator", 9, "smooth_mesh"},
     {"texture", 10, "texture"},
     {"bump", 11, "bump"},
     {"tone_map", 12, "tone_map"},
