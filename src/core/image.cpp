@@ -125,8 +125,8 @@ void writeImageFile(const std::string& path, const std::string& format,
 void writePng(const Image& image, const std::string& path) {
     const std::vector<unsigned char> bytes = toBytes(image);
     writeImageFile(path, "PNG", [&](ImageByteSink sink, void* context) {
-        return stbi_write_png_to_func(sink, context, image.width(), image.height(), 3,
-                                      bytes.data(), image.width() * 3) != 0;
+        return stbi_write_png_to_func(sink, context, image.width(), image.height(), 3, bytes.data(),
+                                      image.width() * 3) != 0;
     });
 }
 // [write-png]

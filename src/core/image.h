@@ -63,8 +63,7 @@ using ImageEncoder = std::function<bool(ImageByteSink sink, void* context)>;
 /// then renamed to `path`. Throws InputError naming the path and `format` ("PNG") if it
 /// cannot be written (a short write, a full disk, a missing folder), and leaves no partial
 /// file behind.
-void writeImageFile(const std::string& path, const std::string& format,
-                    const ImageEncoder& encode);
+void writeImageFile(const std::string& path, const std::string& format, const ImageEncoder& encode);
 
 /// Write a PNG atomically: to a temporary file beside `path`, then rename. Throws InputError
 /// naming the path if it cannot be written, and leaves no partial file behind.

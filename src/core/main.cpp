@@ -128,7 +128,8 @@ int run(int argc, char** argv) {
             std::string owner;
             for (const Feature& f : features.built())
                 for (const OutputFormat& o : f.outputFormats)
-                    if (&o == off) owner = std::string(f.name) + ", chapter " + std::to_string(f.chapter);
+                    if (&o == off)
+                        owner = std::string(f.name) + ", chapter " + std::to_string(f.chapter);
             throw InputError("--output " + output + ": writing " + (off ? off->description : "it") +
                              " needs " + owner + ", which --features switched off");
         }

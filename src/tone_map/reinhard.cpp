@@ -59,7 +59,6 @@ std::vector<double> gaussianBlur(const std::vector<double>& L, int width, int he
         std::vector<double> out(in.size());
         const int length = alongRows ? width : height;
         const int lines = alongRows ? height : width;
-#pragma omp parallel for schedule(static)
         for (int line = 0; line < lines; ++line)
             for (int i = 0; i < length; ++i) {
                 double sum = 0.0, total = 0.0;
