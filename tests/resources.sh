@@ -132,8 +132,8 @@ write_scene "$work" small.obj 256x256
 rc=$?
 expect_refusal full-disk "scene.lua:5: out.png: cannot write the PNG file (File too large)" ""
 
-# Chapter 12's Radiance HDR output goes through the same atomic writer (the film is about 90
-# KiB as RGBE).
+# Chapter 12's Radiance HDR output goes through the same atomic writer (the RGBE film is far
+# over 1 KiB too).
 if "$RT" --list-features | grep -q tone_map; then
     (ulimit -f 1 && run_rt "$work" --output out.hdr scene.lua && exit "$rc")
     rc=$?
