@@ -244,8 +244,8 @@ SCENARIO("a message tells a student to build a chapter only when that chapter is
         }
     }
     GIVEN("a chapter-3 build and a scene calling gr.cone (chapter 15, not written)") {
-        // Chapters are written in parallel branches, so the example is a chapter well past
-        // every branch's newest (chapter 12 when this was written).
+        // Chapters land in parallel branches, so the example is a chapter well past every
+        // branch's newest (chapter 10 was the example until chapters 9-12 were written).
         REQUIRE(rb::newestChapter() < 15);
         const std::string message = rbtest::loadError("gr.cone('cone')\n");
         THEN("the error names chapter 15 as planned and suggests no make target") {
