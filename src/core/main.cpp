@@ -150,6 +150,16 @@ int run(int argc, char** argv) {
         const Scene& scene = world->scene;
         const Pipeline& pipeline = world->pipeline;
         const double buildSeconds = since(t0);
+        // A post-process (chapter 12's tone map) needs working memory beside the film.
+        if (pipeline.postProcess) {
+            const RenderJob& built = world->source.job;
+            cl.memory.require(
+                saturatingProduct(static_cast<std::uint64_t>(built.width) * built.height,
+                                  kImageBytesPerPixel + pipeline.postProcess->bytesPerPixel()),
+                built.where,
+                "the image of " + std::to_string(built.width) + "x" + std::to_string(built.height) +
+                    " pixels and its tone map");
+        }
 
         const PinholeCamera camera(world->source.job.camera, world->source.job.width,
                                    world->source.job.height);

@@ -2,6 +2,8 @@
 /// The image post-process: the extension point chapter 12's tone mapping plugs into.
 #pragma once
 
+#include <cstdint>
+
 #include "core/image.h"
 
 namespace rb {
@@ -14,6 +16,9 @@ class PostProcess {
     virtual ~PostProcess() = default;
     /// Replace the film's pixels by their display values in [0, 1].
     virtual void apply(Image& film) const = 0;
+    /// The working memory apply() allocates per pixel, beyond the film itself: the core checks
+    /// it against the memory budget (--max-memory) before the render starts.
+    virtual std::uint64_t bytesPerPixel() const = 0;
 };
 
 }  // namespace rb

@@ -105,9 +105,10 @@ void toneMap(Image& film, const ToneMapSettings& settings) {
     std::vector<float>& rgb = film.data();
     const std::size_t n = rgb.size() / 3;
     const double gain = std::exp2(settings.exposure);
-    std::vector<double> Lw(n);
-    std::vector<double> ratio(n, gain);  // display value / film value, per pixel
+    // Without an operator every pixel is scaled by the exposure alone.
+    std::vector<double> ratio;  // display value / film value, per pixel
     if (settings.op != ToneOperator::None) {
+        std::vector<double> Lw(n);
         // Step 1: the world luminance of each pixel, and the image's key.
         for (std::size_t p = 0; p < n; ++p)
             Lw[p] = luminance({usable(rgb[3 * p]), usable(rgb[3 * p + 1]), usable(rgb[3 * p + 2])});
@@ -133,17 +134,31 @@ void toneMap(Image& film, const ToneMapSettings& settings) {
             Ld = reinhardLocal(L, film.width(), film.height(), local);
         }
         // Step 4: colours keep their ratios: each channel is scaled by L_d / L_w.
+        ratio.resize(n);
         for (std::size_t p = 0; p < n; ++p) ratio[p] = Lw[p] > 0.0 ? Ld[p] / Lw[p] : 0.0;
     }
     // Step 5: clamp to what a display shows, then encode.
     for (std::size_t p = 0; p < n; ++p)
         for (int c = 0; c < 3; ++c) {
-            double v = std::clamp(usable(rgb[3 * p + c]) * ratio[p], 0.0, 1.0);
+            const double scale = ratio.empty() ? gain : ratio[p];
+            double v = std::clamp(usable(rgb[3 * p + c]) * scale, 0.0, 1.0);
             if (settings.srgb) v = srgbEncode(v);
             rgb[3 * p + c] = static_cast<float>(v);
         }
 }
 // [tone-map]
+
+std::uint64_t toneMapBytesPerPixel(const ToneMapSettings& settings) {
+    switch (settings.op) {
+        case ToneOperator::None:
+            return 0;
+        case ToneOperator::Global:
+            return 4 * sizeof(double);
+        case ToneOperator::Local:
+            break;
+    }
+    return 9 * sizeof(double) + 1;
+}
 
 // [install-tone-map]
 void installToneMap(Pipeline& pipeline, Scene&, const RenderContext& context) {

@@ -4,6 +4,7 @@
 /// as an image post-process after the render; Radiance .hdr output keeps the film as it is.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "core/feature.h"
@@ -48,6 +49,12 @@ ToneMapSettings toneMapSettings(const RenderContext& context);
 /// channels count as 0.
 void toneMap(Image& film, const ToneMapSettings& settings);
 
+/// The bytes per pixel toneMap allocates besides the film: nothing without an operator; the
+/// luminances, scaled luminances, display luminances and ratios (4 doubles) for the global
+/// operator; and for the local one also its blurs (centre, surround, adaptation and the blur's
+/// intermediate and result: 5 doubles) and a flag per pixel.
+std::uint64_t toneMapBytesPerPixel(const ToneMapSettings& settings);
+
 /// The post-process chapter 12 installs.
 class ToneMapper final : public PostProcess {
   public:
@@ -55,6 +62,8 @@ class ToneMapper final : public PostProcess {
     explicit ToneMapper(const ToneMapSettings& settings) : settings_(settings) {}
     /// Tone map the film in place.
     void apply(Image& film) const override { toneMap(film, settings_); }
+    /// The buffers toneMap allocates per pixel for these settings.
+    std::uint64_t bytesPerPixel() const override { return toneMapBytesPerPixel(settings_); }
     /// The settings in use.
     const ToneMapSettings& settings() const { return settings_; }
 
