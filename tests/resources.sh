@@ -139,6 +139,10 @@ if "$RT" --list-features | grep -q tone_map; then
     rc=$?
     expect_refusal full-disk-hdr \
         "scene.lua:5: out.hdr: cannot write the Radiance HDR file (File too large)" ""
+    # The local tone map's buffers (73 B per pixel) count against the budget before the render:
+    # 2000 x 2000 pixels fit in 200M as a plain image (96 MB) but not with them (388 MB).
+    run_rt "$work" --max-memory 200M --size 2000x2000 --tone-map=local scene.lua
+    expect_refusal tone-map-memory "2000x2000 pixels and its tone map needs about" 100000
 fi
 
 # A real full disk, where the machine allows it: a 16 KiB tmpfs, filled to within 1 KiB and
