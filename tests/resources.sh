@@ -55,7 +55,8 @@ expect_refusal() {
     if [ -n "$maxPeak" ] && { [ -z "$peak" ] || [ "$peak" -gt "$maxPeak" ]; }; then
         problems+=" peak memory ${peak:-unknown} KiB, expected at most $maxPeak KiB;"
     fi
-    leftovers=$(find "$work" -maxdepth 1 \( -name '*.png' -o -name '*.tmp*' \) | tr '\n' ' ')
+    leftovers=$(find "$work" -maxdepth 1 \( -name '*.png' -o -name '*.hdr' -o -name '*.tmp*' \) |
+        tr '\n' ' ')
     [ -z "$leftovers" ] || problems+=" left behind: $leftovers;"
     if [ -n "$problems" ]; then fail "$name" "${problems%;}"; else ok "$name"; fi
 }
@@ -130,6 +131,19 @@ write_scene "$work" small.obj 256x256
 (ulimit -f 1 && run_rt "$work" scene.lua && exit "$rc")
 rc=$?
 expect_refusal full-disk "scene.lua:5: out.png: cannot write the PNG file (File too large)" ""
+
+# Chapter 12's Radiance HDR output goes through the same atomic writer (the RGBE film is far
+# over 1 KiB too).
+if "$RT" --list-features | grep -q tone_map; then
+    (ulimit -f 1 && run_rt "$work" --output out.hdr scene.lua && exit "$rc")
+    rc=$?
+    expect_refusal full-disk-hdr \
+        "scene.lua:5: out.hdr: cannot write the Radiance HDR file (File too large)" ""
+    # The local tone map's buffers (73 B per pixel) count against the budget before the render:
+    # 2000 x 2000 pixels fit in 200M as a plain image (96 MB) but not with them (388 MB).
+    run_rt "$work" --max-memory 200M --size 2000x2000 --tone-map=local scene.lua
+    expect_refusal tone-map-memory "2000x2000 pixels and its tone map needs about" 100000
+fi
 
 # A real full disk, where the machine allows it: a 16 KiB tmpfs, filled to within 1 KiB and
 # mounted as the output folder in a private mount namespace (unshare -m, which needs root or user

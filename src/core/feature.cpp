@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/image.h"
 
 namespace rb {
 
@@ -58,6 +59,14 @@ bool FeatureSet::enabled(const std::string& name) const {
     return std::any_of(on_.begin(), on_.end(), [&](const Feature& f) { return name == f.name; });
 }
 
+const OutputFormat* outputFormatFor(const std::vector<Feature>& features, const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    for (const Feature& f : features)
+        for (const OutputFormat& format : f.outputFormats)
+            if (ext == format.extension) return &format;
+    return nullptr;
+}
+
 namespace {
 /// Lua calls and feature names of chapters that may be missing from a build.
 struct LaterCall {
@@ -97,6 +106,12 @@ constexpr LaterCall kLaterCalls[] = {
     {"texture", 10, "texture"},
     {"bump", 11, "bump"},
     {"tone_map", 12, "tone_map"},
+    {"tone_key", 12, "tone_map"},
+    {"tone_white", 12, "tone_map"},
+    {"tone_sharpness", 12, "tone_map"},
+    {"tone_threshold", 12, "tone_map"},
+    {"exposure", 12, "tone_map"},
+    {"srgb", 12, "tone_map"},
     {"dof", 13, "dof"},
     {"csg", 14, "csg"},
     {"set_texture_map", 10, "texture"},

@@ -20,6 +20,17 @@ struct FeatureOption {
     const char* defaultValue;  ///< What applies when the option is absent, for --help.
 };
 
+class Image;
+
+/// An image file format a feature can write, chosen by the output name's extension
+/// (e.g. {".hdr", "a Radiance HDR image", writeHdr}).
+struct OutputFormat {
+    const char* extension;    ///< Lower case, with the dot.
+    const char* description;  ///< For messages: "a Radiance HDR image".
+    /// Write the film (linear radiance) to `path` atomically; throws InputError naming the path.
+    void (*write)(const Image& film, const std::string& path);
+};
+
 /// One chapter's module as the core sees it.
 struct Feature {
     const char* name;   ///< Switch name, e.g. "reflection".
@@ -33,6 +44,8 @@ struct Feature {
     void (*install)(Pipeline& pipeline, Scene& scene, const RenderContext& context);
     /// Command-line options the chapter adds.
     std::vector<FeatureOption> options = {};
+    /// Image formats the chapter writes besides PNG (chapter 12: Radiance .hdr).
+    std::vector<OutputFormat> outputFormats = {};
 };
 
 /// The features compiled into this binary, in chapter order. Each chapter binary defines
@@ -56,6 +69,10 @@ class FeatureSet {
     std::vector<Feature> built_;
     std::vector<Feature> on_;
 };
+
+/// The output format of a feature in `features` whose extension `path` ends in (any case),
+/// or null: rt writes PNG.
+const OutputFormat* outputFormatFor(const std::vector<Feature>& features, const std::string& path);
 
 /// The newest chapter written in this source tree (CMakeLists.txt knows it): `make chapterN`
 /// exists for N up to this; later chapters are planned.

@@ -23,17 +23,29 @@ void checkImageSize(long long width, long long height, const std::string& where)
                          std::to_string(kMaxPixels) + " pixels)");
 }
 
-bool hasPngExtension(const std::string& path) {
+std::string lowerExtension(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".png";
+    return ext;
 }
 
-void checkOutputName(const std::string& path, const std::string& where) {
-    if (!hasPngExtension(path))
-        throw InputError(where + ": cannot write '" + path +
-                         "': rt writes PNG images only, so the name must end in .png");
+bool hasPngExtension(const std::string& path) {
+    return lowerExtension(path) == ".png";
+}
+
+void checkOutputName(const std::string& path, const std::string& where,
+                     const std::vector<std::string>& others) {
+    if (hasPngExtension(path)) return;
+    const std::string ext = lowerExtension(path);
+    std::string names = ".png";
+    for (const std::string& other : others) {
+        if (ext == other) return;
+        names += " or " + other;
+    }
+    throw InputError(where + ": cannot write '" + path + "': rt writes " +
+                     (others.empty() ? "PNG images only" : "only these formats") +
+                     ", so the name must end in " + names);
 }
 
 Image::Image(int width, int height) : width_(width), height_(height) {
@@ -67,29 +79,27 @@ std::vector<unsigned char> toBytes(const Image& image) {
 // [write-png]
 namespace {
 
-/// Where stb's encoder hands over the PNG: a file, and the first write error (errno).
-struct PngSink {
+/// Where an encoder hands over the file: a file, and the first write error (errno).
+struct FileSink {
     std::FILE* file;
     int error = 0;
 };
 
-/// stb's write callback: fwrite, remembering a short write (stbi_write_png itself ignores
+/// stb's write callback: fwrite, remembering a short write (stb's encoders themselves ignore
 /// them, and would leave a truncated file behind on a full disk).
 void writeToSink(void* context, void* data, int size) {
-    auto* sink = static_cast<PngSink*>(context);
+    auto* sink = static_cast<FileSink*>(context);
     if (sink->error == 0 &&
         std::fwrite(data, 1, static_cast<size_t>(size), sink->file) != static_cast<size_t>(size))
         sink->error = errno ? errno : EIO;
 }
 
-/// Encode `image` into the new file `path`; returns 0 or the errno of the first failure.
-int writePngFile(const Image& image, const std::string& path) {
-    const std::vector<unsigned char> bytes = toBytes(image);
+/// Encode into the new file `path`; returns 0 or the errno of the first failure.
+int encodeToFile(const std::string& path, const ImageEncoder& encode) {
     errno = 0;
-    PngSink sink{std::fopen(path.c_str(), "wb")};
+    FileSink sink{std::fopen(path.c_str(), "wb")};
     if (!sink.file) return errno ? errno : EIO;
-    const int ok = stbi_write_png_to_func(writeToSink, &sink, image.width(), image.height(), 3,
-                                          bytes.data(), image.width() * 3);
+    const bool ok = encode(writeToSink, &sink);
     // The last bytes reach the disk only at fflush and fclose: check both.
     if (sink.error == 0 && std::fflush(sink.file) != 0) sink.error = errno ? errno : EIO;
     if (std::fclose(sink.file) != 0 && sink.error == 0) sink.error = errno ? errno : EIO;
@@ -99,15 +109,25 @@ int writePngFile(const Image& image, const std::string& path) {
 
 }  // namespace
 
-void writePng(const Image& image, const std::string& path) {
+void writeImageFile(const std::string& path, const std::string& format,
+                    const ImageEncoder& encode) {
     // Write to a temporary name in the same folder, so the rename below is atomic.
     const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-    int error = writePngFile(image, tmp);
+    int error = encodeToFile(tmp, encode);
     if (error == 0 && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;
     if (error != 0) {
         std::remove(tmp.c_str());
-        throw InputError(path + ": cannot write the PNG file (" + std::strerror(error) + ")");
+        throw InputError(path + ": cannot write the " + format + " file (" + std::strerror(error) +
+                         ")");
     }
+}
+
+void writePng(const Image& image, const std::string& path) {
+    const std::vector<unsigned char> bytes = toBytes(image);
+    writeImageFile(path, "PNG", [&](ImageByteSink sink, void* context) {
+        return stbi_write_png_to_func(sink, context, image.width(), image.height(), 3, bytes.data(),
+                                      image.width() * 3) != 0;
+    });
 }
 // [write-png]
 

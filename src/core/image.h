@@ -2,6 +2,7 @@
 /// Image: a float RGB film, and PNG output written atomically.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,11 +21,15 @@ inline constexpr int kMaxDimension = 1 << 16;
 /// the message.
 void checkImageSize(long long width, long long height, const std::string& where);
 
-/// True when `path` ends in .png (any case): the one format rt writes.
+/// The extension of `path` in lower case, with its dot (".png"), or "" when it has none.
+std::string lowerExtension(const std::string& path);
+/// True when `path` ends in .png (any case): the format the core writes.
 bool hasPngExtension(const std::string& path);
-/// Throw InputError (prefixed by `where`) unless `path` ends in .png; rt never writes PNG data
+/// Throw InputError (prefixed by `where`) unless `path` ends in .png or in one of `others`
+/// (the extensions of the built chapters' formats, e.g. ".hdr"); rt never writes PNG data
 /// under another format's name.
-void checkOutputName(const std::string& path, const std::string& where);
+void checkOutputName(const std::string& path, const std::string& where,
+                     const std::vector<std::string>& others = {});
 
 /// A width × height image of linear RGB, row 0 at the top.
 class Image {
@@ -48,6 +53,17 @@ class Image {
 /// Encode as 8-bit RGB the way the CS488 framework does: clamp each channel to [0,1], then
 /// truncate 255·c. Non-finite values become 0.
 std::vector<unsigned char> toBytes(const Image& image);
+
+/// Where an encoder sends each piece of a file it writes (stb's stbi_write_func).
+using ImageByteSink = void (*)(void* context, void* data, int size);
+/// An encoder: streams a whole file into (sink, context); false when it could not allocate.
+using ImageEncoder = std::function<bool(ImageByteSink sink, void* context)>;
+
+/// Write a file atomically: `encode` streams it to a temporary file beside `path`, which is
+/// then renamed to `path`. Throws InputError naming the path and `format` ("PNG") if it
+/// cannot be written (a short write, a full disk, a missing folder), and leaves no partial
+/// file behind.
+void writeImageFile(const std::string& path, const std::string& format, const ImageEncoder& encode);
 
 /// Write a PNG atomically: to a temporary file beside `path`, then rename. Throws InputError
 /// naming the path if it cannot be written, and leaves no partial file behind.

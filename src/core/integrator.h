@@ -33,6 +33,7 @@ struct Scene {
 
 class Integrator;
 class PixelSampler;
+class PostProcess;
 
 /// What a shading routine may use: the scene, the integrator (to trace more rays), this
 /// sample's random stream, this thread's counters, the recursion depth and the media the
@@ -94,6 +95,9 @@ struct Pipeline {
     /// Where a pixel's camera rays go (chapter 8's supersampling), or null: the core's one
     /// ray through each pixel centre (or --spp random positions).
     std::shared_ptr<const PixelSampler> pixelSampler;
+    /// What happens to the film after the render (chapter 12's tone map), or null: the film is
+    /// written as it is, each channel clamped to [0, 1] as the CS488 framework does.
+    std::shared_ptr<const PostProcess> postProcess;
 };
 
 /// Traces rays through a scene with a pipeline.

@@ -15,6 +15,7 @@
 #include "core/interrupt.h"
 #include "core/lua_scene.h"
 #include "core/options.h"
+#include "core/post_process.h"
 #include "core/render.h"
 #include "core/render_warnings.h"
 #include "core/version.h"
@@ -119,6 +120,19 @@ int run(int argc, char** argv) {
                           "the image of " + std::to_string(job.width) + "x" +
                               std::to_string(job.height) + " pixels");
         const std::string output = outputPath(cl, job, k, renders.size());
+        // A format a chapter writes (chapter 12: .hdr) needs that chapter switched on; --output
+        // let it pass because the chapter is built.
+        const OutputFormat* format = outputFormatFor(features.on(), output);
+        if (!format && !cl.output.empty() && !hasPngExtension(output)) {
+            const OutputFormat* off = outputFormatFor(features.built(), output);
+            std::string owner;
+            for (const Feature& f : features.built())
+                for (const OutputFormat& o : f.outputFormats)
+                    if (&o == off)
+                        owner = std::string(f.name) + ", chapter " + std::to_string(f.chapter);
+            throw InputError("--output " + output + ": writing " + (off ? off->description : "it") +
+                             " needs " + owner + ", which --features switched off");
+        }
         // Refuse an output path that cannot be written before spending time on the render.
         const std::filesystem::path folder = std::filesystem::path(output).parent_path();
         if (!folder.empty() && !std::filesystem::is_directory(folder))
@@ -136,6 +150,16 @@ int run(int argc, char** argv) {
         const Scene& scene = world->scene;
         const Pipeline& pipeline = world->pipeline;
         const double buildSeconds = since(t0);
+        // A post-process (chapter 12's tone map) needs working memory beside the film.
+        if (pipeline.postProcess) {
+            const RenderJob& built = world->source.job;
+            cl.memory.require(
+                saturatingProduct(static_cast<std::uint64_t>(built.width) * built.height,
+                                  kImageBytesPerPixel + pipeline.postProcess->bytesPerPixel()),
+                built.where,
+                "the image of " + std::to_string(built.width) + "x" + std::to_string(built.height) +
+                    " pixels and its tone map");
+        }
 
         const PinholeCamera camera(world->source.job.camera, world->source.job.width,
                                    world->source.job.height);
@@ -143,6 +167,11 @@ int run(int argc, char** argv) {
         for (const std::string& warning :
              renderWarnings(world->source.job, scene.instances, camera, features, output))
             std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());
+        if (format && pipeline.postProcess)
+            std::fprintf(stderr,
+                         "rt: warning: %s: the tone map is not applied to %s, which keeps the "
+                         "film's linear radiance; write a .png to see it\n",
+                         world->source.job.where.c_str(), output.c_str());
         RenderSettings settings;
         settings.threads = cl.threads;
         settings.seed = cl.seed;
@@ -172,12 +201,20 @@ int run(int argc, char** argv) {
                                     " s (--time-limit), without writing an image",
                                 124);
         }
-        const Image& image = *rendered;
+        Image& image = *rendered;
         const double renderSeconds = since(t0);
 
+        // The post-process (chapter 12's tone map) turns the film into display values; a
+        // format of its own (.hdr) keeps the film's linear radiance instead.
+        t0 = Clock::now();
+        if (!format && pipeline.postProcess) pipeline.postProcess->apply(image);
+        const double postSeconds = since(t0);
         t0 = Clock::now();
         try {
-            writePng(image, output);
+            if (format)
+                format->write(image, output);
+            else
+                writePng(image, output);
         } catch (const InputError& e) {
             throw InputError(world->source.job.where + ": " + e.what());
         }
@@ -201,6 +238,8 @@ int run(int argc, char** argv) {
                              loadTimes.meshLoad, loadTimes.meshBvh);
             std::fprintf(stderr, "  time       build %.3f s, render %.3f s, write %.3f s\n",
                          buildSeconds, renderSeconds, writeSeconds);
+            if (pipeline.postProcess)
+                std::fprintf(stderr, "  time       post-process %.3f s\n", postSeconds);
             std::fprintf(stderr, "  speed      %.2f Mrays/s\n",
                          counters.total() / std::max(renderSeconds, 1e-9) / 1e6);
             std::fprintf(stderr, "  instances  %zu\n", scene.instances.size());

@@ -75,7 +75,12 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             cl.height = static_cast<int>(parseInteger("--size", v.substr(x + 1), 1, 1 << 16));
         } else if (name == "--output" || name == "-o") {
             cl.output = next();
-            checkOutputName(cl.output, "--output");
+            // PNG, or a format a built chapter writes (chapter 12: .hdr).
+            std::vector<std::string> formats;
+            for (const Feature& f : built)
+                for (const OutputFormat& format : f.outputFormats)
+                    formats.push_back(format.extension);
+            checkOutputName(cl.output, "--output", formats);
         } else if (name == "--assets")
             cl.assetDirs.push_back(next());
         else if (name == "--stats")
@@ -138,7 +143,8 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --max-depth N      recursion limit for secondary rays         default: the scene's
                                                                 max_depth, else 5
   --size WxH         override the image size                    default: gr.render's
-  --output FILE      override the output image (.png)           default: gr.render's
+  --output FILE      override the output image (.png; .hdr with chapter 12)
+                                                                default: gr.render's
   --assets DIR       also look for meshes, textures and require()d files in DIR, after
                      the working directory and the scene's folder (may be repeated)
   --time-limit S     stop the render after S seconds, writing nothing (exit code 124);

@@ -61,8 +61,19 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the scene's antialiasing (gr.antialias or aa_sampler) " +
                            "is ignored: it needs chapter 8 (adaptive_aa), and " +
                            whyAbsent(features, "adaptive_aa", 8));
+    // Chapter 12's display settings, when the chapter is built but switched off.
+    bool toneMapAsked = false;
+    for (const char* name : {"tone_map", "exposure", "srgb"}) {
+        const auto it = job.options.find(name);
+        if (it != job.options.end() && it->second != 0.0) toneMapAsked = true;
+    }
+    if (toneMapAsked && !features.enabled("tone_map"))
+        warnings.push_back(job.where + ": the scene's tone map (gr.tone_map, tone_map, exposure " +
+                           "or srgb) is ignored: it needs chapter 12 (tone_map), and " +
+                           whyAbsent(features, "tone_map", 12));
     // The course framework writes PNG data whatever the name says; so does rt, but says so.
-    if (!hasPngExtension(output))
+    // A name a switched-on chapter writes in its own format (chapter 12's .hdr) is not PNG.
+    if (!hasPngExtension(output) && !outputFormatFor(features.on(), output))
         warnings.push_back(job.where + ": the output '" + output +
                            "' does not end in .png; rt writes a PNG image under that name, as " +
                            "the course framework does");
