@@ -11,6 +11,8 @@
 //
 // Image files are searched for like meshes (working directory, scene folder, --assets) and
 // each is loaded once per scene, shared by every texture that names it.
+#include "texture/lua_texture.h"
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -42,11 +44,13 @@ void pushShared(lua_State* L, std::shared_ptr<T> p, const char* type) {
     luaL_setmetatable(L, type);
 }
 
+}  // namespace
+
 // [image-cache]
-/// The image in `file`, loaded once per scene: the registry keeps every image by its
-/// canonical path, so two textures (or two calls) naming one file share its texels.
-std::shared_ptr<const TextureImage> imageFromFile(lua_State* L, const std::string& file,
-                                                  const std::string& call) {
+std::shared_ptr<const TextureImage> sceneImage(lua_State* L, const std::string& file,
+                                               const std::string& call) {
+    // The registry keeps every image by its canonical path, so two textures (or two calls)
+    // naming one file share its texels.
     SceneBuilder& builder = sceneBuilder(L);
     const std::string path = findSceneFile(builder, file, call);
     std::error_code ec;
@@ -77,10 +81,12 @@ std::shared_ptr<const TextureImage> imageFromFile(lua_State* L, const std::strin
 }
 // [image-cache]
 
+namespace {
+
 /// An image texture with the defaults: repeat, bilinear, the shape's own (u, v).
 std::shared_ptr<const Texture> defaultImageTexture(lua_State* L, const std::string& file,
                                                    const std::string& call) {
-    return std::make_shared<ImageTexture>(imageFromFile(L, file, call));
+    return std::make_shared<ImageTexture>(sceneImage(L, file, call));
 }
 
 /// A string field of the gr.texture table that must be one of `choices`; -1 when absent.
@@ -147,7 +153,7 @@ int textureTable(lua_State* L) {
         }
         const std::string file = lua_tostring(L, -2);
         lua_pop(L, 2);
-        auto image = std::make_shared<ImageTexture>(imageFromFile(L, file, "gr.texture"));
+        auto image = std::make_shared<ImageTexture>(sceneImage(L, file, "gr.texture"));
         const int wrap = choiceField(L, "wrap", {"repeat", "clamp"});
         if (wrap >= 0) image->wrap = wrap == 0 ? Wrap::Repeat : Wrap::Clamp;
         image->bilinear = choiceField(L, "filter", {"bilinear", "nearest"}) != 1;
@@ -192,7 +198,8 @@ int grTexture(lua_State* L) {
     return 0;
 }
 
-/// The texture at argument arg: a gr.texture result, or a file name (an image with defaults).
+}  // namespace
+
 std::shared_ptr<const Texture> checkTexture(lua_State* L, int arg, const char* call) {
     if (auto* p =
             static_cast<std::shared_ptr<const Texture>*>(luaL_testudata(L, arg, kTextureType)))
@@ -202,6 +209,8 @@ std::shared_ptr<const Texture> checkTexture(lua_State* L, int arg, const char* c
                      " must be a texture (from gr.texture) or an image file name, got " +
                      luaL_typename(L, arg));
 }
+
+namespace {
 
 /// mat:set_texture(texture) or mat:set_texture(slot, texture), slot 'kd' or 'ks'.
 int materialSetTexture(lua_State* L) {
