@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 
 #include "core/error.h"
@@ -44,6 +45,26 @@ double toTexelSpace(double s, int n, Wrap wrap) {
 int wrapIndex(int i, int n, Wrap wrap) {
     if (wrap == Wrap::Clamp) return std::clamp(i, 0, n - 1);
     return ((i % n) + n) % n;
+}
+
+/// The width and height a PNG's header (its IHDR chunk) claims, read without stb_image: stb
+/// refuses images over 1 GiB of pixels without saying that size was the reason.
+bool pngHeaderSize(FILE* file, std::uint64_t& width, std::uint64_t& height) {
+    unsigned char header[24];
+    const bool read = std::fread(header, 1, sizeof header, file) == sizeof header;
+    std::rewind(file);
+    // Source: the PNG specification (ISO/IEC 15948), 5.2 and 11.2.2: the signature, then the
+    // IHDR chunk's length and type, then width and height as big-endian 32-bit numbers.
+    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    if (!read || std::memcmp(header, signature, 8) != 0 || std::memcmp(header + 12, "IHDR", 4))
+        return false;
+    const auto bigEndian = [&](int at) {
+        return (std::uint64_t(header[at]) << 24) | (std::uint64_t(header[at + 1]) << 16) |
+               (std::uint64_t(header[at + 2]) << 8) | std::uint64_t(header[at + 3]);
+    };
+    width = bigEndian(16);
+    height = bigEndian(20);
+    return true;
 }
 
 }  // namespace
@@ -88,9 +109,21 @@ std::shared_ptr<const TextureImage> loadTextureImage(const std::string& path,
     std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
     if (!file) throw InputError(path + ": cannot open the texture image");
     int width = 0, height = 0, channels = 0;
-    if (!stbi_info_from_file(file.get(), &width, &height, &channels))
+    if (!stbi_info_from_file(file.get(), &width, &height, &channels)) {
+        std::uint64_t w = 0, h = 0;
+        if (pngHeaderSize(file.get(), w, h)) {
+            if (w == 0 || h == 0)
+                throw InputError(path + ": the image is empty (" + std::to_string(w) + "x" +
+                                 std::to_string(h) + ")");
+            budget.require(textureImageBytes(w, h), path,
+                           "the " + std::to_string(w) + "x" + std::to_string(h) + " texture image");
+            throw InputError(path + ": the PNG's header is damaged, or its " + std::to_string(w) +
+                             "x" + std::to_string(h) + " pixels are more than stb_image decodes (" +
+                             stbi_failure_reason() + ")");
+        }
         throw InputError(path + ": not an image stb_image can read (" + stbi_failure_reason() +
                          "); expected PNG, JPEG, BMP, TGA, GIF, PSD, PIC, PNM or HDR");
+    }
     if (width <= 0 || height <= 0)
         throw InputError(path + ": the image is empty (" + std::to_string(width) + "x" +
                          std::to_string(height) + ")");
