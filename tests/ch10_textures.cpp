@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "smooth_mesh/smooth_mesh.h"
 #include "test_helpers.h"
 #include "texture/surface_texture.h"
 #include "texture/texture.h"
@@ -246,6 +247,19 @@ SCENARIO("a mesh's (u, v) is its corners' vt blended by barycentrics", "[ch10]")
                     CHECK(glm::length(s.dpdv - Vec3(0, 0, -2)) < 1e-12);
                 }
             }
+        }
+    }
+    GIVEN("the same quad as chapter 9's smooth mesh (it wraps the faceted one)") {
+        std::istringstream obj(
+            "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nvt 0 0\nvt 0 1\nvt 1 0\nvt 1 1\n"
+            "vn 0 1 0\nf 1/2/1 3/3/1 2/4/1\nf 1/2/1 4/1/1 3/3/1\n");
+        const rb::ObjData data = rb::parseObj(obj, "plane.obj");
+        const rb::SmoothMesh smooth(std::make_shared<rb::Mesh>(data, "plane.obj"), data, {});
+        const auto instance = rbtest::makeInstance(smooth, rb::Mat4(1.0));
+        const rb::Hit hit = hitInstance(instance, rb::Ray{Vec3(0.3, 2, -0.4), Vec3(0, -1, 0)});
+        THEN("its (u, v) comes from the same vt") {
+            CHECK(rb::surfaceUV(hit).uv.x == Approx(0.65));
+            CHECK(rb::surfaceUV(hit).uv.y == Approx(0.7));
         }
     }
     GIVEN("a mesh without vt") {

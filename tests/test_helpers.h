@@ -44,6 +44,7 @@
 #include "core/sphere.h"
 #include "core/world.h"
 #include "adaptive_aa/adaptive_aa.h"
+#include "smooth_mesh/smooth_mesh.h"
 #include "glossy/glossy.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
@@ -94,7 +95,7 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
                                           rb::glossyFeature(),     rb::adaptiveAaFeature(),
-                                          rb::textureFeature()};
+                                          rb::smoothMeshFeature(), rb::textureFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

@@ -8,6 +8,7 @@
 #include "core/box.h"
 #include "core/instance.h"
 #include "core/sphere.h"
+#include "smooth_mesh/smooth_mesh.h"
 
 namespace rb {
 
@@ -107,6 +108,9 @@ SurfaceUV surfaceUV(const Hit& hit, UVMapping mapping) {
         s = boxFaceUV(p, static_cast<int>(std::min<std::uint32_t>(hit.primitive, 2)));
     } else if (const auto* mesh = dynamic_cast<const Mesh*>(shape)) {
         s = meshUV(*mesh, hit.primitive, hit.uv, p);
+    } else if (const auto* smooth = dynamic_cast<const SmoothMesh*>(shape)) {
+        // Chapter 9's smooth mesh wraps a Mesh: the same triangles, the same `vt`.
+        s = meshUV(smooth->mesh(), hit.primitive, hit.uv, p);
     } else {
         s = planarUV(p);
     }
