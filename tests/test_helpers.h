@@ -49,6 +49,7 @@
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
 #include "soft_shadows/soft_shadows.h"
+#include "texture/texture.h"
 #include "tone_map/tone_map.h"
 
 namespace rbtest {
@@ -95,7 +96,8 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
                                           rb::glossyFeature(),     rb::adaptiveAaFeature(),
-                                          rb::smoothMeshFeature(),  rb::toneMapFeature()};
+                                          rb::smoothMeshFeature(),  rb::textureFeature(),
+                                          rb::toneMapFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

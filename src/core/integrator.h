@@ -84,6 +84,11 @@ class ShadingNormal {
     virtual void apply(const Ray& ray, Hit& hit) const = 0;
 };
 
+/// Chapter 10's texture lookup for material colours: the material the surface shader sees at
+/// `hit` (kd, ks and shininess with the material's textures evaluated there; no parameters or
+/// textures). Called only for a hit whose material has textures.
+using TextureLookup = Material (*)(const Hit& hit);
+
 /// How a render is put together; each enabled feature adjusts it.
 struct Pipeline {
     SurfaceShader surface = nullptr;                        ///< Local shading (chapter 1, then 2).
@@ -95,6 +100,8 @@ struct Pipeline {
     /// Where a pixel's camera rays go (chapter 8's supersampling), or null: the core's one
     /// ray through each pixel centre (or --spp random positions).
     std::shared_ptr<const PixelSampler> pixelSampler;
+    /// Textured material colours (chapter 10), or null: the materials' own colours.
+    TextureLookup textureLookup = nullptr;
     /// What happens to the film after the render (chapter 12's tone map), or null: the film is
     /// written as it is, each channel clamped to [0, 1] as the CS488 framework does.
     std::shared_ptr<const PostProcess> postProcess;
