@@ -100,6 +100,7 @@ constexpr LaterCall kLaterCalls[] = {
     {"csg", 14, "csg"},
     {"set_texture_map", 10, "texture"},
     {"set_bump_map", 11, "bump"},
+    {"set_bump", 11, "bump"},
     {"quadrics", 15, "quadrics"},
     {"cone", 15, "quadrics"},
     {"cylinder", 15, "quadrics"},

@@ -83,6 +83,9 @@ struct Pipeline {
     /// Where a pixel's camera rays go (chapter 8's supersampling), or null: the core's one
     /// ray through each pixel centre (or --spp random positions).
     std::shared_ptr<const PixelSampler> pixelSampler;
+    /// Chapter 11: apply the bump a hit's material carries to its shading normal. Set only
+    /// when the feature is on and some material has a bump, so other scenes skip the lookup.
+    bool perturbNormals = false;
 };
 
 /// Traces rays through a scene with a pipeline.

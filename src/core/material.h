@@ -3,9 +3,11 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 
+#include "core/normal_perturbation.h"
 #include "core/vec.h"
 
 namespace rb {
@@ -19,6 +21,8 @@ struct Material {
     /// Chapter parameters by name, e.g. "reflect". std::less<> lets a lookup compare a string
     /// literal directly, without building a std::string on every hit.
     std::map<std::string, double, std::less<>> params;
+    /// Tilts the shading normal where this material is hit (chapter 11's bump), or null.
+    std::shared_ptr<const NormalPerturbation> bump;
 
     /// A chapter parameter, or fallback when the scene did not set it.
     double param(std::string_view name, double fallback = 0.0) const {
