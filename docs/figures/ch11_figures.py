@@ -15,7 +15,7 @@ ch11-facing.svg   a bump steep enough to tip the normal over: the raw n' faces a
 """
 import math
 
-from svgfig import BLUE, DARK, GRID, INK, ORANGE, RED, Figure, Frame2D, add, mul, normalize, sub
+from svgfig import BLUE, DARK, GRID, ORANGE, RED, Figure, Frame2D, add, mul, normalize, sub
 
 K = 2 * math.pi / 2.0  # wave number: wavelength 2 units
 A = 0.2  # strength
