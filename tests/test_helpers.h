@@ -49,6 +49,7 @@
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
 #include "soft_shadows/soft_shadows.h"
+#include "texture/texture.h"
 
 namespace rbtest {
 
@@ -94,7 +95,7 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
                                           rb::glossyFeature(),     rb::adaptiveAaFeature(),
-                                          rb::bumpFeature()};
+                                          rb::textureFeature(),    rb::bumpFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

@@ -1,5 +1,8 @@
 #include "bvh/mesh.h"
 
+#include <cmath>
+#include <limits>
+
 #include "core/error.h"
 #include "bvh/triangle.h"
 
@@ -26,6 +29,28 @@ Mesh::Mesh(const ObjData& data, const std::string& name) {
         keptSource.push_back(static_cast<std::uint32_t>(i));
     }
     if (kept.empty()) throw InputError(name + ": the mesh has no triangle with non-zero area");
+    // Keep the texture coordinates of every triangle, by OBJ index, when the file has any.
+    if (!data.texcoords.empty()) {
+        texcoords_.reserve(data.triangles.size());
+        for (const auto& c : data.triangles) {
+            TriangleTexcoords t;
+            if (c[0].vt < 0 || c[1].vt < 0 || c[2].vt < 0) {
+                t.uv.fill(Vec2(std::numeric_limits<double>::quiet_NaN()));
+            } else {
+                for (int k = 0; k < 3; ++k) t.uv[k] = data.texcoords[c[k].vt];
+                // Solve p1 − p0 = Δu1·dp/du + Δv1·dp/dv and p2 − p0 likewise (Cramer's rule).
+                const Vec3 dp1 = data.positions[c[1].v] - data.positions[c[0].v];
+                const Vec3 dp2 = data.positions[c[2].v] - data.positions[c[0].v];
+                const Vec2 duv1 = t.uv[1] - t.uv[0], duv2 = t.uv[2] - t.uv[0];
+                const double det = duv1.x * duv2.y - duv1.y * duv2.x;
+                if (det != 0.0 && std::isfinite(1.0 / det)) {
+                    t.dpdu = (duv2.y * dp1 - duv1.y * dp2) / det;
+                    t.dpdv = (duv1.x * dp2 - duv2.x * dp1) / det;
+                }
+            }
+            texcoords_.push_back(t);
+        }
+    }
     // Build the BVH (the boxes are freed inside), then store triangles in the order its leaves
     // visit them.
     bvh_.build(std::move(boxes));
@@ -37,6 +62,11 @@ Mesh::Mesh(const ObjData& data, const std::string& name) {
         triangles_.push_back(kept[p]);
         source_.push_back(keptSource[p]);
     }
+}
+
+const TriangleTexcoords* Mesh::texcoords(std::uint32_t triangle) const {
+    if (triangle >= texcoords_.size() || std::isnan(texcoords_[triangle].uv[0].x)) return nullptr;
+    return &texcoords_[triangle];
 }
 
 size_t Mesh::triangleBytes() const {
@@ -62,7 +92,7 @@ bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
     const auto& v = triangles_[hitSlot];
     hit.t = best.t;
     hit.n = glm::cross(v[1] - v[0], v[2] - v[0]);  // geometric normal, by the winding
-    hit.uv = Vec2(best.b1, best.b2);               // barycentrics until chapter 10
+    hit.uv = Vec2(best.b1, best.b2);  // barycentrics; chapter 10 turns them into `vt` (u, v)
     hit.primitive = source_[hitSlot];
     return true;
 }

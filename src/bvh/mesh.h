@@ -12,6 +12,13 @@
 
 namespace rb {
 
+/// A triangle's `vt` coordinates, corner by corner, and the object-space derivatives of the
+/// position along them (dp/du, dp/dv: zero when the coordinates are degenerate).
+struct TriangleTexcoords {
+    std::array<Vec2, 3> uv;
+    Vec3 dpdu{0.0}, dpdv{0.0};
+};
+
 /// A triangle mesh in object space. Triangles are stored in BVH order with their vertices
 /// copied out, so a leaf test reads one contiguous block.
 class Mesh final : public Shape {
@@ -35,10 +42,15 @@ class Mesh final : public Shape {
     const std::array<Vec3, 3>& triangle(size_t i) const { return triangles_[i]; }
     /// The OBJ triangle index of slot i.
     std::uint32_t sourceIndex(size_t i) const { return source_[i]; }
+    /// The `vt` texture coordinates of OBJ triangle `triangle` (a Hit's primitive); null when
+    /// the file gave that triangle none (or not at every corner).
+    const TriangleTexcoords* texcoords(std::uint32_t triangle) const;
 
   private:
     std::vector<std::array<Vec3, 3>> triangles_;     ///< Vertices, BVH order.
     std::vector<std::uint32_t> source_;              ///< OBJ triangle index per slot.
+    /// `vt` per OBJ triangle (NaN where a corner has none); empty when the file has no `vt`.
+    std::vector<TriangleTexcoords> texcoords_;
     BVH bvh_;
     AABB bounds_;
     size_t dropped_ = 0;

@@ -236,8 +236,12 @@ class MeshBudgetCheck {
 std::uint64_t meshLoadBytes(const ObjData& data) {
     const std::uint64_t vertices =
         data.positions.size() + data.texcoords.size() + data.normals.size();
+    // A mesh with texture coordinates keeps three of them per triangle, with dp/du and dp/dv
+    // (chapter 10): 96 bytes.
+    const std::uint64_t texcoordBytes =
+        data.texcoords.empty() ? 0 : saturatingProduct(data.triangles.size(), 96);
     return saturatingProduct(data.triangles.size(), kMeshBytesPerTriangle) +
-           saturatingProduct(vertices, kMeshBytesPerVertex);
+           saturatingProduct(vertices, kMeshBytesPerVertex) + texcoordBytes;
 }
 
 ObjData parseObj(std::istream& in, const std::string& displayName, const MemoryBudget& budget) {

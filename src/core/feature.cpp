@@ -99,6 +99,7 @@ constexpr LaterCall kLaterCalls[] = {
     {"dof", 13, "dof"},
     {"csg", 14, "csg"},
     {"set_texture_map", 10, "texture"},
+    {"set_texture", 10, "texture"},
     {"set_bump_map", 11, "bump"},
     {"set_bump", 11, "bump"},
     {"quadrics", 15, "quadrics"},

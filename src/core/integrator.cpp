@@ -1,5 +1,7 @@
 #include "core/integrator.h"
 
+#include "core/material.h"
+
 namespace rb {
 
 // [trace]
@@ -13,7 +15,17 @@ Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters
         hit.material->bump->perturb(ray, hit);
     // Local shading, then each chapter's secondary term.
     const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight};
-    Colour colour = pipeline_.surface(ctx, ray, hit);
+    Colour colour;
+    if (pipeline_.textureLookup && hit.material && !hit.material->textures.empty()) {
+        // A textured material (chapter 10): the surface shader sees its colours at this
+        // point; the secondary terms still read the material's own parameters.
+        const Material textured = pipeline_.textureLookup(hit);
+        Hit shaded = hit;
+        shaded.material = &textured;
+        colour = pipeline_.surface(ctx, ray, shaded);
+    } else {
+        colour = pipeline_.surface(ctx, ray, hit);
+    }
     for (const auto& term : pipeline_.terms) colour = term->apply(ctx, ray, hit, colour);
     return colour;
 }

@@ -74,6 +74,11 @@ class LobeSampler {
                         Vec3& direction) const = 0;
 };
 
+/// Chapter 10's texture lookup for material colours: the material the surface shader sees at
+/// `hit` (kd, ks and shininess with the material's textures evaluated there; no parameters or
+/// textures). Called only for a hit whose material has textures.
+using TextureLookup = Material (*)(const Hit& hit);
+
 /// How a render is put together; each enabled feature adjusts it.
 struct Pipeline {
     SurfaceShader surface = nullptr;                        ///< Local shading (chapter 1, then 2).
@@ -83,6 +88,8 @@ struct Pipeline {
     /// Where a pixel's camera rays go (chapter 8's supersampling), or null: the core's one
     /// ray through each pixel centre (or --spp random positions).
     std::shared_ptr<const PixelSampler> pixelSampler;
+    /// Textured material colours (chapter 10), or null: the materials' own colours.
+    TextureLookup textureLookup = nullptr;
     /// Chapter 11: apply the bump a hit's material carries to its shading normal. Set only
     /// when the feature is on and some material has a bump, so other scenes skip the lookup.
     bool perturbNormals = false;

@@ -1,5 +1,6 @@
 /// \file
-/// Material: the A4 Phong parameters plus named extra parameters that chapter modules read.
+/// Material: the A4 Phong parameters plus named extra parameters and textures that chapter
+/// modules read.
 #pragma once
 
 #include <map>
@@ -11,6 +12,8 @@
 #include "core/vec.h"
 
 namespace rb {
+
+class Texture;
 
 /// A surface material. The core reads kd, ks and shininess (A4's gr.material); later chapters
 /// read their own named parameters ("reflect", "ior", ...) from `params`.
@@ -24,10 +27,20 @@ struct Material {
     /// Tilts the shading normal where this material is hit (chapter 11's bump), or null.
     std::shared_ptr<const NormalPerturbation> bump;
 
+    /// Textures by slot: "kd" and "ks" replace those colours (chapter 10), "bump" is chapter
+    /// 11's height map. Empty for an untextured material, which then costs nothing to shade.
+    std::map<std::string, std::shared_ptr<const Texture>, std::less<>> textures = {};
+
     /// A chapter parameter, or fallback when the scene did not set it.
     double param(std::string_view name, double fallback = 0.0) const {
         auto it = params.find(name);
         return it == params.end() ? fallback : it->second;
+    }
+    /// The texture in `slot`, or null when the material has none there.
+    const Texture* texture(std::string_view slot) const {
+        if (textures.empty()) return nullptr;
+        auto it = textures.find(slot);
+        return it == textures.end() ? nullptr : it->second.get();
     }
 };
 
