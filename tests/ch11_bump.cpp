@@ -13,6 +13,8 @@
 /// from the viewer, although the raw formula does (the stability cases show it does, and that
 /// the result stays finite). A scene without bumps, and `--features=all,-bump`, render bit for
 /// bit as without the chapter.
+#include <stb_image_write.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -22,9 +24,11 @@
 
 #include "bump/bump.h"
 #include "bump/gradient_noise.h"
+#include "bump/height_map.h"
 #include "bump/procedural_heights.h"
 #include "core/error.h"
 #include "test_helpers.h"
+#include "texture/texture_image.h"
 
 using Catch::Contains;
 using rb::Colour;
@@ -66,6 +70,17 @@ class ConstantJunk final : public rb::HeightField {
   private:
     double slope_;
 };
+
+/// Write a 256 × 4 grey PNG whose column x has level x (a ramp of one level per texel) into
+/// `dir` and return its path.
+std::string writeRampPng(const rbtest::TempDir& dir) {
+    std::vector<unsigned char> pixels;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 256; ++x) pixels.push_back(static_cast<unsigned char>(x));
+    const std::string path = (dir.path() / "ramp.png").string();
+    REQUIRE(stbi_write_png(path.c_str(), 256, 4, 1, pixels.data(), 256) != 0);
+    return path;
+}
 
 }  // namespace
 
@@ -512,9 +527,9 @@ SCENARIO("without bumps, or with the feature off, the chapter changes nothing", 
         "gr.render(root, 'out.png', 32, 24, {0, 0, 2}, {0, 0, -1}, {0, 1, 0}, 60,\n"
         "          {0.1, 0.1, 0.1}, {gr.light({2, 4, 3}, {0.9, 0.9, 0.9}, {1, 0, 0})})\n";
     const std::string plain = "local m = gr.material({0.7, 0.3, 0.2}, {0.5, 0.5, 0.5}, 30)\n";
-    const std::string rippled =
-        plain + "m:set_bump{pattern = 'ripples', strength = 0.02, wavelength = 0.2,"
-        " centre = {0.3, 0.5, 0.8}}\n";
+    const std::string rippled = plain +
+                                "m:set_bump{pattern = 'ripples', strength = 0.02, wavelength = 0.2,"
+                                " centre = {0.3, 0.5, 0.8}}\n";
     GIVEN("a scene without bumps") {
         const auto eleven = rbtest::worldFromLua(plain + body, withBump());
         const auto eight = rbtest::worldFromLua(plain + body, rbtest::chapters(8));
@@ -537,10 +552,135 @@ SCENARIO("without bumps, or with the feature off, the chapter changes nothing", 
         }
         THEN("the bumped image is the same on 1 and 2 threads") {
             rb::RayCounters c1, c2;
-            const rb::Image one = rbtest::renderAt(*on, 32, 24, {.threads = 1}, c1);
-            const rb::Image two = rbtest::renderAt(*on, 32, 24, {.threads = 2}, c2);
+            rb::RenderSettings oneThread, twoThreads;
+            oneThread.threads = 1;
+            twoThreads.threads = 2;
+            const rb::Image one = rbtest::renderAt(*on, 32, 24, oneThread, c1);
+            const rb::Image two = rbtest::renderAt(*on, 32, 24, twoThreads, c2);
             CHECK(rbtest::bitIdentical(one, two));
         }
     }
 }
 // [ch11-costs-nothing]
+
+// [ch11-height-map]
+SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11]") {
+    rbtest::TempDir dir;
+    const std::string ramp = writeRampPng(dir);
+    const auto heights = std::make_shared<rb::HeightImage>(*rb::loadTextureImage(ramp));
+    // Source: column x holds level x, so the height rises by 1/255 per texel of 1/256 in u:
+    // dh/du = 256/255.
+    const double dh_du = 256.0 / 255.0;
+    GIVEN("the image read as heights") {
+        THEN("texel x holds x/255 as the file stores it, bilinear between texel centres") {
+            CHECK(heights->at(rb::Vec2((10 + 0.5) / 256, 0.5)) == Approx(10 / 255.0).margin(1e-6));
+            CHECK(heights->at(rb::Vec2((10 + 0.75) / 256, 0.5)) ==
+                  Approx(10.25 / 255.0).margin(1e-6));
+        }
+    }
+    GIVEN("the unit cube's top face, where u runs along +x over one unit") {
+        rb::Box box;
+        const rb::Instance cube = rbtest::makeInstance(box, rb::Mat4(1.0));
+        for (const double a : {1.0, 0.3, -2.0}) {
+            const rb::HeightMapBump bump(heights, a, 1.0);
+            const rb::Ray ray{Vec3(0.37, 3, 0.6), Vec3(0, -1, 0)};
+            rb::Hit hit = hitOf(cube, ray);
+            bump.perturb(ray, hit);
+            THEN("the normal leans by atan(a · 256/255) away from uphill (+x)") {
+                CHECK(angleBetween(hit.ns, hit.ng) ==
+                      Approx(std::atan(std::abs(a) * dh_du)).margin(1e-5));
+                CHECK(hit.ns.x * a < 0.0);
+            }
+        }
+    }
+    GIVEN("the unit sphere at its equator, where dp/du has length 2π") {
+        rb::Sphere sphere;
+        const rb::Instance ball = rbtest::makeInstance(sphere, rb::Mat4(1.0));
+        const rb::HeightMapBump bump(heights, 1.0, 1.0);
+        const rb::Ray ray{Vec3(0, 0, -3), Vec3(0, 0, 1)};  // meets (0, 0, −1): u = 1/4
+        rb::Hit hit = hitOf(ball, ray);
+        bump.perturb(ray, hit);
+        THEN("the tilt is atan(256/255 / 2π): the same height change over 2π times the length") {
+            CHECK(angleBetween(hit.ns, hit.ng) ==
+                  Approx(std::atan(dh_du / (2.0 * glm::pi<double>()))).margin(1e-5));
+        }
+    }
+    GIVEN("any two independent tangents dp/du and dp/dv, and derivatives h_u, h_v") {
+        rbtest::Rng rng(9);
+        for (int i = 0; i < 100; ++i) {
+            const Vec3 n = rng.unitVector();
+            Vec3 t, b;
+            rb::tangentFrame(n, t, b);
+            const Vec3 dpdu = rng.uniform(0.1, 3) * t + rng.uniform(-1, 1) * b;
+            const Vec3 dpdv = rng.uniform(-1, 1) * t + rng.uniform(0.1, 3) * b;
+            const double h_u = rng.uniform(-2, 2), h_v = rng.uniform(-2, 2);
+            const Vec3 g = rb::heightMapGradient(h_u, h_v, dpdu, dpdv, n);
+            // Source: the surface gradient g is the tangent vector with g · dp/du = ∂h/∂u
+            // and g · dp/dv = ∂h/∂v (the chain rule along each parameter line).
+            REQUIRE(glm::dot(g, dpdu) == Approx(h_u).margin(1e-12));
+            REQUIRE(glm::dot(g, dpdv) == Approx(h_v).margin(1e-12));
+            REQUIRE(glm::dot(g, n) == Approx(0.0).margin(1e-12));
+        }
+    }
+    GIVEN("seed 002's set_bump_map and raybook's pattern 'image' in a scene") {
+        const auto bumpOf = [&](const std::string& call, const rb::FeatureSet& features) {
+            const auto renders = rbtest::loadSceneText(
+                rbtest::oneMaterialScene("gr.material({1, 1, 1}, {0, 0, 0}, 1)", call + "\n"),
+                features);
+            return renders.at(0).instances.at(0).material->bump;
+        };
+        THEN("set_bump_map takes the default strength, the table its own, and both the image") {
+            const auto seed = std::dynamic_pointer_cast<const rb::HeightMapBump>(
+                bumpOf("m:set_bump_map('" + ramp + "')", withBump()));
+            REQUIRE(seed);
+            CHECK(seed->strength() == rb::kDefaultHeightMapStrength);
+            CHECK(seed->step() == 1.0);
+            CHECK(seed->image().width() == 256);
+            const auto own = std::dynamic_pointer_cast<const rb::HeightMapBump>(bumpOf(
+                "m:set_bump{pattern = 'image', file = '" + ramp + "', strength = 0.5, step = 2}",
+                withBump()));
+            REQUIRE(own);
+            CHECK(own->strength() == 0.5);
+            CHECK(own->step() == 2.0);
+        }
+        THEN("a missing image, a missing file name and a chapter-10 build are refused") {
+            CHECK_THAT(rbtest::loadError(
+                           rbtest::oneMaterialScene("gr.material({1, 1, 1}, {0, 0, 0}, 1)",
+                                                    "m:set_bump_map('no-such-heights.png')\n"),
+                           withBump()),
+                       Contains("scene.lua:6:") && Contains("no-such-heights.png"));
+            CHECK_THAT(rbtest::loadError(rbtest::oneMaterialScene(
+                                             "gr.material({1, 1, 1}, {0, 0, 0}, 1)",
+                                             "m:set_bump{pattern = 'image', strength = 1}\n"),
+                                         withBump()),
+                       Contains("field 'file' must be an image file name"));
+            CHECK_THAT(
+                rbtest::loadError(rbtest::oneMaterialScene("gr.material({1, 1, 1}, {0, 0, 0}, 1)",
+                                                           "m:set_bump_map('" + ramp + "')\n"),
+                                  rbtest::chapters(10)),
+                Contains("method 'set_bump_map' needs chapter 11 (bump)"));
+        }
+    }
+    GIVEN("a lit floor with the ramp map at strength 0.5 under a light straight above") {
+        const std::string lua =
+            "local m = gr.material({1, 1, 1}, {0, 0, 0}, 1)\n"
+            "m:set_bump{pattern = 'image', file = '" +
+            ramp +
+            "', strength = 0.5}\n"
+            "root = gr.node('root')\n"
+            "local floor = gr.cube('floor')\n"
+            "floor:set_material(m)\n"
+            "root:add_child(floor)\n"
+            "gr.render(root, 'out.png', 8, 8, {0.4, 5, 0.5}, {0, -1, 0}, {0, 0, 1}, 50,\n"
+            "          {0, 0, 0}, {gr.light({0.4, 1000, 0.5}, {1, 1, 1}, {1, 0, 0})})\n";
+        const auto on = rbtest::worldFromLua(lua, withBump());
+        const auto off = rbtest::worldFromLua(lua, rbtest::chapters(11, "all,-bump"));
+        const rb::Ray ray{Vec3(0.4, 5, 0.5), Vec3(0, -1, 0)};
+        THEN("it is lit as a floor tilted by atan(0.5 · 256/255); with the feature off, flat") {
+            CHECK(rbtest::traceOne(*on, ray).r ==
+                  Approx(1.0 / std::sqrt(1.0 + 0.25 * dh_du * dh_du)).margin(1e-5));
+            CHECK(rbtest::traceOne(*off, ray).r == Approx(1.0).margin(1e-12));
+        }
+    }
+}
+// [ch11-height-map]

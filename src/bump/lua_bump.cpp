@@ -4,8 +4,11 @@
 //   m:set_bump{pattern = 'ripples', strength = 0.004, wavelength = 0.1, centres = {{..}, {..}}}
 //   m:set_bump{pattern = 'noise', strength = 0.02, scale = 0.5, octaves = 4, seed = 0}
 //   m:set_bump{pattern = 'ramp', strength = 1, slope = {0.5, 0, 0}}
-//   any of them with step = s: the finite-difference step in object units (default: 1/1000 of
-//   the wavelength, the finest noise cell, or 1 for a ramp)
+//   m:set_bump{pattern = 'image', file = 'heights.png', strength = 0.01, step = 1}
+//   m:set_bump_map('heights.png')         seed 002: the image at the default strength 0.01
+//   any procedural one with step = s: the finite-difference step in object units (default:
+//   1/1000 of the wavelength, the finest noise cell, or 1 for a ramp); for an image, step is
+//   in texels (default 1)
 //
 // The strength is the displacement, in the object's own units, of one unit of height; 0 turns
 // the bump off, a negative strength turns bumps into dents.
@@ -14,9 +17,11 @@
 #include <string>
 
 #include "bump/bump.h"
+#include "bump/height_map.h"
 #include "bump/procedural_heights.h"
 #include "core/error.h"
 #include "core/lua_scene.h"
+#include "texture/lua_texture.h"
 
 namespace rb {
 
@@ -87,13 +92,13 @@ int materialSetBump(lua_State* L) {
     auto material = checkMaterial(L, 1, kSetBump, "material");
     if (lua_gettop(L) != 2 || lua_type(L, 2) != LUA_TTABLE)
         throw InputError(std::string(kSetBump) +
-                         " expects one table {pattern = 'ripples' | 'noise' | 'ramp', "
+                         " expects one table {pattern = 'ripples' | 'noise' | 'ramp' | 'image', "
                          "strength = ..., ...}");
     // Read the pattern, then refuse any field it does not know: a typo would go unnoticed.
     if (lua_getfield(L, 2, "pattern") != LUA_TSTRING) {
         lua_pop(L, 1);
         throw InputError(std::string(kSetBump) +
-                         ": field 'pattern' must be 'ripples', 'noise' or 'ramp'");
+                         ": field 'pattern' must be 'ripples', 'noise', 'ramp' or 'image'");
     }
     const std::string pattern = lua_tostring(L, -1);
     lua_pop(L, 1);
@@ -104,9 +109,11 @@ int materialSetBump(lua_State* L) {
         known.insert({"scale", "octaves", "seed"});
     else if (pattern == "ramp")
         known.insert("slope");
+    else if (pattern == "image")
+        known.insert("file");
     else
         throw InputError(std::string(kSetBump) + ": unknown pattern '" + pattern +
-                         "' (expected 'ripples', 'noise' or 'ramp')");
+                         "' (expected 'ripples', 'noise', 'ramp' or 'image')");
     lua_pushnil(L);
     while (lua_next(L, 2) != 0) {
         lua_pop(L, 1);
@@ -126,6 +133,18 @@ int materialSetBump(lua_State* L) {
         throw InputError(std::string(kSetBump) + ": field 'step' must be positive");
     }
     lua_pop(L, 1);
+    if (pattern == "image") {
+        if (lua_getfield(L, 2, "file") != LUA_TSTRING) {
+            lua_pop(L, 1);
+            throw InputError(std::string(kSetBump) + ": field 'file' must be an image file name");
+        }
+        const std::string file = lua_tostring(L, -1);
+        lua_pop(L, 1);
+        material->bump = std::make_shared<HeightMapBump>(
+            std::make_shared<HeightImage>(*sceneImage(L, file, kSetBump)), strength,
+            step > 0.0 ? step : 1.0);
+        return 0;
+    }
     std::shared_ptr<const HeightField> field;
     if (pattern == "ripples") {
         const double lambda = numberField(L, "wavelength", 0.0, true);
@@ -157,10 +176,25 @@ int materialSetBump(lua_State* L) {
 }
 // [lua-set-bump]
 
+// [lua-set-bump-map]
+/// material:set_bump_map(file): seed 002's height map, at kDefaultHeightMapStrength.
+int materialSetBumpMap(lua_State* L) {
+    const char* call = "material:set_bump_map";
+    noteEraSign(L, Era::Modern, "seed 002's set_bump_map");
+    auto material = checkMaterial(L, 1, call, "material");
+    checkArgCount(L, call, 2, 2, "(file)");
+    const std::string file = checkString(L, 2, call, "file");
+    material->bump = std::make_shared<HeightMapBump>(
+        std::make_shared<HeightImage>(*sceneImage(L, file, call)), kDefaultHeightMapStrength, 1.0);
+    return 0;
+}
+// [lua-set-bump-map]
+
 }  // namespace
 
 void bindBump(LuaBindings& lua) {
     lua.materialMethod("set_bump", luaGuard<materialSetBump>);
+    lua.materialMethod("set_bump_map", luaGuard<materialSetBumpMap>);
 }
 
 }  // namespace rb
