@@ -1,8 +1,9 @@
 -- Chapter 11: bump mapping. Every surface here is geometrically smooth: a flat pond, two
--- spheres and a flat wall. Only their shading normals are bumped. The pond has ripples from
--- two drops (material:set_bump with pattern 'ripples') and reflects the scene through them.
--- The orange ball is rough, with four octaves of gradient noise. The steel ball is hammered,
--- with coarser noise on a mirror. Look at the silhouettes: they stay perfectly round,
+-- spheres, a block and flat walls. Only their shading normals are bumped. The pond has ripples
+-- from two drops (material:set_bump with pattern 'ripples') and reflects the scene through
+-- them. The orange ball is rough, with four octaves of gradient noise. The steel ball is
+-- hammered, with coarser noise on a mirror. The block's tiles come from a height map (seed
+-- 002's set_bump_map). Look at the silhouettes: they stay perfectly round and straight,
 -- because a bump moves no geometry (the method's known limit). Compare: --features=all,-bump
 -- renders the same scene unbumped.
 gr.antialias{sampler = 'jittered', samples = 4}
@@ -29,6 +30,18 @@ steel:set_bump{pattern = 'noise', strength = 0.008, scale = 0.25, octaves = 2, s
 local hammered = gr.nh_sphere('hammered', {1.2, -0.2, -5}, 0.9)
 hammered:set_material(steel)
 
+-- A tiled block: seed 002's set_bump_map reads heights from a grey image (tiles 1, grooves 0;
+-- made by scenes/assets/tiles-height.py) at the default strength, 0.01 object units per unit of
+-- height. The map covers each face once (chapter 10's box-face coordinates).
+local stone = gr.material({0.55, 0.6, 0.65}, {0.3, 0.3, 0.3}, 30)
+stone:set_bump_map('assets/tiles-height.png')
+local block = gr.cube('block')
+block:translate(-0.5, 0, -0.5)
+block:scale(1.1, 1.1, 1.1)
+block:rotate('y', 35)
+block:translate(2.6, -0.95, -3.2)
+block:set_material(stone)
+
 local plaster = gr.material({0.7, 0.65, 0.55}, {0.05, 0.05, 0.05}, 5)
 local wall = gr.cube('wall')
 wall:scale(30, 40, 1)
@@ -42,7 +55,7 @@ back:translate(-15, -1.5, 6)
 back:set_material(plaster)
 
 local scene = gr.node('root')
-for _, n in ipairs({pond, orange, hammered, wall, back}) do scene:add_child(n) end
+for _, n in ipairs({pond, orange, hammered, block, wall, back}) do scene:add_child(n) end
 
 local sun = gr.light({-5, 6, 2}, {0.9, 0.88, 0.8}, {1, 0, 0})
 local fill = gr.light({6, 3, 1}, {0.25, 0.27, 0.3}, {1, 0, 0})
