@@ -61,6 +61,14 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the scene's antialiasing (gr.antialias or aa_sampler) " +
                            "is ignored: it needs chapter 8 (adaptive_aa), and " +
                            whyAbsent(features, "adaptive_aa", 8));
+    // Chapter 11's bumps, when the chapter is built but switched off (only a build with it can
+    // have put a bump on a material).
+    if (!features.enabled("bump") &&
+        std::any_of(instances.begin(), instances.end(),
+                    [](const Instance& i) { return i.material && i.material->bump; }))
+        warnings.push_back(job.where + ": the scene's bumps (set_bump or set_bump_map) are " +
+                           "ignored: they need chapter 11 (bump), and " +
+                           whyAbsent(features, "bump", 11));
     // The course framework writes PNG data whatever the name says; so does rt, but says so.
     if (!hasPngExtension(output))
         warnings.push_back(job.where + ": the output '" + output +
