@@ -684,3 +684,29 @@ SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11
     }
 }
 // [ch11-height-map]
+
+// [ch11-height-map-stability]
+SCENARIO("a height map steep enough to flip the normal is held on the viewer's side",
+         "[ch11][stability]") {
+    rbtest::TempDir dir;
+    const auto heights =
+        std::make_shared<rb::HeightImage>(*rb::loadTextureImage(writeRampPng(dir)));
+    GIVEN("the ramp map at strengths that flip the raw normal, seen from the uphill side") {
+        rb::Box box;
+        const rb::Instance cube = rbtest::makeInstance(box, rb::Mat4(1.0));
+        // Source: the bumped normal leans to −x by atan(a · 256/255); seen from +x at 60° from
+        // the normal, v = (√3/2, 1/2, 0), it faces away once a · 256/255 > 1/√3.
+        const rb::Ray ray{Vec3(0.5 + 2 * std::sqrt(3.0), 3, 0.5), Vec3(-2 * std::sqrt(3.0), -2, 0)};
+        for (const double a : {1.0, 1e6, 1e300}) {
+            const rb::HeightMapBump bump(heights, a, 1.0);
+            rb::Hit hit = hitOf(cube, ray);
+            bump.perturb(ray, hit);
+            THEN("the normal is finite and held at cos = kMinCosView on the viewer's side") {
+                REQUIRE(rb::isFinite(hit.ns));
+                CHECK(glm::dot(hit.ns, -glm::normalize(ray.d)) ==
+                      Approx(rb::kMinCosView).margin(1e-9));
+            }
+        }
+    }
+}
+// [ch11-height-map-stability]
