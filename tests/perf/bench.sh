@@ -228,6 +228,36 @@ if [ -x "$build/rt_ch8" ] && [ -x "$build/rt_ch7" ]; then
   done
 fi
 
+# ---- Chapter 10 costs nothing when a scene uses no texture ---------------------------------
+# The chapter-2 and chapter-8 scenes, rendered by the chapter-8 binary and by the chapter-10
+# binary with every feature on, alternating, 1 thread, 3 x BENCH_RUNS runs each. Neither scene
+# has a textured material, so chapter 10 installs no texture lookup and trace() pays one null
+# test per hit.
+if [ -x "$build/rt_ch10" ] && [ -x "$build/rt_ch8" ]; then
+  progress "chapter 10 unused"
+  say ""
+  say "Chapter 10 unused costs nothing: rt_ch8 against rt_ch10 --features=all, 1 thread, $feature_runs alternating runs,"
+  say "render s, ratio of medians (target within 2%):"
+  for entry in "scenes/chapter02-phong.lua 1600x1200" "scenes/chapter08-antialiasing.lua 256x192"; do
+    read -r scene size <<<"$entry"
+    r8=(); r10=()
+    for ((i = 0; i < feature_runs; i++)); do
+      r8+=("$( (cd "$root" && "$build/rt_ch8" --quiet --stats --threads 1 --size "$size" --output "$tmp/r8.png" "$scene" 2>&1) |
+               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
+      r10+=("$( (cd "$root" && "$build/rt_ch10" --features=all --quiet --stats --threads 1 --size "$size" --output "$tmp/r10.png" "$scene" 2>&1) |
+               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
+    done
+    read -r m8 _ < <(printf "%s\n" "${r8[@]}" | stats)
+    read -r m10 _ < <(printf "%s\n" "${r10[@]}" | stats)
+    same=$(cmp -s "$tmp/r8.png" "$tmp/r10.png" && echo "images byte-identical" || echo "images DIFFER")
+    line=$(awk -v a="$m8" -v b="$m10" -v sa="$(printf "%s\n" "${r8[@]}" | spread)" -v sb="$(printf "%s\n" "${r10[@]}" | spread)" \
+             -v n="$(basename "$scene" .lua) $size" -v same="$same" 'BEGIN { d = (b / a - 1) * 100
+               printf "  %-28s rt_ch8 %s, rt_ch10 %s: ratio %.3f (%+.1f%%) %s; %s", n, sa, sb, b / a, d,
+                      (d <= 2 && d >= -2) ? "met" : "MISSED", same }')
+    say "$line"
+  done
+fi
+
 # ---- Adaptive antialiasing against POV-Ray's +AM2, at equal error ---------------------------
 if [ -x "$build/tests/perf/ch08/ch08_aa_charts" ]; then
   progress "adaptive antialiasing against POV-Ray +AM2"

@@ -1,0 +1,6 @@
+-- needs-feature: texture
+-- A PNG cut off half way through its compressed data.
+-- expect: material:set_texture_map: 
+-- expect: images/truncated.png: the image is truncated or corrupt
+local m = gr.material({1, 1, 1}, {0, 0, 0}, 1)
+m:set_texture_map('images/truncated.png') --!
