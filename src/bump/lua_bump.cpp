@@ -182,7 +182,9 @@ int materialSetBumpMap(lua_State* L) {
     const char* call = "material:set_bump_map";
     noteEraSign(L, Era::Modern, "seed 002's set_bump_map");
     auto material = checkMaterial(L, 1, call, "material");
-    checkArgCount(L, call, 2, 2, "(file)");
+    if (lua_gettop(L) != 2)  // self and the file
+        throw InputError(std::string(call) + " expects 1 argument (file), got " +
+                         std::to_string(lua_gettop(L) - 1));
     const std::string file = checkString(L, 2, call, "file");
     material->bump = std::make_shared<HeightMapBump>(
         std::make_shared<HeightImage>(*sceneImage(L, file, call)), kDefaultHeightMapStrength, 1.0);
