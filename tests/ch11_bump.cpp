@@ -377,6 +377,11 @@ SCENARIO("gradient noise is zero on the lattice, bounded and smooth", "[ch11]") 
                         6.0 * glm::length(d));
             }
         }
+        THEN("far beyond any lattice index, and at NaN, it is 0, not undefined behaviour") {
+            CHECK(rb::gradientNoise(Vec3(1e300, 0.5, 0.5), 3) == 0.0);
+            CHECK(rb::gradientNoise(Vec3(0.5, -1e19, 0.5), 3) == 0.0);
+            CHECK(rb::gradientNoise(Vec3(0.5, 0.5, std::nan("")), 3) == 0.0);
+        }
         THEN("another seed gives another function") {
             const Vec3 x(0.37, 1.21, -2.5);
             CHECK(rb::gradientNoise(x, 3) != rb::gradientNoise(x, 4));
