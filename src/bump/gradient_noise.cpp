@@ -65,7 +65,7 @@ double gradientNoise(const Vec3& x, std::uint32_t seed) {
     // Find the lattice cell and the position inside it.
     const Vec3 cell = glm::floor(x);
     // Beyond 2^62 (or NaN) a lattice index does not fit an integer: no noise there.
-    if (!(maxAbsComponent(cell) < 0x1p62)) return 0.0;
+    if (!isFinite(cell) || !(maxAbsComponent(cell) < 0x1p62)) return 0.0;
     const Vec3 f = x - cell;
     const auto i = static_cast<std::int64_t>(cell.x), j = static_cast<std::int64_t>(cell.y),
                k = static_cast<std::int64_t>(cell.z);
