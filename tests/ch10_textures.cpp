@@ -208,6 +208,22 @@ SCENARIO("the planar mapping projects onto the ground plane", "[ch10]") {
     }
 }
 
+SCENARIO("the cylindrical mapping is the longitude about y and the height", "[ch10]") {
+    GIVEN("points around the y axis at radius 0.3 and known angles and heights") {
+        THEN("u = φ/2π as on the sphere and v = y, with dp/du = 2π(z, 0, -x)") {
+            // Source: φ = 90° is the −z direction, φ = 180° the −x direction (uv_mapping.h).
+            const rb::SurfaceUV a = rb::cylindricalUV(Vec3(0, 0.4, -0.3));
+            CHECK(a.uv.x == Approx(0.25));
+            CHECK(a.uv.y == Approx(0.4));
+            const rb::SurfaceUV b = rb::cylindricalUV(Vec3(-0.3, -2, 0));
+            CHECK(b.uv.x == Approx(0.5));
+            CHECK(b.uv.y == Approx(-2));
+            CHECK(glm::length(a.dpdu - 2 * kPi * Vec3(-0.3, 0, 0)) < 1e-12);
+            CHECK(a.dpdv == Vec3(0, 1, 0));
+        }
+    }
+}
+
 // [ch10-mesh-uv]
 SCENARIO("a mesh's (u, v) is its corners' vt blended by barycentrics", "[ch10]") {
     GIVEN("seed 000's plane.obj: a quad on y = 0 with vt at its corners") {
@@ -567,7 +583,8 @@ SCENARIO("raybook's gr.texture table and the seeds' calls bind textures to mater
             CHECK_THAT(error("gr.texture{checker = {{1,0,0}, {0,0,1}}, scale = {1, 1/0}}\n"),
                        Contains("field 'scale'"));
             CHECK_THAT(error("gr.texture{checker = {{1,0,0}, {0,0,1}}, mapping = 'cube'}\n"),
-                       Contains("field 'mapping' must be one of 'surface', 'planar', 'spherical'"));
+                       Contains("field 'mapping' must be one of 'surface', 'planar', "
+                                "'spherical', 'cylindrical'"));
             CHECK_THAT(error("gr.texture(m)\n"), Contains("gr.texture"));
             CHECK_THAT(error("gr.texture(42, 'a.png')\n"), Contains("must be a material"));
             CHECK_THAT(error("m:set_texture('bump', 'a.png')\n"), Contains("must be 'kd' or 'ks'"));
@@ -642,8 +659,11 @@ SCENARIO("textures change the picture only when the feature is on and a scene us
                 CHECK(on->pipeline.textureLookup != nullptr);
                 CHECK_FALSE(rbtest::bitIdentical(rbtest::renderSmall(*on),
                                                  rbtest::renderSmall(*plainWorld)));
-                CHECK(rbtest::bitIdentical(rbtest::renderWorld(*on, {.threads = 1}),
-                                           rbtest::renderWorld(*on, {.threads = 2})));
+                rb::RenderSettings one, two;
+                one.threads = 1;
+                two.threads = 2;
+                CHECK(rbtest::bitIdentical(rbtest::renderWorld(*on, one),
+                                           rbtest::renderWorld(*on, two)));
             }
         }
     }

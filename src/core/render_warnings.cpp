@@ -61,6 +61,14 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the scene's antialiasing (gr.antialias or aa_sampler) " +
                            "is ignored: it needs chapter 8 (adaptive_aa), and " +
                            whyAbsent(features, "adaptive_aa", 8));
+    // Chapter 10's textures, when the chapter is built but switched off (only a build with it
+    // can have put a texture on a material).
+    if (!features.enabled("texture") &&
+        std::any_of(instances.begin(), instances.end(),
+                    [](const Instance& i) { return i.material && !i.material->textures.empty(); }))
+        warnings.push_back(job.where + ": the scene's textures (gr.texture, set_texture or " +
+                           "set_texture_map) are ignored: they need chapter 10 (texture), and " +
+                           whyAbsent(features, "texture", 10));
     // Chapter 11's bumps, when the chapter is built but switched off (only a build with it can
     // have put a bump on a material).
     if (!features.enabled("bump") &&

@@ -178,7 +178,8 @@ int textureTable(lua_State* L) {
             throw InputError("gr.texture: 'wrap' and 'filter' apply to images, not the checker");
         texture = std::make_shared<CheckerTexture>(colours[0], colours[1]);
     }
-    const int mapping = choiceField(L, "mapping", {"surface", "planar", "spherical"});
+    const int mapping =
+        choiceField(L, "mapping", {"surface", "planar", "spherical", "cylindrical"});
     if (mapping >= 0) texture->mapping = static_cast<UVMapping>(mapping);
     texture->scale = pairField(L, "scale", Vec2(1.0));
     texture->offset = pairField(L, "offset", Vec2(0.0));

@@ -41,7 +41,8 @@ Colour sampleNearest(const TextureImage& image, const Vec2& st, Wrap wrap);
 Colour sampleBilinear(const TextureImage& image, const Vec2& st, Wrap wrap);
 
 /// Bytes that loading a width × height image takes at its peak: stb's decoded pixels (up to
-/// 12 per pixel, for a float .hdr) and the linear texels (12).
+/// 12 per pixel, for a float .hdr; for a PNG its inflated rows and the pixels) and the linear
+/// texels (12). An estimate from stb_image's buffers, not a measurement.
 std::uint64_t textureImageBytes(std::uint64_t width, std::uint64_t height);
 
 /// Load an image file that stb_image reads (PNG, JPEG, BMP, TGA, GIF, PSD, PIC, PNM, HDR).

@@ -65,6 +65,15 @@ SurfaceUV planarUV(const Vec3& p) {
     return SurfaceUV{Vec2(p.x, -p.z), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.0, -1.0)};
 }
 
+SurfaceUV cylindricalUV(const Vec3& p) {
+    constexpr double pi = std::numbers::pi;
+    double phi = std::atan2(-p.z, p.x);
+    if (phi < 0.0) phi += 2.0 * pi;
+    // p = (r cosφ, y, −r sinφ): dp/du = 2π·(z, 0, −x), dp/dv = (0, 1, 0).
+    return SurfaceUV{Vec2(phi / (2.0 * pi), p.y), 2.0 * pi * Vec3(p.z, 0.0, -p.x),
+                     Vec3(0.0, 1.0, 0.0)};
+}
+
 // [mesh-uv]
 SurfaceUV meshUV(const Mesh& mesh, std::uint32_t triangle, const Vec2& barycentric, const Vec3& p) {
     const TriangleTexcoords* t = mesh.texcoords(triangle);
@@ -86,6 +95,8 @@ SurfaceUV surfaceUV(const Hit& hit, UVMapping mapping) {
     const Shape* shape = instance.shape;
     if (mapping == UVMapping::Planar) {
         s = planarUV(p);
+    } else if (mapping == UVMapping::Cylindrical) {
+        s = cylindricalUV(p);
     } else if (mapping == UVMapping::Spherical || dynamic_cast<const Sphere*>(shape)) {
         // The direction from the centre; on the unit sphere dp/du and dp/dv scale by |p| = 1.
         const double r = glm::length(p);

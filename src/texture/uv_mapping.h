@@ -11,9 +11,10 @@ class Mesh;
 
 /// How a texture finds its (u, v) on a surface.
 enum class UVMapping {
-    Surface,    ///< The shape's own: sphere angles, box faces, mesh `vt` (planar without).
-    Planar,     ///< The object-space ground plane: u = x, v = −z.
-    Spherical,  ///< The sphere's angles of the direction from the object's origin.
+    Surface,      ///< The shape's own: sphere angles, box faces, mesh `vt` (planar without).
+    Planar,       ///< The object-space ground plane: u = x, v = −z.
+    Spherical,    ///< The sphere's angles of the direction from the object's origin.
+    Cylindrical,  ///< The longitude about the object's y axis, and the height: u = φ/2π, v = y.
 };
 
 /// A texture coordinate and the derivatives of the surface position along it: dp/du and dp/dv
@@ -37,6 +38,10 @@ SurfaceUV boxFaceUV(const Vec3& p, int axis);
 /// The planar projection onto the object-space ground plane: u = x, v = −z (seen from above
 /// with −z up, the image is upright).
 SurfaceUV planarUV(const Vec3& p);
+
+/// The cylindrical projection about the object-space y axis: u = φ/2π with φ measured as on the
+/// sphere (from +x towards −z), v = y. For lathed shapes such as a cup.
+SurfaceUV cylindricalUV(const Vec3& p);
 
 /// A mesh triangle's (u, v): its corners' `vt` blended with the barycentrics (b1, b2) of the
 /// hit, (1 − b1 − b2)·t0 + b1·t1 + b2·t2. Falls back to planarUV(p) when it has no `vt`.

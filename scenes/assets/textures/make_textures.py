@@ -10,6 +10,9 @@ crate.jpg   64 x 64, planks in a frame with an arrow pointing up (v) and a notch
             right (u): on every face of a box the arrow must point up and the notch right.
             Written as JPEG (netpbm's pnmtojpeg) because seed 000's gr.texture names .jpg files.
 poster.png  96 x 64, a sunset: sky, sun, hills; for seed 000's plane.obj (its vt).
+wood.jpg    128 x 64, horizontal planks with grain, a stand-in for seed 000's JapanWood.jpg.
+cup.png     128 x 32, a paper cup's printed band (red, a white wave, brown edges), for seed
+            002's cup with mapping = 'cylindrical'.
 Pure Python (zlib) for PNG, so nothing but Debian's python3 and netpbm is needed.
 """
 import math
@@ -83,7 +86,31 @@ def poster(x, y, w=96, h=64):
     return (int(250 - 120 * v), int(140 - 40 * v), int(90 + 120 * v))
 
 
+def wood(x, y, w=128, h=64):
+    plank = y // 16
+    seam = y % 16 == 0 or (x + 37 * plank) % 96 == 0
+    ring = math.sin(0.045 * (x + 23 * plank) * (1.0 + 0.15 * math.sin(0.3 * y + plank)) +
+                    0.8 * math.sin(0.21 * y + 1.7 * plank))
+    shade = 1.0 - 0.08 * (plank % 2)
+    if seam:
+        return (70, 44, 25)
+    return (int((176 + 22 * ring) * shade), int((124 + 16 * ring) * shade),
+            int((78 + 10 * ring) * shade))
+
+
+def cup(x, y, w=128, h=32):
+    t = 1.0 - (y + 0.5) / h                  # v up
+    if t < 0.12 or t > 0.88:
+        return (110, 60, 30)
+    wave = 0.5 + 0.18 * math.sin(2 * math.pi * 3 * (x + 0.5) / w)
+    if abs(t - wave) < 0.09:
+        return (245, 240, 230)
+    return (190, 30, 35)
+
+
 if __name__ == "__main__":
     write_png(HERE / "globe.png", 128, 64, globe)
     write_jpeg(HERE / "crate.jpg", 64, 64, crate)
     write_png(HERE / "poster.png", 96, 64, poster)
+    write_jpeg(HERE / "wood.jpg", 128, 64, wood)
+    write_png(HERE / "cup.png", 128, 32, cup)
