@@ -598,6 +598,18 @@ SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11
             }
         }
     }
+    GIVEN("the same face with the image repeated twice along u (scale = {2, 1})") {
+        rb::Box box;
+        const rb::Instance cube = rbtest::makeInstance(box, rb::Mat4(1.0));
+        const rb::HeightMapBump bump(heights, 0.4, 1.0, rb::UVMapping::Surface, rb::Vec2(2, 1));
+        const rb::Ray ray{Vec3(0.37, 3, 0.6), Vec3(0, -1, 0)};
+        rb::Hit hit = hitOf(cube, ray);
+        bump.perturb(ray, hit);
+        THEN("the slope doubles: atan(0.4 · 2 · 256/255)") {
+            // Source: s = 2u, so dh/du = 2 dh/ds.
+            CHECK(angleBetween(hit.ns, hit.ng) == Approx(std::atan(0.4 * 2 * dh_du)).margin(1e-5));
+        }
+    }
     GIVEN("the unit sphere at its equator, where dp/du has length 2π") {
         rb::Sphere sphere;
         const rb::Instance ball = rbtest::makeInstance(sphere, rb::Mat4(1.0));
@@ -641,9 +653,10 @@ SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11
             CHECK(seed->strength() == rb::kDefaultHeightMapStrength);
             CHECK(seed->step() == 1.0);
             CHECK(seed->image().width() == 256);
-            const auto own = std::dynamic_pointer_cast<const rb::HeightMapBump>(bumpOf(
-                "m:set_bump{pattern = 'image', file = '" + ramp + "', strength = 0.5, step = 2}",
-                withBump()));
+            const auto own = std::dynamic_pointer_cast<const rb::HeightMapBump>(
+                bumpOf("m:set_bump{pattern = 'image', file = '" + ramp +
+                           "', strength = 0.5, step = 2, mapping = 'cylindrical', scale = {3, 1}}",
+                       withBump()));
             REQUIRE(own);
             CHECK(own->strength() == 0.5);
             CHECK(own->step() == 2.0);
@@ -659,6 +672,21 @@ SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11
                                              "m:set_bump{pattern = 'image', strength = 1}\n"),
                                          withBump()),
                        Contains("field 'file' must be an image file name"));
+            CHECK_THAT(
+                rbtest::loadError(rbtest::oneMaterialScene(
+                                      "gr.material({1, 1, 1}, {0, 0, 0}, 1)",
+                                      "m:set_bump{pattern = 'image', strength = 1, file = '" +
+                                          ramp + "', mapping = 'cubic'}\n"),
+                                  withBump()),
+                Contains("field 'mapping' must be 'surface', 'planar', 'spherical' or "
+                         "'cylindrical'"));
+            CHECK_THAT(
+                rbtest::loadError(rbtest::oneMaterialScene(
+                                      "gr.material({1, 1, 1}, {0, 0, 0}, 1)",
+                                      "m:set_bump{pattern = 'image', strength = 1, file = '" +
+                                          ramp + "', scale = {0, 1}}\n"),
+                                  withBump()),
+                Contains("field 'scale' must not be 0"));
             CHECK_THAT(
                 rbtest::loadError(rbtest::oneMaterialScene("gr.material({1, 1, 1}, {0, 0, 0}, 1)",
                                                            "m:set_bump_map('" + ramp + "')\n"),

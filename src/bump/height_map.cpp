@@ -49,26 +49,32 @@ Vec3 heightMapGradient(double h_u, double h_v, const Vec3& dpdu, const Vec3& dpd
 // [height-map-gradient]
 
 HeightMapBump::HeightMapBump(std::shared_ptr<const HeightImage> image, double strength,
-                             double stepTexels, UVMapping mapping)
-    : image_(std::move(image)), strength_(strength), step_(stepTexels), mapping_(mapping) {}
+                             double stepTexels, UVMapping mapping, const Vec2& scale)
+    : image_(std::move(image)),
+      strength_(strength),
+      step_(stepTexels),
+      mapping_(mapping),
+      scale_(scale) {}
 
 // [height-map-perturb]
 void HeightMapBump::perturb(const Ray& ray, Hit& hit) const {
     if (strength_ == 0.0 || !hit.instance) return;  // a zero bump is no bump
     const Instance& instance = *hit.instance;
-    // The texture coordinates, and the surface's derivatives along them, in object space.
+    // The texture coordinates st = scale · uv, and the surface's derivatives along them
+    // (dp/ds = dp/du / scale.x), in object space.
     const SurfaceUV s = surfaceUV(hit, mapping_);
     const Mat3 toObject(instance.worldToObject);
-    const Vec3 dpdu = toObject * s.dpdu, dpdv = toObject * s.dpdv;
+    const Vec3 dpdu = toObject * s.dpdu / scale_.x, dpdv = toObject * s.dpdv / scale_.y;
+    const Vec2 st = s.uv * scale_;
     const Vec3 n = glm::transpose(Mat3(instance.objectToWorld)) * hit.ns;
     const double length = glm::length(n);
     if (!(length > 0.0) || !std::isfinite(length)) return;
     // Central differences in texture space, `step` texels each way.
     const double du = step_ / image_->width(), dv = step_ / image_->height();
     const double h_u =
-        (image_->at(s.uv + Vec2(du, 0.0)) - image_->at(s.uv - Vec2(du, 0.0))) / (2.0 * du);
+        (image_->at(st + Vec2(du, 0.0)) - image_->at(st - Vec2(du, 0.0))) / (2.0 * du);
     const double h_v =
-        (image_->at(s.uv + Vec2(0.0, dv)) - image_->at(s.uv - Vec2(0.0, dv))) / (2.0 * dv);
+        (image_->at(st + Vec2(0.0, dv)) - image_->at(st - Vec2(0.0, dv))) / (2.0 * dv);
     // The surface gradient, the bumped normal, and back to world space on the viewer's side.
     const Vec3 g = heightMapGradient(h_u, h_v, dpdu, dpdv, n / length);
     const Vec3 bumped = bumpedNormal(n / length, g, strength_);

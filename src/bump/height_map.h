@@ -48,9 +48,11 @@ Vec3 heightMapGradient(double h_u, double h_v, const Vec3& dpdu, const Vec3& dpd
 /// central differences of `step` texels.
 class HeightMapBump final : public NormalPerturbation {
   public:
-    /// A bump of `image` at strength (finite), with a finite-difference step in texels (> 0).
+    /// A bump of `image` at strength (finite), with a finite-difference step in texels (> 0),
+    /// (u, v) from `mapping`, and the image repeated scale.x times along u and scale.y along v
+    /// (both non-zero).
     HeightMapBump(std::shared_ptr<const HeightImage> image, double strength, double stepTexels,
-                  UVMapping mapping = UVMapping::Surface);
+                  UVMapping mapping = UVMapping::Surface, const Vec2& scale = Vec2(1.0));
     /// Tilt hit.ns by the map's gradient, in the instance's object space; strength 0 leaves it.
     void perturb(const Ray& ray, Hit& hit) const override;
     /// The heights.
@@ -65,6 +67,7 @@ class HeightMapBump final : public NormalPerturbation {
     double strength_;
     double step_;
     UVMapping mapping_;
+    Vec2 scale_;
 };
 
 }  // namespace rb

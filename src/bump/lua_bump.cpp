@@ -4,7 +4,8 @@
 //   m:set_bump{pattern = 'ripples', strength = 0.004, wavelength = 0.1, centres = {{..}, {..}}}
 //   m:set_bump{pattern = 'noise', strength = 0.02, scale = 0.5, octaves = 4, seed = 0}
 //   m:set_bump{pattern = 'ramp', strength = 1, slope = {0.5, 0, 0}}
-//   m:set_bump{pattern = 'image', file = 'heights.png', strength = 0.01, step = 1}
+//   m:set_bump{pattern = 'image', file = 'heights.png', strength = 0.01, step = 1,
+//              mapping = 'surface' | 'planar' | 'spherical' | 'cylindrical', scale = {su, sv}}
 //   m:set_bump_map('heights.png')         seed 002: the image at the default strength 0.01
 //   any procedural one with step = s: the finite-difference step in object units (default:
 //   1/1000 of the wavelength, the finest noise cell, or 1 for a ramp); for an image, step is
@@ -110,7 +111,7 @@ int materialSetBump(lua_State* L) {
     else if (pattern == "ramp")
         known.insert("slope");
     else if (pattern == "image")
-        known.insert("file");
+        known.insert({"file", "mapping", "scale"});
     else
         throw InputError(std::string(kSetBump) + ": unknown pattern '" + pattern +
                          "' (expected 'ripples', 'noise', 'ramp' or 'image')");
@@ -140,9 +141,34 @@ int materialSetBump(lua_State* L) {
         }
         const std::string file = lua_tostring(L, -1);
         lua_pop(L, 1);
+        // Where (u, v) comes from: chapter 10's mappings, by the names gr.texture uses.
+        UVMapping mapping = UVMapping::Surface;
+        if (lua_getfield(L, 2, "mapping") != LUA_TNIL) {
+            const std::string name = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "";
+            const char* names[] = {"surface", "planar", "spherical", "cylindrical"};
+            int k = 0;
+            while (k < 4 && name != names[k]) ++k;
+            if (k == 4) {
+                lua_pop(L, 1);
+                throw InputError(std::string(kSetBump) +
+                                 ": field 'mapping' must be 'surface', 'planar', 'spherical' "
+                                 "or 'cylindrical'");
+            }
+            mapping = static_cast<UVMapping>(k);
+        }
+        lua_pop(L, 1);
+        // How often the image repeats along u and v.
+        Vec2 scale(1.0);
+        if (lua_getfield(L, 2, "scale") != LUA_TNIL) {
+            const auto v = checkTupleAt(L, -1, 2, std::string(kSetBump) + ": field 'scale'");
+            scale = Vec2(v[0], v[1]);
+        }
+        lua_pop(L, 1);
+        if (scale.x == 0.0 || scale.y == 0.0)
+            throw InputError(std::string(kSetBump) + ": field 'scale' must not be 0");
         material->bump = std::make_shared<HeightMapBump>(
             std::make_shared<HeightImage>(*sceneImage(L, file, kSetBump)), strength,
-            step > 0.0 ? step : 1.0);
+            step > 0.0 ? step : 1.0, mapping, scale);
         return 0;
     }
     std::shared_ptr<const HeightField> field;
