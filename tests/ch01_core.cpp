@@ -81,9 +81,9 @@ struct CodeScene {
     rbtest::TestWorld world;
     CodeScene() {
         const rb::Material* red =
-            world.material(rb::Material{rb::Colour(0.8, 0.2, 0.1), rb::Colour(0.5), 20.0, {}});
+            world.material(rb::Material{rb::Colour(0.8, 0.2, 0.1), rb::Colour(0.5), 20.0, {}, {}});
         const rb::Material* grey =
-            world.material(rb::Material{rb::Colour(0.6), rb::Colour(0.0), 1.0, {}});
+            world.material(rb::Material{rb::Colour(0.6), rb::Colour(0.0), 1.0, {}, {}});
         world.addBox(
             glm::scale(glm::translate(rb::Mat4(1.0), Vec3(-5, -1.5, -5)), Vec3(10, 0.5, 10)), grey,
             "floor");
@@ -120,7 +120,7 @@ struct AmbientWall {
     static constexpr double kRadiance = 0.6 * 0.25;
     AmbientWall() {
         const rb::Material* grey =
-            world.material(rb::Material{rb::Colour(0.6), rb::Colour(0.0), 1.0, {}});
+            world.material(rb::Material{rb::Colour(0.6), rb::Colour(0.0), 1.0, {}, {}});
         world.addBox(rbtest::boxFromTo(Vec3(-50, -50, -1), Vec3(50, 50, 0)), grey, "wall");
         world.scene.ambient = rb::Colour(0.25);
         world.build(rbtest::coreFeatures());

@@ -45,6 +45,7 @@
 #include "core/world.h"
 #include "adaptive_aa/adaptive_aa.h"
 #include "smooth_mesh/smooth_mesh.h"
+#include "bump/bump.h"
 #include "glossy/glossy.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
@@ -97,7 +98,7 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::refractionFeature(), rb::softShadowsFeature(),
                                           rb::glossyFeature(),     rb::adaptiveAaFeature(),
                                           rb::smoothMeshFeature(),  rb::textureFeature(),
-                                          rb::toneMapFeature()};
+                                          rb::bumpFeature(),        rb::toneMapFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

@@ -117,6 +117,7 @@ constexpr LaterCall kLaterCalls[] = {
     {"set_texture_map", 10, "texture"},
     {"set_texture", 10, "texture"},
     {"set_bump_map", 11, "bump"},
+    {"set_bump", 11, "bump"},
     {"quadrics", 15, "quadrics"},
     {"cone", 15, "quadrics"},
     {"cylinder", 15, "quadrics"},

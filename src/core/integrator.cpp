@@ -11,6 +11,9 @@ Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters
     if (!scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit))
         return scene_.background;
     for (const auto& normal : pipeline_.normals) normal->apply(ray, hit);
+    // A bumped material tilts the shading normal before anything shades with it (chapter 11).
+    if (pipeline_.perturbNormals && hit.material && hit.material->bump)
+        hit.material->bump->perturb(ray, hit);
     // Local shading, then each chapter's secondary term.
     const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight};
     Colour colour;

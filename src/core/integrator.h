@@ -102,6 +102,9 @@ struct Pipeline {
     std::shared_ptr<const PixelSampler> pixelSampler;
     /// Textured material colours (chapter 10), or null: the materials' own colours.
     TextureLookup textureLookup = nullptr;
+    /// Chapter 11: apply the bump a hit's material carries to its shading normal. Set only
+    /// when the feature is on and some material has a bump, so other scenes skip the lookup.
+    bool perturbNormals = false;
     /// What happens to the film after the render (chapter 12's tone map), or null: the film is
     /// written as it is, each channel clamped to [0, 1] as the CS488 framework does.
     std::shared_ptr<const PostProcess> postProcess;

@@ -452,7 +452,7 @@ int pushLenientStandIn(lua_State* L, const std::string& name) {
     for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (lower.find("mat") != std::string::npos) {
         pushMaterial(
-            L, std::make_shared<Material>(Material{Colour(0.8, 0.2, 0.8), Colour(0.0), 1.0, {}}));
+            L, std::make_shared<Material>(Material{Colour(0.8, 0.2, 0.8), Colour(0.0), 1.0, {}, {}}));
     } else if (lower.find("light") != std::string::npos) {
         pushLight(L, PointLight{Vec3(0.0), Colour(0.0), Vec3(1.0, 0.0, 0.0)});
     } else {

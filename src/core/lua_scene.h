@@ -65,7 +65,7 @@ struct SceneBuilder {
     std::shared_ptr<const Shape> unitSphere, unitCube;              ///< Shared by all nodes.
     /// For nodes without a material: grey, no highlight. Shared with each render.
     std::shared_ptr<const Material> defaultMaterial =
-        std::make_shared<const Material>(Material{Colour(0.5), Colour(0.0), 1.0, {}});
+        std::make_shared<const Material>(Material{Colour(0.5), Colour(0.0), 1.0, {}, {}});
     std::map<std::string, int> materialFields;  ///< Named material parameters, by chapter.
     /// What gr.option accepts for one name.
     struct OptionSpec {

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/normal_perturbation.h"
 #include "core/vec.h"
 
 namespace rb {
@@ -23,6 +24,8 @@ struct Material {
     /// Chapter parameters by name, e.g. "reflect". std::less<> lets a lookup compare a string
     /// literal directly, without building a std::string on every hit.
     std::map<std::string, double, std::less<>> params;
+    /// Tilts the shading normal where this material is hit (chapter 11's bump), or null.
+    std::shared_ptr<const NormalPerturbation> bump;
 
     /// Textures by slot: "kd" and "ks" replace those colours (chapter 10), "bump" is chapter
     /// 11's height map. Empty for an untextured material, which then costs nothing to shade.

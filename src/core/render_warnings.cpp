@@ -69,6 +69,14 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the scene's textures (gr.texture, set_texture or " +
                            "set_texture_map) are ignored: they need chapter 10 (texture), and " +
                            whyAbsent(features, "texture", 10));
+    // Chapter 11's bumps, when the chapter is built but switched off (only a build with it can
+    // have put a bump on a material).
+    if (!features.enabled("bump") &&
+        std::any_of(instances.begin(), instances.end(),
+                    [](const Instance& i) { return i.material && i.material->bump; }))
+        warnings.push_back(job.where + ": the scene's bumps (set_bump or set_bump_map) are " +
+                           "ignored: they need chapter 11 (bump), and " +
+                           whyAbsent(features, "bump", 11));
     // Chapter 12's display settings, when the chapter is built but switched off.
     bool toneMapAsked = false;
     for (const char* name : {"tone_map", "exposure", "srgb"}) {
