@@ -33,6 +33,7 @@ struct Scene {
 
 class Integrator;
 class PixelSampler;
+class CameraRayGenerator;
 
 /// What a shading routine may use: the scene, the integrator (to trace more rays), this
 /// sample's random stream, this thread's counters, the recursion depth and the media the
@@ -83,6 +84,9 @@ struct Pipeline {
     /// Where a pixel's camera rays go (chapter 8's supersampling), or null: the core's one
     /// ray through each pixel centre (or --spp random positions).
     std::shared_ptr<const PixelSampler> pixelSampler;
+    /// How an image position becomes a camera ray (chapter 13's thin lens), or null: the
+    /// pinhole camera's ray.
+    std::shared_ptr<const CameraRayGenerator> cameraRays;
 };
 
 /// Traces rays through a scene with a pipeline.

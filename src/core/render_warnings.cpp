@@ -61,6 +61,12 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the scene's antialiasing (gr.antialias or aa_sampler) " +
                            "is ignored: it needs chapter 8 (adaptive_aa), and " +
                            whyAbsent(features, "adaptive_aa", 8));
+    // Chapter 13's own lens, when the chapter is built but switched off.
+    const auto aperture = job.options.find("dof_aperture");
+    if (aperture != job.options.end() && aperture->second != 0.0 && !features.enabled("dof"))
+        warnings.push_back(job.where + ": the scene's lens (gr.lens or dof_aperture) is " +
+                           "ignored: it needs chapter 13 (dof), and " +
+                           whyAbsent(features, "dof", 13));
     // The course framework writes PNG data whatever the name says; so does rt, but says so.
     if (!hasPngExtension(output))
         warnings.push_back(job.where + ": the output '" + output +
