@@ -1,7 +1,7 @@
 #include "adaptive_aa/adaptive_aa.h"
 
-#include <charconv>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -131,7 +131,8 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
     }
     // A lens that needs more rays per pixel raises the count (to the next square for a grid):
     // its samples are paired with the pixel's, not multiplied by them.
-    const int samples = lens ? std::max(settings_.samples, lens->raysPerPixel()) : settings_.samples;
+    const int samples =
+        lens ? std::max(settings_.samples, lens->raysPerPixel()) : settings_.samples;
     const int n = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples)) - 1e-9));
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {

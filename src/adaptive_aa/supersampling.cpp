@@ -74,8 +74,8 @@ Colour LatticeSamples::at(std::int64_t i, std::int64_t j) {
     const std::int64_t key = j * rowLength_ + i;
     Sampler sampler(seed_, static_cast<std::uint64_t>(key), 0);
     const double L = static_cast<double>(perPixel_);
-    samples_[slot] = radiance_(Vec2(i / L, j / L), {seed_, static_cast<std::uint64_t>(key), 0, 1},
-                               sampler);
+    samples_[slot] =
+        radiance_(Vec2(i / L, j / L), {seed_, static_cast<std::uint64_t>(key), 0, 1}, sampler);
     done_[slot / 64] |= bit;
     ++traced_;
     return samples_[slot];

@@ -130,9 +130,9 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
                 // One sample: the pixel centre (A4), or a uniformly jittered position.
                 const Vec2 offset = spp == 1 ? Vec2(0.5) : sampler.next2D();
                 const Vec2 film(x + offset.x, y + offset.y);
-                const Ray ray = lens ? lens->generate(camera, film, {seed, pixelIndex, s, count},
-                                                      sampler)
-                                     : camera.generateRay(film.x, film.y);
+                const Ray ray =
+                    lens ? lens->generate(camera, film, {seed, pixelIndex, s, count}, sampler)
+                         : camera.generateRay(film.x, film.y);
                 rays.add(RayKind::Camera);
                 sum += integrator.trace(ray, sampler, rays, 0);
             }

@@ -58,8 +58,10 @@ ThinLensSettings lensSettings(const RenderContext& context) {
     // dof² rays through a square aperture.
     const double seedDof = context.sceneOption("dof", 0.0);
     if (seedDof < 0.0 || seedDof != std::floor(seedDof) || seedDof > 256.0)
-        throw InputError("gr.render: dof (in {aperture, focalLength, dof}) must be a whole number "
-                         "from 0 (off) to 256, got " + show(seedDof));
+        throw InputError(
+            "gr.render: dof (in {aperture, focalLength, dof}) must be a whole number "
+            "from 0 (off) to 256, got " +
+            show(seedDof));
     const bool seed = seedDof > 0.0;
     std::string where;
     s.aperture = pick(context, "dof-aperture", "dof_aperture", seed,
