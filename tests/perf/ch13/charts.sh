@@ -9,8 +9,8 @@
 #
 # usage: tests/perf/ch13/charts.sh BUILD_DIR   (takes a few minutes; the POV-Ray chart is
 # skipped, with a note, when povray is not installed)
-# The reference is the scene at 1024 rays per pixel (jittered, paired lens), seed 99, apart
-# from the measured runs' seed 1; its own RMSE is about 1/32 of a 1-ray render's.
+# The reference is the scene at 4096 rays per pixel (jittered, paired lens), seed 99, apart
+# from the measured runs' seed 1; its own RMSE is about 1/64 of a 1-ray render's.
 set -euo pipefail
 
 build=$(cd "${1:?usage: charts.sh BUILD_DIR}" && pwd)
@@ -28,9 +28,9 @@ run() {  # out.png args... ; prints the render seconds
     (cd "$root" && "$rt" --quiet --stats --features=all --output "$png" "$@" "$scene" 2>&1) |
         awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }'
 }
-run "$data/ref.png" --aa=jittered --spp 1024 --dof-samples 1024 --seed 99 >/dev/null
+run "$data/ref.png" --aa=jittered --spp 4096 --dof-samples 4096 --seed 99 >/dev/null
 {
-    echo "# chapter 13 scene: rays per pixel, render s, RMSE against the 1024-ray reference"
+    echo "# chapter 13 scene: rays per pixel, render s, RMSE against the 4096-ray reference"
     for series in paired random centre; do
         echo "# $series"
         for n in 1 4 16 64 256; do
@@ -54,6 +54,8 @@ blocks = open(sys.argv[1]).read().split("\n\n\n")
 series = {}
 for b in blocks:
     lines = [l for l in b.strip().split("\n") if l]
+    if not lines:
+        continue
     name = lines[1][2:] if lines[0].startswith("# chapter") else lines[0][2:]
     series[name] = {int(l.split()[0]): float(l.split()[2]) for l in lines if not l.startswith("#")}
 p, r, c = series["paired"], series["random"], series["centre"]
@@ -79,7 +81,7 @@ e1=$(awk '!/^#/ && NF { print $3; exit }' "$data/samples.dat")
 draw ch13-samples "
 set title 'Depth-of-field error against rays (chapter scene, 192x128)'
 set xlabel 'camera rays per pixel (= lens samples)'
-set ylabel 'RMSE against 1024 rays per pixel'
+set ylabel 'RMSE against 4096 rays per pixel'
 set logscale xy
 set grid
 set key bottom left

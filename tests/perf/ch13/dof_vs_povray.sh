@@ -68,7 +68,7 @@ dat=$out/povray.dat
 {
   echo "# depth of field at $size, $threads thread(s): renderer samples seconds rmse"
   echo "# raybook: jittered pixel positions paired with stratified lens samples"
-  for n in 4 9 16 36 64 144; do
+  for n in 4 9 16 36 64 144 256; do
     echo "dof_vs_povray: raybook $n" >&2
     times=()
     for run in 1 2 3; do
