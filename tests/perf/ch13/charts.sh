@@ -103,8 +103,9 @@ set grid
 set key top right
 plot '$data/povray.dat' index 0 using 3:4 with linespoints pt 7 title 'raybook, N lens samples paired with N jittered pixel positions', \
      '' index 0 using 3:4:2 with labels offset char 0,1 font ',9' notitle, \
-     '' index 1 using 3:4 with linespoints pt 5 title 'POV-Ray blur_samples N (adaptive64: dof.pov)', \
-     '' index 1 using 3:4:2 with labels offset char 0,-1 font ',9' notitle
+     '' index 1 every ::0::5 using 3:4 with linespoints pt 5 title 'POV-Ray blur_samples N, N (dof64.pov: N = 64)' noenhanced, \
+     '' index 1 every ::0::5 using 3:4:2 with labels offset char 0,-1 font ',9' notitle, \
+     '' index 1 every ::6::6 using 3:4 with points pt 13 ps 1.8 lc rgb '#d33' title 'POV-Ray dof.pov (adaptive stop, up to 64)'
 "
 else
     echo "charts: povray is not installed; ch13-povray not redrawn (make charts installs it)"
