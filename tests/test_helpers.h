@@ -45,6 +45,7 @@
 #include "core/world.h"
 #include "adaptive_aa/adaptive_aa.h"
 #include "dof/dof.h"
+#include "smooth_mesh/smooth_mesh.h"
 #include "glossy/glossy.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
@@ -94,7 +95,7 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
                                           rb::glossyFeature(),     rb::adaptiveAaFeature(),
-                                          rb::dofFeature()};
+                                          rb::smoothMeshFeature(),   rb::dofFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

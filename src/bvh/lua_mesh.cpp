@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bvh/lua_mesh.h"
 #include "bvh/mesh.h"
 #include "core/error.h"
 #include "core/lua_scene.h"
@@ -33,8 +34,9 @@ std::shared_ptr<const Shape> meshFromFile(lua_State* L, const std::string& file,
     return mesh;
 }
 
-/// Legacy meshes: vertices and 0-based polygons as Lua tables.
-std::shared_ptr<const Shape> meshFromTables(lua_State* L, const char* call) {
+}  // namespace
+
+ObjData objFromLuaTables(lua_State* L, const char* call) {
     ObjData data;
     if (lua_type(L, 3) != LUA_TTABLE)
         throw InputError(std::string(call) + ": argument 3 (faces) must be a table of index lists");
@@ -83,7 +85,14 @@ std::shared_ptr<const Shape> meshFromTables(lua_State* L, const char* call) {
         for (size_t k = 1; k + 1 < idx.size(); ++k)
             data.triangles.push_back({ObjCorner{idx[0]}, ObjCorner{idx[k]}, ObjCorner{idx[k + 1]}});
     }
-    return std::make_shared<Mesh>(data, sceneBuilder(L).scenePath);
+    return data;
+}
+
+namespace {
+
+/// Legacy meshes: vertices and 0-based polygons as Lua tables.
+std::shared_ptr<const Shape> meshFromTables(lua_State* L, const char* call) {
+    return std::make_shared<Mesh>(objFromLuaTables(L, call), sceneBuilder(L).scenePath);
 }
 
 // [lua-mesh]

@@ -93,6 +93,7 @@ constexpr LaterCall kLaterCalls[] = {
     {"aa_threshold", 8, "adaptive_aa"},
     {"aa_depth", 8, "adaptive_aa"},
     {"smooth_mesh", 9, "smooth_mesh"},
+    {"terminator", 9, "smooth_mesh"},
     {"texture", 10, "texture"},
     {"bump", 11, "bump"},
     {"tone_map", 12, "tone_map"},
@@ -114,16 +115,22 @@ constexpr LaterCall kLaterCalls[] = {
 };
 }  // namespace
 
-#ifndef RB_NEWEST_CHAPTER
-#error "CMakeLists.txt defines RB_NEWEST_CHAPTER, the newest chapter written"
+#if !defined(RB_NEWEST_CHAPTER) || !defined(RB_WRITTEN_CHAPTERS)
+#error "CMakeLists.txt defines RB_NEWEST_CHAPTER and RB_WRITTEN_CHAPTERS"
 #endif
 int newestChapter() {
     return RB_NEWEST_CHAPTER;
 }
 
+bool chapterWritten(int chapter) {
+    for (int written : {RB_WRITTEN_CHAPTERS})
+        if (written == chapter) return true;
+    return false;
+}
+
 std::string chapterAdvice(int chapter) {
     const std::string n = std::to_string(chapter);
-    if (chapter > newestChapter()) return "chapter " + n + " is planned but not written yet";
+    if (!chapterWritten(chapter)) return "chapter " + n + " is planned but not written yet";
     return "build it with make chapter" + n + " or later";
 }
 

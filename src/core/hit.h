@@ -17,6 +17,9 @@ struct Hit {
     Vec3 p{0.0};                  ///< World-space hit point.
     Vec3 ng{0.0};                 ///< Geometric normal, unit length, as the shape defines it.
     Vec3 ns{0.0};                 ///< Shading normal (equals ng until a chapter changes it).
+    /// Added to p where shadow rays start: zero, except on chapter 9's smooth meshes, where it
+    /// lifts the origin off the flat facet towards the curved surface the normals describe.
+    Vec3 shadowOffset{0.0};
     Vec2 uv{0.0};                 ///< Surface parameterisation, where the shape has one.
     std::uint32_t primitive = 0;  ///< Triangle index within a mesh, or 0.
     const Material* material = nullptr;  ///< Material of the instance that was hit.

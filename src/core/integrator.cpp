@@ -8,6 +8,7 @@ Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters
     Hit hit;
     if (!scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit))
         return scene_.background;
+    for (const auto& normal : pipeline_.normals) normal->apply(ray, hit);
     // Local shading, then each chapter's secondary term.
     const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight};
     Colour colour = pipeline_.surface(ctx, ray, hit);

@@ -75,12 +75,23 @@ class LobeSampler {
                         Vec3& direction) const = 0;
 };
 
+/// Changes a hit's shading normal (and where its shadow rays start) before it is shaded: the
+/// extension point of chapter 9's smooth meshes. The geometric normal ng stays as it is.
+class ShadingNormal {
+  public:
+    virtual ~ShadingNormal() = default;
+    /// Adjust hit.ns and hit.shadowOffset for the ray that found the hit.
+    virtual void apply(const Ray& ray, Hit& hit) const = 0;
+};
+
 /// How a render is put together; each enabled feature adjusts it.
 struct Pipeline {
     SurfaceShader surface = nullptr;                        ///< Local shading (chapter 1, then 2).
     AggregateBuilder buildAggregate = nullptr;              ///< Acceleration (chapter 1, then 3).
     std::vector<std::shared_ptr<const ShadingTerm>> terms;  ///< Secondary terms, in order.
     std::shared_ptr<const LobeSampler> lobe;                ///< Glossy lobes (chapter 7), or null.
+    /// Shading-normal changes, in chapter order (chapter 9's smooth meshes); empty by default.
+    std::vector<std::shared_ptr<const ShadingNormal>> normals;
     /// Where a pixel's camera rays go (chapter 8's supersampling), or null: the core's one
     /// ray through each pixel centre (or --spp random positions).
     std::shared_ptr<const PixelSampler> pixelSampler;

@@ -37,8 +37,9 @@ Colour lightFromPoint(const ShadeContext& ctx, const Hit& hit, const Material& m
     // [exercise-shadow-ray]
     // Exercise 2.2, the shadow ray: read ch02-equations.
     // Blank: 
-    // Cast a shadow ray from the (offset) hit point to the light: t in (0, 1).
-    const Vec3 origin = offsetRayOrigin(hit.p, ng, l);
+    // Cast a shadow ray from the (offset) hit point to the light: t in (0, 1). (A smooth
+    // mesh, chapter 9, may move where shadow rays start: hit.shadowOffset.)
+    const Vec3 origin = offsetRayOrigin(hit.p + hit.shadowOffset, ng, l);
     if (ctx.integrator.occluded(Ray{origin, from - origin}, 1.0, ctx.counters)) return Colour(0.0);
     // [exercise-shadow-ray]
     return emission * light.intensityAt(r) * phongBrdfTerm(m, n, l, v);
