@@ -41,7 +41,7 @@ std::uint64_t seed() {
 /// A picture given as a function of image position: white where `inside`, black elsewhere.
 template <class Inside>
 rb::RadianceAt picture(Inside inside, std::uint64_t& samples) {
-    return [inside, &samples](const Vec2& p, rb::Sampler&) {
+    return [inside, &samples](const Vec2& p, const rb::RaySlot&, rb::Sampler&) {
         ++samples;
         return inside(p) ? Colour(1.0) : Colour(0.0);
     };

@@ -44,6 +44,7 @@
 #include "core/sphere.h"
 #include "core/world.h"
 #include "adaptive_aa/adaptive_aa.h"
+#include "dof/dof.h"
 #include "smooth_mesh/smooth_mesh.h"
 #include "bump/bump.h"
 #include "glossy/glossy.h"
@@ -98,7 +99,8 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::refractionFeature(), rb::softShadowsFeature(),
                                           rb::glossyFeature(),     rb::adaptiveAaFeature(),
                                           rb::smoothMeshFeature(),  rb::textureFeature(),
-                                          rb::bumpFeature(),        rb::toneMapFeature()};
+                                          rb::bumpFeature(),        rb::toneMapFeature(),
+                                          rb::dofFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

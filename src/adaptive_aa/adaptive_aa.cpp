@@ -1,5 +1,6 @@
 #include "adaptive_aa/adaptive_aa.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -111,8 +112,11 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
                                       std::uint64_t seed, Image& image, RayCounters& rays) const {
     // What every estimator asks for: the radiance through an image position, as the core's
     // loop traces it (a camera ray, then the integrator with the sample's own random stream).
-    const RadianceAt radiance = [&](const Vec2& p, Sampler& sampler) {
-        const Ray ray = camera.generateRay(p.x, p.y);
+    // A camera-ray generator (chapter 13's lens) pairs each ray with one of its own samples.
+    const CameraRayGenerator* lens = integrator.pipeline().cameraRays.get();
+    const RadianceAt radiance = [&](const Vec2& p, const RaySlot& slot, Sampler& sampler) {
+        const Ray ray =
+            lens ? lens->generate(camera, p, slot, sampler) : camera.generateRay(p.x, p.y);
         rays.add(RayKind::Camera);
         return integrator.trace(ray, sampler, rays, 0);
     };
@@ -125,14 +129,18 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
                 image.set(x, y, adaptivePixel(x, y, settings_.adaptive, lattice));
         return;
     }
-    const int n = static_cast<int>(std::lround(std::sqrt(settings_.samples)));
+    // A lens that needs more rays per pixel raises the count (to the next square for a grid):
+    // its samples are paired with the pixel's, not multiplied by them.
+    const int samples =
+        lens ? std::max(settings_.samples, lens->raysPerPixel()) : settings_.samples;
+    const int n = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples)) - 1e-9));
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
             const PixelRef pixel{x, y, seed, static_cast<std::uint64_t>(y) * width + x};
             Colour c(0.0);
             switch (settings_.mode) {
                 case AaMode::Random:
-                    c = randomPixel(pixel, settings_.samples, radiance);
+                    c = randomPixel(pixel, samples, radiance);
                     break;
                 case AaMode::Uniform:
                     c = uniformPixel(pixel, n, radiance);

@@ -9,7 +9,8 @@ Colour randomPixel(const PixelRef& pixel, int count, const RadianceAt& radiance)
     for (int s = 0; s < count; ++s) {
         Sampler sampler(pixel.seed, pixel.index, s);
         const Vec2 u = sampler.next2D();
-        sum += radiance(Vec2(pixel.x + u.x, pixel.y + u.y), sampler);
+        sum += radiance(Vec2(pixel.x + u.x, pixel.y + u.y), {pixel.seed, pixel.index, s, count},
+                        sampler);
     }
     return sum / static_cast<double>(count);
 }
@@ -22,7 +23,7 @@ Colour uniformPixel(const PixelRef& pixel, int n, const RadianceAt& radiance) {
         for (int i = 0; i < n; ++i) {
             Sampler sampler(pixel.seed, pixel.index, static_cast<std::uint64_t>(j) * n + i);
             const Vec2 p(pixel.x + (i + 0.5) / n, pixel.y + (j + 0.5) / n);
-            sum += radiance(p, sampler);
+            sum += radiance(p, {pixel.seed, pixel.index, j * n + i, n * n}, sampler);
         }
     return sum / static_cast<double>(n * n);
 }
@@ -40,7 +41,7 @@ Colour jitteredPixel(const PixelRef& pixel, int n, const RadianceAt& radiance) {
             Sampler sampler(pixel.seed, pixel.index, static_cast<std::uint64_t>(j) * n + i);
             const Vec2 u = sampler.next2D();
             const Vec2 p(pixel.x + (i + u.x) / n, pixel.y + (j + u.y) / n);
-            sum += radiance(p, sampler);
+            sum += radiance(p, {pixel.seed, pixel.index, j * n + i, n * n}, sampler);
         }
     return sum / static_cast<double>(n * n);
     // [exercise-jittered]
@@ -73,7 +74,8 @@ Colour LatticeSamples::at(std::int64_t i, std::int64_t j) {
     const std::int64_t key = j * rowLength_ + i;
     Sampler sampler(seed_, static_cast<std::uint64_t>(key), 0);
     const double L = static_cast<double>(perPixel_);
-    samples_[slot] = radiance_(Vec2(i / L, j / L), sampler);
+    samples_[slot] =
+        radiance_(Vec2(i / L, j / L), {seed_, static_cast<std::uint64_t>(key), 0, 1}, sampler);
     done_[slot / 64] |= bit;
     ++traced_;
     return samples_[slot];

@@ -9,15 +9,17 @@
 #include <memory>
 #include <vector>
 
+#include "core/camera_rays.h"
 #include "core/sampler.h"
 #include "core/vec.h"
 
 namespace rb {
 
 /// The radiance arriving through image position p (in pixels; (0,0) is the image's top-left
-/// corner), traced with the random stream `sampler` (for the soft shadows and glossy lobes the
-/// ray meets).
-using RadianceAt = std::function<Colour(const Vec2& p, Sampler& sampler)>;
+/// corner), for ray `slot` of the pixel's rays (a thin lens, chapter 13, pairs its own strata
+/// with the pixel's through it), traced with the random stream `sampler` (for the soft shadows
+/// and glossy lobes the ray meets).
+using RadianceAt = std::function<Colour(const Vec2& p, const RaySlot& slot, Sampler& sampler)>;
 
 /// The pixel whose top-left corner is (x, y), and the key of its random streams.
 struct PixelRef {

@@ -39,6 +39,12 @@ Ray PinholeCamera::generateRay(double x, double y) const {
 }
 // [camera-ray]
 
+Vec3 PinholeCamera::filmDirection(double x, double y) const {
+    const double sx = 2.0 * x / width_ - 1.0;
+    const double sy = 1.0 - 2.0 * y / height_;
+    return w_ + sx * halfWidth_ * u_ + sy * halfHeight_ * v_;
+}
+
 bool PinholeCamera::mayShow(const AABB& box) const {
     if (box.empty()) return false;
     for (int k = 0; k < 3; ++k)

@@ -25,6 +25,12 @@ class PinholeCamera {
     /// The ray through image position (x, y) in pixels: (0,0) is the top-left corner of the
     /// image and (width, height) the bottom-right; a pixel centre is (i + 0.5, j + 0.5).
     Ray generateRay(double x, double y) const;
+    /// The point of the image plane (at distance 1 along the view) that image position (x, y)
+    /// maps to, relative to the eye: the unnormalised direction of generateRay(x, y), computed
+    /// by the same arithmetic, so normalising it gives that ray's direction bit for bit.
+    Vec3 filmDirection(double x, double y) const;
+    /// The centre of projection.
+    Vec3 eye() const { return eye_; }
     /// The unit forward, right and up vectors of the camera frame.
     Vec3 forward() const { return w_; }
     Vec3 right() const { return u_; }

@@ -34,6 +34,7 @@ struct Scene {
 class Integrator;
 class PixelSampler;
 class PostProcess;
+class CameraRayGenerator;
 
 /// What a shading routine may use: the scene, the integrator (to trace more rays), this
 /// sample's random stream, this thread's counters, the recursion depth and the media the
@@ -108,6 +109,9 @@ struct Pipeline {
     /// What happens to the film after the render (chapter 12's tone map), or null: the film is
     /// written as it is, each channel clamped to [0, 1] as the CS488 framework does.
     std::shared_ptr<const PostProcess> postProcess;
+    /// How an image position becomes a camera ray (chapter 13's thin lens), or null: the
+    /// pinhole camera's ray.
+    std::shared_ptr<const CameraRayGenerator> cameraRays;
 };
 
 /// Traces rays through a scene with a pipeline.

@@ -16,7 +16,9 @@ namespace rb {
 /// colour. Without one the core traces one ray through each pixel centre (or `--spp` random
 /// positions). It renders a whole tile at a time, so it may share samples between the pixels
 /// of the tile; for bit-identical images on any thread count, a pixel's colour must depend only
-/// on (seed, pixel position), never on which tile or thread computes it.
+/// on (seed, pixel position), never on which tile or thread computes it. When the pipeline has a
+/// camera-ray generator (chapter 13's lens), a sampler turns each image position into a ray
+/// through it, naming the ray's RaySlot, and traces at least its raysPerPixel() rays.
 class PixelSampler {
   public:
     virtual ~PixelSampler() = default;

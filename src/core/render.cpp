@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/camera_rays.h"
 #include "core/interrupt.h"
 #include "core/pixel_sampler.h"
 
@@ -114,22 +115,28 @@ class ProgressBar {
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-/// Render the pixels of one tile into `image`, counting rays into `rays`.
+/// Render the pixels of one tile into `image`, counting rays into `rays`. A camera-ray
+/// generator (`lens`, or null for the pinhole) may ask for more rays per pixel than `spp`.
 void renderTile(const ImageTile& tile, const Integrator& integrator, const PinholeCamera& camera,
-                int width, int spp, std::uint64_t seed, Image& image, RayCounters& rays) {
+                const CameraRayGenerator* lens, int width, int spp, std::uint64_t seed,
+                Image& image, RayCounters& rays) {
+    const int count = lens ? std::max(spp, lens->raysPerPixel()) : spp;
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
             const std::uint64_t pixelIndex = static_cast<std::uint64_t>(y) * width + x;
             Colour sum(0.0);
-            for (int s = 0; s < spp; ++s) {
+            for (int s = 0; s < count; ++s) {
                 Sampler sampler(seed, pixelIndex, s);
                 // One sample: the pixel centre (A4), or a uniformly jittered position.
                 const Vec2 offset = spp == 1 ? Vec2(0.5) : sampler.next2D();
-                const Ray ray = camera.generateRay(x + offset.x, y + offset.y);
+                const Vec2 film(x + offset.x, y + offset.y);
+                const Ray ray =
+                    lens ? lens->generate(camera, film, {seed, pixelIndex, s, count}, sampler)
+                         : camera.generateRay(film.x, film.y);
                 rays.add(RayKind::Camera);
                 sum += integrator.trace(ray, sampler, rays, 0);
             }
-            image.set(x, y, sum / static_cast<double>(spp));
+            image.set(x, y, sum / static_cast<double>(count));
         }
 }
 
@@ -171,7 +178,8 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
             pipeline.pixelSampler->renderTile(tiles[k], integrator, camera, width, height,
                                               settings.seed, image, rays);
         else
-            renderTile(tiles[k], integrator, camera, width, spp, settings.seed, image, rays);
+            renderTile(tiles[k], integrator, camera, pipeline.cameraRays.get(), width, spp,
+                       settings.seed, image, rays);
         progress.tileDone(k, rays.total() - raysBefore);
         ++tilesDone;
     }

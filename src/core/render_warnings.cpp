@@ -87,6 +87,12 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the scene's tone map (gr.tone_map, tone_map, exposure " +
                            "or srgb) is ignored: it needs chapter 12 (tone_map), and " +
                            whyAbsent(features, "tone_map", 12));
+    // Chapter 13's own lens, when the chapter is built but switched off.
+    const auto aperture = job.options.find("dof_aperture");
+    if (aperture != job.options.end() && aperture->second != 0.0 && !features.enabled("dof"))
+        warnings.push_back(job.where + ": the scene's lens (gr.lens or dof_aperture) is " +
+                           "ignored: it needs chapter 13 (dof), and " +
+                           whyAbsent(features, "dof", 13));
     // The course framework writes PNG data whatever the name says; so does rt, but says so.
     // A name a switched-on chapter writes in its own format (chapter 12's .hdr) is not PNG.
     if (!hasPngExtension(output) && !outputFormatFor(features.on(), output))

@@ -265,6 +265,15 @@ if [ -x "$build/tests/perf/ch08/ch08_aa_charts" ]; then
   bash "$root/tests/perf/ch08/aa_vs_povray.sh" "$build" "$out/ch08" | tee -a "$report"
 fi
 
+# ---- Depth of field against POV-Ray's focal blur, at equal error ----------------------------
+# The peers' dof.pov and dof64.pov against tests/perf/scenes/dof.lua (chapter 13; it needs the
+# ch08 RMSE tool and a binary with chapter 13).
+if [ -x "$build/tests/perf/ch08/ch08_aa_charts" ] && "$rt" --list-features | grep -qw dof; then
+  progress "depth of field against POV-Ray's focal blur"
+  say ""
+  RB_SHARED=$shared bash "$root/tests/perf/ch13/dof_vs_povray.sh" "$build" "$out/ch13" | tee -a "$report"
+fi
+
 # ---- raybook's BVH against Embree ----------------------------------------------------------
 if [ -x "$build/tests/perf/bvh_vs_embree" ]; then
   for threads in 1 2; do
