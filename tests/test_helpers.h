@@ -44,6 +44,7 @@
 #include "core/sphere.h"
 #include "core/world.h"
 #include "adaptive_aa/adaptive_aa.h"
+#include "csg/csg_feature.h"
 #include "glossy/glossy.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
@@ -92,7 +93,8 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
     const std::vector<rb::Feature> all = {rb::chapter01Feature(),  rb::phongFeature(),
                                           rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
-                                          rb::glossyFeature(),     rb::adaptiveAaFeature()};
+                                          rb::glossyFeature(),     rb::adaptiveAaFeature(),
+                                          rb::csgFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);
