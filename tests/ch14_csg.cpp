@@ -371,17 +371,18 @@ SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes", 
             holes:add_child(h1); holes:add_child(h2)
             root = gr.node('root'); root:add_child(a)
             a:csg(holes, 'd')
+            a:translate(1, 0, 0)  -- after the call: moves the result
         )" + rbtest::renderLine());
         REQUIRE(world->scene.instances.size() == 1);
         WHEN("a line along +x crosses it") {
             const CrossingList c =
-                worldCrossings(world->scene.instances[0], Ray{{-1, 0.5, 0.5}, {1, 0, 0}});
-            // Source: operand B sits in a's space, so its x is scaled by 4: holes [1, 2] and
-            // [3, 4] in the bar [0, 4], leaving [0, 1] ∪ [2, 3].
-            THEN("the bar keeps [0, 1] and [2, 3]") {
-                REQUIRE(c.size() == 4);
-                const double expected[4] = {0, 1, 2, 3};
-                for (int k = 0; k < 4; ++k)
+                worldCrossings(world->scene.instances[0], Ray{{0, 0.5, 0.5}, {1, 0, 0}});
+            // Source: the scale written before the call stretches operand A only, so the
+            // bar [0, 4] loses the holes [0.25, 0.5] and [0.75, 1] placed beside it.
+            THEN("the bar keeps [0, 0.25], [0.5, 0.75] and [1, 4]") {
+                REQUIRE(c.size() == 6);
+                const double expected[6] = {0, 0.25, 0.5, 0.75, 1, 4};
+                for (int k = 0; k < 6; ++k)
                     CHECK(c[k].hit.t - 1 == Approx(expected[k]).margin(1e-12));
             }
         }

@@ -46,9 +46,10 @@ CsgOp parseOperation(const std::string& s) {
 }
 
 // [lua-csg-method]
-/// nodeA:csg(nodeB, op): nodeA keeps its name, place, transform and material and becomes
-/// op(A, B). Its former contents (shape and children) become operand A; nodeB, with its
-/// whole subgraph, becomes operand B, placed in nodeA's space as a child of nodeA would be.
+/// nodeA:csg(nodeB, op): nodeA keeps its name, place in the graph and material, and becomes
+/// op(A, B). Its former self (shape, transform, children) becomes operand A; nodeB, with its
+/// whole subgraph, becomes operand B, placed like a sibling of A. Transforms written before
+/// the call move one operand; transforms of nodeA written after it move the result.
 int nodeCsg(lua_State* L) {
     checkArgCount(L, "node:csg", 3, 3, "(other, 'u'|'n'|'d')");
     auto self = checkNode(L, 1, "node:csg", "self");
@@ -57,12 +58,12 @@ int nodeCsg(lua_State* L) {
     if (other == self || reaches(*other, self.get()))
         throw InputError("node:csg: '" + other->name + "' contains '" + self->name +
                          "', so combining them would make a cycle in the scene graph");
-    // Operand A: a copy of the node in its own space (no transform: the node keeps that).
+    // Operand A: a copy of the node as it is; the node itself starts afresh as the result.
     auto a = std::make_shared<SceneNode>(*self);
-    a->transform = Mat4(1.0);
     a->name = self->name + " (operand A)";
     auto result = csgNode(op, self->name, std::move(a), std::move(other));
     self->shape.reset();
+    self->transform = Mat4(1.0);
     self->shapeTransform = Mat4(1.0);
     self->compound = result->compound;
     self->children = std::move(result->children);
