@@ -18,10 +18,7 @@ program=$build/tests/perf/ch14/ch14_csg_charts
 "$program" "$data"
 cp "$data/finding.txt" "$charts/ch14-finding.txt"
 
-for ext in svg png; do
-  if [ $ext = svg ]; then term="svg size 640,420 font 'sans,12' background rgb 'white'"
-  else term="pngcairo size 640,420 font 'sans,10'"; fi
-  gnuplot -e "set terminal $term" -e "set output '$charts/ch14-cost.$ext'" -e "
+cat >"$data/cost.gp" <<GP
 set title 'Cost of one ray against a CSG solid of N spheres (1 thread)'
 set xlabel 'operands N'
 set ylabel 'nanoseconds per ray (closest hit)'
@@ -29,11 +26,15 @@ set logscale xy 2
 set format y '%g'
 set grid
 set key top left
-plot '$data/cost.dat' using 1:3 with linespoints pt 5 title 'chain of nested unions', \
-     '' using 1:2 with linespoints pt 7 lw 2 title 'balanced union (two groups)', \
-     '' using 1:4 with linespoints pt 9 title 'big ball minus a group of N balls', \
-     '' using 1:5 with linespoints pt 6 dt 2 title 'no CSG: the N spheres in the BVH'"
-done
+plot '$data/cost.dat' using 1:3 with linespoints pt 5 title 'chain of nested unions', \\
+     '' using 1:2 with linespoints pt 7 lw 2 title 'balanced union (two groups)', \\
+     '' using 1:4 with linespoints pt 9 title 'big ball minus a group of N balls', \\
+     '' using 1:5 with linespoints pt 6 dt 2 title 'no CSG: the N spheres in the BVH'
+GP
+gnuplot -e "set terminal svg size 640,420 font 'sans,12' background rgb 'white'" \
+        -e "set output '$charts/ch14-cost.svg'" "$data/cost.gp"
+gnuplot -e "set terminal pngcairo size 640,420 font 'sans,10'" \
+        -e "set output '$charts/ch14-cost.png'" "$data/cost.gp"
 
 if command -v povray >/dev/null; then
   bash "$root/tests/perf/ch14/csg_vs_povray.sh" "$build" | tee "$data/povray.txt"
