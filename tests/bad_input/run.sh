@@ -21,6 +21,10 @@
 #                   -- rt-args: ARGS          extra command-line arguments (e.g. --legacy)
 #                   -- skip-if-feature: NAME  skip when the binary has chapter module NAME
 #                                             (the case tests a call of a later chapter)
+#                   -- needs-feature: NAME    skip when the binary lacks chapter module NAME
+#                                             (the case tests that chapter's own checks; the
+#                                             newest binary runs it, so --every-case skips it
+#                                             too)
 #                 The line that must be named in the message ends with the marker "--!".
 #   cases/objs/   broken OBJ files, named by the cases that load them (resolved against the
 #                 scene's folder, since each case runs in an empty working directory).
@@ -168,6 +172,12 @@ for scene in "$CASES"/*.lua; do
             continue
         fi
         echo "skip $name (this binary has $skip_feature, so the call is valid)"
+        skipped=$((skipped + 1))
+        continue
+    fi
+    need_feature=$(sed -n 's/^-- needs-feature: *//p' "$scene" | head -n 1)
+    if [ -n "$need_feature" ] && ! grep -qx "$need_feature" <<<"$features"; then
+        echo "skip $name (this binary lacks $need_feature, whose checks the case tests)"
         skipped=$((skipped + 1))
         continue
     fi
