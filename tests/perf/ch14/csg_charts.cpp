@@ -12,12 +12,11 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <random>
 #include <string>
 #include <vector>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "bvh/bvh_aggregate.h"
 #include "core/sphere.h"
@@ -68,7 +67,8 @@ double nsPerRay(const std::vector<Ray>& rs, Trace trace, int& hits) {
         hits = 0;
         const auto t0 = std::chrono::steady_clock::now();
         for (const Ray& r : rs) hits += trace(r);
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         best = std::min(best, s);
     }
     return best * 1e9 / static_cast<double>(rs.size());
@@ -110,27 +110,30 @@ int main(int argc, char** argv) {
         int hits = 0;
         ObjectHit h;
         // Balanced: gr.union(groupA, groupB), each group half the spheres.
-        const std::vector<Instance> half1(s.begin(), s.begin() + n / 2), half2(s.begin() + n / 2, s.end());
+        const std::vector<Instance> half1(s.begin(), s.begin() + n / 2),
+            half2(s.begin() + n / 2, s.end());
         const auto balanced = CsgCompound(CsgOp::Union).build({half1, half2});
-        const double tBalanced =
-            nsPerRay(rs, [&](const Ray& r) { return balanced->intersect(r, 1e30, h); }, hits);
+        const double tBalanced = nsPerRay(
+            rs, [&](const Ray& r) { return balanced->intersect(r, 1e30, h); }, hits);
         // Chain: nested gr.union calls, one level per operand.
         std::vector<std::shared_ptr<const CsgShape>> keep;
         const auto chained = chain(s, keep);
-        const double tChain =
-            nsPerRay(rs, [&](const Ray& r) { return chained->intersect(r, 1e30, h); }, hits);
+        const double tChain = nsPerRay(
+            rs, [&](const Ray& r) { return chained->intersect(r, 1e30, h); }, hits);
         // Difference: a big ball minus a group of n small ones (Swiss cheese).
         const std::vector<Instance> big = spheres(0, sphere, true);
         const auto cheese = CsgCompound(CsgOp::Difference).build({big, s});
-        const double tCheese =
-            nsPerRay(rs, [&](const Ray& r) { return cheese->intersect(r, 1e30, h); }, hits);
+        const double tCheese = nsPerRay(
+            rs, [&](const Ray& r) { return cheese->intersect(r, 1e30, h); }, hits);
         // No CSG: the same spheres as instances in the BVH, closest hit.
         const auto bvh = buildBVHAggregate(s);
         Hit hit;
-        const double tBvh = nsPerRay(rs, [&](const Ray& r) { return bvh->intersect(r, 1e30, hit); }, hits);
+        const double tBvh = nsPerRay(
+            rs, [&](const Ray& r) { return bvh->intersect(r, 1e30, hit); }, hits);
         dat << n << ' ' << tBalanced << ' ' << tChain << ' ' << tCheese << ' ' << tBvh << '\n';
-        std::printf("N %4d: balanced union %8.1f ns, chain %8.1f ns, difference %8.1f ns, BVH %6.1f ns\n",
-                    n, tBalanced, tChain, tCheese, tBvh);
+        std::printf(
+            "N %4d: balanced union %8.1f ns, chain %8.1f ns, difference %8.1f ns, BVH %6.1f ns\n",
+            n, tBalanced, tChain, tCheese, tBvh);
         const double t[4] = {tBalanced, tChain, tCheese, tBvh};
         for (int k = 0; k < 4; ++k) {
             if (n == 2) first[k] = t[k];
