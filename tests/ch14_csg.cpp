@@ -74,14 +74,6 @@ std::unique_ptr<rb::World> csgWorld(const std::string& lua, const std::string& s
     return rbtest::worldFromLua(lua, rbtest::chapters(14, spec));
 }
 
-/// The one instance of a world, which must be a CSG node.
-const rb::CsgShape& csgOf(const rb::World& world, size_t index = 0) {
-    REQUIRE(world.scene.instances.size() > index);
-    auto* csg = dynamic_cast<const rb::CsgShape*>(world.scene.instances[index].shape);
-    REQUIRE(csg != nullptr);
-    return *csg;
-}
-
 /// The crossings of a world-space line with a CSG instance, in world terms (t unchanged).
 CrossingList worldCrossings(const rb::Instance& instance, const Ray& ray) {
     CrossingList list;

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstddef>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 #include "core/hit.h"
@@ -21,20 +23,28 @@ struct Crossing {
 /// inline and spills to the heap beyond that, so the usual case allocates nothing.
 class CrossingList {
   public:
+    CrossingList() = default;
+    CrossingList(const CrossingList& other) { *this = other; }
+    /// A copy of every crossing of `other`.
+    CrossingList& operator=(const CrossingList& other) {
+        clear();
+        for (size_t i = 0; i < other.size(); ++i) push(other[i]);
+        return *this;
+    }
     /// The number of crossings.
     size_t size() const { return size_; }
     /// True when the line misses the solid.
     bool empty() const { return size_ == 0; }
     /// Crossing i (in increasing t).
     const Crossing& operator[](size_t i) const {
-        return i < kInline ? inline_[i] : spill_[i - kInline];
+        return i < kInline ? inlineAt(i) : spill_[i - kInline];
     }
     /// Crossing i, writable.
-    Crossing& operator[](size_t i) { return i < kInline ? inline_[i] : spill_[i - kInline]; }
+    Crossing& operator[](size_t i) { return i < kInline ? inlineAt(i) : spill_[i - kInline]; }
     /// Append a crossing (the caller keeps t increasing).
     void push(const Crossing& c) {
         if (size_ < kInline)
-            inline_[size_] = c;
+            new (&storage_[size_ * sizeof(Crossing)]) Crossing(c);
         else
             spill_.push_back(c);
         ++size_;
@@ -52,7 +62,17 @@ class CrossingList {
 
   private:
     static constexpr size_t kInline = 8;
-    Crossing inline_[kInline];
+    // Crossings are trivially copyable; the inline ones live in raw storage so that a new list
+    // (one per operand per ray) costs nothing until something is pushed.
+    static_assert(std::is_trivially_copyable_v<Crossing> &&
+                  std::is_trivially_destructible_v<Crossing>);
+    Crossing& inlineAt(size_t i) {
+        return *std::launder(reinterpret_cast<Crossing*>(&storage_[i * sizeof(Crossing)]));
+    }
+    const Crossing& inlineAt(size_t i) const {
+        return *std::launder(reinterpret_cast<const Crossing*>(&storage_[i * sizeof(Crossing)]));
+    }
+    alignas(Crossing) unsigned char storage_[kInline * sizeof(Crossing)];
     std::vector<Crossing> spill_;
     size_t size_ = 0;
 };
