@@ -78,7 +78,11 @@ void combineCrossings(CsgOp op, const CrossingList& a, const CrossingList& b, Cr
 }
 // [csg-combine]
 
+// [csg-sphere-crossings]
 void sphereCrossings(const Ray& ray, CrossingList& out) {
+    // [exercise-csg-sphere-crossings]
+    // Exercise 14.4, both crossings of the unit sphere: read ch14-intervals.
+    // Blank: (void)ray; (void)out;
     if (isDegenerateDirection(ray.d)) return;
     // The quadratic |o + t·d|² = 1 of the unit sphere, as in chapter 1, keeping both roots.
     const double a = glm::dot(ray.d, ray.d);
@@ -95,7 +99,9 @@ void sphereCrossings(const Ray& ray, CrossingList& out) {
         x.entering = k == 0;
         out.push(x);
     }
+    // [exercise-csg-sphere-crossings]
 }
+// [csg-sphere-crossings]
 
 void boxCrossings(const Ray& ray, CrossingList& out) {
     if (isDegenerateDirection(ray.d)) return;
