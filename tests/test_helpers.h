@@ -47,6 +47,7 @@
 #include "dof/dof.h"
 #include "smooth_mesh/smooth_mesh.h"
 #include "bump/bump.h"
+#include "csg/csg_feature.h"
 #include "glossy/glossy.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
@@ -100,7 +101,7 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::glossyFeature(),     rb::adaptiveAaFeature(),
                                           rb::smoothMeshFeature(),  rb::textureFeature(),
                                           rb::bumpFeature(),        rb::toneMapFeature(),
-                                          rb::dofFeature()};
+                                          rb::dofFeature(),         rb::csgFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

@@ -32,6 +32,9 @@ struct ObjectHit {
     Vec3 n{0.0};  ///< Object-space geometric normal (any length).
     Vec2 uv{0.0};
     std::uint32_t primitive = 0;
+    /// The material of the part that was hit, for shapes made of parts with materials of
+    /// their own (chapter 14's CSG operands); null: the instance's material.
+    const Material* material = nullptr;
 };
 
 }  // namespace rb

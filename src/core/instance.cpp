@@ -26,7 +26,7 @@ Hit Instance::toWorld(const Ray& worldRay, const ObjectHit& oh) const {
     hit.ns = hit.ng;
     hit.uv = oh.uv;
     hit.primitive = oh.primitive;
-    hit.material = material;
+    hit.material = oh.material ? oh.material : material;
     hit.instance = this;
     return hit;
 }

@@ -363,7 +363,7 @@ int grRender(lua_State* L) {
     auto frozen = snapshot(root, copies);
     r.snapshot = frozen;
     r.fallback = sceneBuilder(L).defaultMaterial;
-    r.instances = flatten(*frozen, r.fallback.get());
+    r.instances = flatten(*frozen, r.fallback.get(), &r.builtShapes, sceneBuilder(L).featuresOn);
     job.root = frozen;
     // Copying and flattening the graph is work done for the script, as are its instances.
     chargeInstructions(L, copies.size() + r.instances.size(), "gr.render");

@@ -666,6 +666,7 @@ void runScene(const std::string& path, const FeatureSet& features, bool legacy,
     builder.unitCube = std::make_shared<Box>();
     for (const Feature& f : features.built())
         builder.lastChapter = std::max(builder.lastChapter, f.chapter);
+    for (const Feature& f : features.on()) builder.featuresOn.insert(f.name);
 
     // A fresh state with a capped allocator; the builder is reachable from the state itself.
     std::unique_ptr<lua_State, LuaStateCloser> state(lua_newstate(limitedAlloc, &builder));

@@ -5,6 +5,7 @@
 
 #include <lua.hpp>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,9 +35,10 @@ struct SceneLoadOptions {
 /// A render request after the script ran: the job plus the world it renders.
 struct LoadedRender {
     RenderJob job;
-    std::shared_ptr<const SceneNode> snapshot;  ///< The graph as it was at gr.render.
-    std::vector<Instance> instances;            ///< Flattened from the snapshot.
-    std::shared_ptr<const Material> fallback;   ///< For instances without a material.
+    std::shared_ptr<const SceneNode> snapshot;              ///< The graph as it was at gr.render.
+    std::vector<Instance> instances;                        ///< Flattened from the snapshot.
+    std::shared_ptr<const Material> fallback;               ///< For instances without a material.
+    std::vector<std::shared_ptr<const Shape>> builtShapes;  ///< Made while flattening (CSG).
 };
 
 /// Where the time of loading a scene went (for --stats).
@@ -84,7 +86,8 @@ struct SceneBuilder {
     std::map<std::string, int> warningCounts;
     std::vector<std::pair<std::string, std::string>> ignoredKinds;  ///< --lenient, the same way.
     std::map<std::string, int> ignoredCounts;
-    int lastChapter = 0;        ///< The newest chapter built into this binary.
+    int lastChapter = 0;               ///< The newest chapter built into this binary.
+    std::set<std::string> featuresOn;  ///< The features switched on for this run.
     long long instructions = 0;
     size_t bytesInUse = 0;
 };

@@ -18,10 +18,18 @@ struct RenderContext {
     const RenderJob& job;
     const std::map<std::string, std::string>& commandLine;  ///< --name=value of features.
 
-    /// True when some instance's material sets parameter `name` to a non-zero value.
+    /// True when some instance's material, or a material its shape carries, sets parameter
+    /// `name` to a non-zero value.
     bool anyMaterialUses(const std::string& name) const {
-        for (const Instance& i : instances)
+        std::vector<const Material*> parts;
+        for (const Instance& i : instances) {
             if (i.material && i.material->param(name) != 0.0) return true;
+            // Shapes with materials of their own (CSG operands).
+            parts.clear();
+            i.shape->materials(parts);
+            for (const Material* m : parts)
+                if (m && m->param(name) != 0.0) return true;
+        }
         return false;
     }
     /// A command-line feature option as text, or fallback.

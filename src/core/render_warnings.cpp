@@ -1,6 +1,8 @@
 #include "core/render_warnings.h"
 
 #include <algorithm>
+#include <set>
+#include <string>
 
 #include "core/image.h"
 
@@ -93,6 +95,25 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the scene's lens (gr.lens or dof_aperture) is " +
                            "ignored: it needs chapter 13 (dof), and " +
                            whyAbsent(features, "dof", 13));
+    // Compound nodes (chapter 14's CSG) whose feature is off are drawn as plain groups.
+    if (job.root) {
+        std::vector<const SceneNode*> stack = {job.root.get()};
+        std::set<const SceneNode*> seen;
+        std::set<std::string> offFeatures;
+        while (!stack.empty()) {
+            const SceneNode* node = stack.back();
+            stack.pop_back();
+            if (!seen.insert(node).second) continue;
+            if (node->compound && !features.enabled(node->compound->feature()))
+                offFeatures.insert(node->compound->feature());
+            for (const auto& child : node->children) stack.push_back(child.get());
+        }
+        if (offFeatures.count("csg"))
+            warnings.push_back(job.where + ": the scene's CSG nodes (gr.union, gr.intersection, " +
+                               "gr.difference, node:csg) are drawn as plain groups of their " +
+                               "operands: they need chapter 14 (csg), and " +
+                               whyAbsent(features, "csg", 14));
+    }
     // The course framework writes PNG data whatever the name says; so does rt, but says so.
     // A name a switched-on chapter writes in its own format (chapter 12's .hdr) is not PNG.
     if (!hasPngExtension(output) && !outputFormatFor(features.on(), output))

@@ -83,30 +83,49 @@ void checkGraphDepth(const SceneNode& root) {
 
 namespace {
 
+/// Where compound nodes go while flattening: the shapes built, and the features that are on.
+struct CompoundContext {
+    std::vector<std::shared_ptr<const Shape>>* built;
+    const std::set<std::string>& featuresOn;
+};
+
 // [flatten]
 void flattenNode(const SceneNode& node, const Mat4& parentToWorld, const Material* inherited,
-                 std::vector<Instance>& out) {
+                 const CompoundContext& compounds, std::vector<Instance>& out) {
     // Compose: the node's transform applies first, then everything above it.
     const Mat4 toWorld = parentToWorld * node.transform;
     const Material* material = node.material ? node.material.get() : inherited;
-    if (node.shape) {
+    // A compound node (CSG) turns its children into one shape, placed in the node's space.
+    std::shared_ptr<const Shape> compoundShape;
+    if (node.compound && compounds.built && compounds.featuresOn.count(node.compound->feature())) {
+        std::vector<std::vector<Instance>> operands(node.children.size());
+        for (size_t k = 0; k < node.children.size(); ++k)
+            flattenNode(*node.children[k], Mat4(1.0), material, compounds, operands[k]);
+        compoundShape = node.compound->build(operands);
+        compounds.built->push_back(compoundShape);
+    }
+    const Shape* shape = compoundShape ? compoundShape.get() : node.shape.get();
+    if (shape) {
         const double det = glm::determinant(Mat3(toWorld));
         if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
             throw InputError("node '" + node.name + "' has a singular or non-finite transform");
         Instance instance;
-        instance.shape = node.shape.get();
+        instance.shape = shape;
         instance.material = material;
         instance.name = node.name;
         instance.setTransform(toWorld * node.shapeTransform);
         out.push_back(instance);
     }
-    for (const auto& child : node.children) flattenNode(*child, toWorld, material, out);
+    if (compoundShape) return;
+    for (const auto& child : node.children) flattenNode(*child, toWorld, material, compounds, out);
 }
 // [flatten]
 
 }  // namespace
 
-std::vector<Instance> flatten(const SceneNode& root, const Material* fallback) {
+std::vector<Instance> flatten(const SceneNode& root, const Material* fallback,
+                              std::vector<std::shared_ptr<const Shape>>* built,
+                              const std::set<std::string>& featuresOn) {
     std::vector<Instance> instances;
     // Both walks below recurse once per level.
     checkGraphDepth(root);
@@ -121,7 +140,7 @@ std::vector<Instance> flatten(const SceneNode& root, const Material* fallback) {
                          " node paths, more than the limit of " + std::to_string(kMaxInstances) +
                          " (a DAG that doubles at every level?)");
     }
-    flattenNode(root, Mat4(1.0), fallback, instances);
+    flattenNode(root, Mat4(1.0), fallback, CompoundContext{built, featuresOn}, instances);
     return instances;
 }
 

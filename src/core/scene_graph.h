@@ -4,6 +4,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,19 @@
 #include "core/light.h"
 
 namespace rb {
+
+/// Makes one shape out of a node's children (chapter 14's CSG): the extension point for
+/// shapes whose parts are whole subgraphs. Flattening gives it each child's leaves, placed in
+/// the node's own space, and the node becomes one instance of the shape it returns.
+class CompoundShape {
+  public:
+    virtual ~CompoundShape() = default;
+    /// The shape made of the children; operands[k] holds child k's leaves.
+    virtual std::shared_ptr<const Shape> build(
+        const std::vector<std::vector<Instance>>& operands) const = 0;
+    /// The feature that provides it: when that feature is off, the node is a plain group.
+    virtual const char* feature() const = 0;
+};
 
 /// A node of the scene graph. A group (gr.node, gr.joint) only transforms its children; a
 /// geometry node also holds a shape and a material. One node may have several parents.
@@ -24,6 +38,8 @@ struct SceneNode {
     std::shared_ptr<const Shape> shape;        ///< Null for group nodes.
     std::shared_ptr<const Material> material;  ///< Null until set_material.
     std::vector<std::shared_ptr<SceneNode>> children;
+    /// Non-null for a node whose children are the parts of one shape (a CSG node).
+    std::shared_ptr<const CompoundShape> compound;
 
     /// Releases the children without recursing once per level, so that dropping a chain of a
     /// million nested nodes cannot overflow the stack.
@@ -56,7 +72,12 @@ inline constexpr size_t kMaxInstances = 2'000'000;
 /// Flatten the graph under root into world-space instances. Transforms compose as
 /// parent · child. A node without a material inherits the nearest ancestor's; with none at
 /// all it gets `fallback`. Throws InputError on a singular transform or too many instances.
-std::vector<Instance> flatten(const SceneNode& root, const Material* fallback);
+/// A compound node whose feature is in `featuresOn` becomes one instance of the shape its
+/// children make, kept alive in `built`; without `built`, or with the feature off, it is a
+/// plain group.
+std::vector<Instance> flatten(const SceneNode& root, const Material* fallback,
+                              std::vector<std::shared_ptr<const Shape>>* built = nullptr,
+                              const std::set<std::string>& featuresOn = {});
 
 /// One gr.render call: everything needed to render one image.
 struct RenderJob {

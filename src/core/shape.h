@@ -2,6 +2,8 @@
 /// Shape: the extension point for geometry. A shape lives in its own object space.
 #pragma once
 
+#include <vector>
+
 #include "core/aabb.h"
 #include "core/hit.h"
 
@@ -20,6 +22,9 @@ class Shape {
     }
     /// Object-space bounds.
     virtual AABB bounds() const = 0;
+    /// Append the materials the shape carries itself (chapter 14's CSG operands); most
+    /// shapes carry none and take their instance's.
+    virtual void materials(std::vector<const Material*>& out) const { (void)out; }
 };
 
 }  // namespace rb

@@ -160,16 +160,22 @@ void installRefraction(Pipeline& pipeline, Scene&, const RenderContext& context)
     // A scene without transparent materials pays nothing: the term is not even added.
     if (!context.anyMaterialUses("transparency")) return;
     // Check the parameters once here rather than on every ray.
+    std::vector<const Material*> materials;
     for (const Instance& i : context.instances) {
-        if (!i.material) continue;
-        const double transparency = i.material->param("transparency");
-        const double ior = i.material->param("ior", 1.0);
-        if (transparency < 0.0 || transparency > 1.0)
-            throw InputError("material of '" + i.name + "': transparency must be in [0, 1], got " +
-                             number(transparency));
-        if (transparency != 0.0 && !(ior > 0.0))
-            throw InputError("material of '" + i.name + "': ior must be positive, got " +
-                             number(ior));
+        // The instance's material and those its shape carries (CSG operands, chapter 14).
+        materials.assign(1, i.material);
+        i.shape->materials(materials);
+        for (const Material* m : materials) {
+            if (!m) continue;
+            const double transparency = m->param("transparency");
+            const double ior = m->param("ior", 1.0);
+            if (transparency < 0.0 || transparency > 1.0)
+                throw InputError("material of '" + i.name +
+                                 "': transparency must be in [0, 1], got " + number(transparency));
+            if (transparency != 0.0 && !(ior > 0.0))
+                throw InputError("material of '" + i.name + "': ior must be positive, got " +
+                                 number(ior));
+        }
     }
     pipeline.terms.push_back(std::make_shared<RefractionTerm>(choice));
 }

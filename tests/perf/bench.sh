@@ -274,6 +274,13 @@ if [ -x "$build/tests/perf/ch08/ch08_aa_charts" ] && "$rt" --list-features | gre
   RB_SHARED=$shared bash "$root/tests/perf/ch13/dof_vs_povray.sh" "$build" "$out/ch13" | tee -a "$report"
 fi
 
+# ---- CSG against POV-Ray (chapter 14) -------------------------------------------------------
+if "$rt" --list-features 2>/dev/null | awk '$2 == "csg" { found = 1 } END { exit !found }'; then
+  progress "CSG against POV-Ray"
+  say ""
+  bash "$root/tests/perf/ch14/csg_vs_povray.sh" "$build" | tee -a "$report"
+fi
+
 # ---- raybook's BVH against Embree ----------------------------------------------------------
 if [ -x "$build/tests/perf/bvh_vs_embree" ]; then
   for threads in 1 2; do
