@@ -20,6 +20,9 @@ class Shape {
     }
     /// Object-space bounds.
     virtual AABB bounds() const = 0;
+    /// The feature (chapter module) that provides this kind of shape, or null for the core's.
+    /// When that feature is switched off, the scene's instances of the shape are not drawn.
+    virtual const char* feature() const { return nullptr; }
 };
 
 }  // namespace rb
