@@ -48,6 +48,7 @@
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
 #include "soft_shadows/soft_shadows.h"
+#include "quadrics/quadrics.h"
 
 namespace rbtest {
 
@@ -92,7 +93,8 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
     const std::vector<rb::Feature> all = {rb::chapter01Feature(),  rb::phongFeature(),
                                           rb::bvhFeature(),  rb::reflectionFeature(),
                                           rb::refractionFeature(), rb::softShadowsFeature(),
-                                          rb::glossyFeature(),     rb::adaptiveAaFeature()};
+                                          rb::glossyFeature(),     rb::adaptiveAaFeature(),
+                                          rb::quadricsFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);
