@@ -86,7 +86,7 @@ Vec3 Cone::normal(const Vec3& p, QuadricPart part) const {
     // Blank: return Vec3(p.x, 0.0, p.z);
     // ∇(x² + z² − r(y)²)/2 = (x, −b·r, z), and on the surface r = ρ = √(x² + z²). Divided by
     // ρ it is (x/ρ, −b, z/ρ), which keeps its length as the point nears the apex.
-    const double rho = std::hypot(p.x, p.z);
+    const double rho = std::sqrt(p.x * p.x + p.z * p.z);
     // At the apex itself the normal is undefined: take the axis the apex faces, never a zero
     // vector, which would normalise to NaN.
     if (!(rho > 0.0)) return Vec3(0.0, 1.0, 0.0);
