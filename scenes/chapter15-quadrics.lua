@@ -2,7 +2,9 @@
 -- above, whose top cap and bottom cap refract the checks below it (seed 001 saw its caps black);
 -- an open copper tube, whose inside shows through the missing caps; a red cone on its base;
 -- a blue frustum (a cone cut off at top radius 0.45), capped; and a green lampshade (an open frustum).
--- Every shape is the unit cylinder or cone (height 2 along y, radius 1) under transforms.
+-- Every shape is the unit cylinder or cone (height 2 along y, radius 1) under transforms,
+-- written in raybook's own calls: seed 001's gr.cyllinder and gr.cone('name') would mark the
+-- scene as pre-2015, whose transforms apply in the reverse order.
 gr.option('max_depth', 8)
 
 local light  = gr.material{kd = {0.85, 0.82, 0.72}, ks = {0, 0, 0}, shininess = 1}
@@ -25,10 +27,10 @@ for i = -6, 5 do
   end
 end
 
--- The glass cylinder (seed 001's spelling), radius 0.5 and length 1.1, lying on its side with
+-- The glass cylinder, radius 0.5 and length 1.1, lying on its side with
 -- a cap towards the camera: the checks behind it show through both caps. It floats a hair
 -- above the floor, since a surface in the floor's plane would make two surfaces at one place.
-local puck = gr.cyllinder('glass')
+local puck = gr.cylinder('glass')
 puck:scale(0.5, 0.55, 0.5)
 puck:rotate('x', 90)
 puck:translate(0, 0.51, -0.3)
@@ -45,7 +47,7 @@ tube:set_material(copper)
 scene:add_child(tube)
 
 -- A red cone on its base.
-local cone = gr.cone('cone')
+local cone = gr.cone{name = 'cone'}
 cone:scale(0.4, 0.6, 0.4)
 cone:translate(1.55, 0.6, -1.1)
 cone:set_material(red)

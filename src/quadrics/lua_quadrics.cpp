@@ -84,12 +84,17 @@ QuadricRequest readRequest(lua_State* L, const char* call, const char* defaultNa
     return request;
 }
 
+constexpr char kCylinder[] = "gr.cylinder";
+constexpr char kCyllinder[] = "gr.cyllinder";
+
 // [lua-quadrics]
 /// gr.cylinder / gr.cyllinder: a node holding the unit cylinder, capped unless open = true.
 template <const char* Call>
 int grCylinder(lua_State* L) {
     const QuadricRequest r = readRequest(L, Call, "cylinder", {"name", "open"},
                                          "(name) or {name = ..., open = true|false}");
+    // Seed 001's spelling tells the era (its framework post-multiplied transforms).
+    if (Call == kCyllinder) noteEraSign(L, Era::Legacy, "seed 001's gr.cyllinder");
     auto node = std::make_shared<SceneNode>();
     node->name = r.name;
     node->shape = std::make_shared<const Cylinder>(!r.open);
@@ -102,6 +107,7 @@ int grCone(lua_State* L) {
     const QuadricRequest r =
         readRequest(L, "gr.cone", "cone", {"name", "open", "top_radius"},
                     "(name) or {name = ..., open = true|false, top_radius = 0..1}");
+    if (lua_type(L, 1) != LUA_TTABLE) noteEraSign(L, Era::Legacy, "seed 001's gr.cone");
     auto node = std::make_shared<SceneNode>();
     node->name = r.name;
     node->shape = std::make_shared<const Cone>(r.topRadius, !r.open);
@@ -109,9 +115,6 @@ int grCone(lua_State* L) {
     return 1;
 }
 // [lua-quadrics]
-
-constexpr char kCylinder[] = "gr.cylinder";
-constexpr char kCyllinder[] = "gr.cyllinder";
 
 }  // namespace
 
