@@ -602,3 +602,40 @@ SCENARIO("with quadrics switched off, a scene renders as if the chapter were not
         REQUIRE(on->warnings.empty());
     }
 }
+
+SCENARIO("degenerate rays and glass quadrics seen from everywhere give no NaN",
+         "[ch15][stability]") {
+    const Cylinder cylinder;
+    const Cone cone;
+    WHEN("a ray has a zero or NaN direction") {
+        std::array<ObjectHit, 2> all;
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        THEN("it crosses nothing") {
+            REQUIRE(cylinder.allHits(Ray{{0, 0, 5}, Vec3(0.0)}, all) == 0);
+            REQUIRE(cone.allHits(Ray{{0, 0, 5}, Vec3(0.0)}, all) == 0);
+            REQUIRE(cylinder.allHits(Ray{{0, 0, 5}, {nan, 0, -1}}, all) == 0);
+            REQUIRE(cone.allHits(Ray{{0, 0, 5}, {0, nan, -1}}, all) == 0);
+        }
+    }
+    WHEN("glass cylinders, cones and open shapes are rendered, the camera inside one of them") {
+        const std::string lua =
+            "gr.option('max_depth', 12)\n"
+            "local glass = gr.material{kd = {0.05, 0.05, 0.05}, ks = {0.5, 0.5, 0.5},"
+            " shininess = 50, ior = 1.5, transparency = 0.95}\n"
+            "root = gr.node('root')\n"
+            "local shapes = {gr.cylinder('a'), gr.cone{name = 'b'}, gr.cone{top_radius = 0.3},"
+            " gr.cylinder{open = true}, gr.cone{open = true}}\n"
+            "for i, s in ipairs(shapes) do\n"
+            "  s:scale(0.8, 1.2, 0.8)\n  s:rotate('x', 25 * i)\n  s:translate(2 * i - 6, 0, 0)\n"
+            "  s:set_material(glass)\n  root:add_child(s)\nend\n"
+            "local floor = gr.cube('floor')\nfloor:scale(30, 1, 30)\n"
+            "floor:translate(-15, -3, -15)\nroot:add_child(floor)\n"
+            // The eye sits inside the first cylinder (centre (-4, 0, 0)).
+            "gr.render(root, 'out.png', 8, 8, {-4, 0.1, 0.2}, {1, -0.2, -1}, {0, 1, 0}, 120,"
+            " {0.2, 0.2, 0.2}, {gr.light({0, 8, 4}, {1, 1, 1}, {1, 0, 0})})\n";
+        const auto world = rbtest::worldFromLua(lua, rbtest::chapters(15));
+        THEN("every pixel is finite and non-negative") {
+            REQUIRE(rbtest::allFiniteNonNegative(rbtest::renderSmall(*world, 96, 64)));
+        }
+    }
+}
