@@ -639,3 +639,29 @@ SCENARIO("degenerate rays and glass quadrics seen from everywhere give no NaN",
         }
     }
 }
+
+SCENARIO("seed 001's calls mark a scene as written for the pre-2015 framework", "[ch15]") {
+    // Seed 001's framework post-multiplied transforms; its calls tell raybook so (chapter 2's
+    // era detection), while gr.cylinder and raybook's table forms say nothing.
+    auto eraOf = [](const std::string& call) {
+        rbtest::TempDir dir;
+        rb::SceneLoadOptions options;  // era: detect
+        rb::SceneLoadReport report;
+        rb::loadScene(dir.write("scene.lua", "root = gr.node('root')\nlocal s = " + call +
+                                                 "\nroot:add_child(s)\n" + rbtest::renderLine()),
+                      rbtest::chapters(15), options, &report);
+        return report.era;
+    };
+    THEN("gr.cyllinder and gr.cone(name) are signs of the pre-2015 era") {
+        for (const char* call : {"gr.cyllinder('c')", "gr.cone('k')"}) {
+            const rb::EraDecision era = eraOf(call);
+            INFO(call << ": " << era.line);
+            REQUIRE(era.era == rb::Era::Legacy);
+            REQUIRE_THAT(era.line, Contains("seed 001's gr."));
+        }
+    }
+    THEN("gr.cylinder(name) and the table forms are not") {
+        for (const char* call : {"gr.cylinder('c')", "gr.cylinder{open = true}", "gr.cone{}"})
+            REQUIRE(eraOf(call).era == rb::Era::Modern);
+    }
+}
