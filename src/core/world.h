@@ -17,7 +17,7 @@ struct World {
     LoadedRender source;  ///< The request; keeps the scene graph (shapes, materials) alive.
     Scene scene;          ///< Instances, their aggregate, lights and settings.
     Pipeline pipeline;    ///< The shading the enabled features installed.
-    std::vector<std::string> warnings;  ///< What was left out, e.g. shapes of a feature that is off.
+    std::vector<std::string> warnings;  ///< What was left out (shapes of a feature that is off).
 };
 
 /// Build the world for a loaded render: take its instances and lights, apply max_depth (the
