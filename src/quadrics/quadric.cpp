@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <limits>
+#include <utility>
 
 namespace rb {
 
