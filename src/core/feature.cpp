@@ -109,16 +109,22 @@ constexpr LaterCall kLaterCalls[] = {
 };
 }  // namespace
 
-#ifndef RB_NEWEST_CHAPTER
-#error "CMakeLists.txt defines RB_NEWEST_CHAPTER, the newest chapter written"
+#if !defined(RB_NEWEST_CHAPTER) || !defined(RB_WRITTEN_CHAPTERS)
+#error "CMakeLists.txt defines RB_NEWEST_CHAPTER and RB_WRITTEN_CHAPTERS"
 #endif
 int newestChapter() {
     return RB_NEWEST_CHAPTER;
 }
 
+bool chapterWritten(int chapter) {
+    for (int written : {RB_WRITTEN_CHAPTERS})
+        if (written == chapter) return true;
+    return false;
+}
+
 std::string chapterAdvice(int chapter) {
     const std::string n = std::to_string(chapter);
-    if (chapter > newestChapter()) return "chapter " + n + " is planned but not written yet";
+    if (!chapterWritten(chapter)) return "chapter " + n + " is planned but not written yet";
     return "build it with make chapter" + n + " or later";
 }
 

@@ -14,9 +14,9 @@ class LuaBindings;
 
 /// A command-line option a feature adds, e.g. {"fresnel", "schlick|exact", "Fresnel formula"}.
 struct FeatureOption {
-    const char* name;   ///< Written --name=value.
-    const char* value;  ///< What the value looks like, for --help.
-    const char* help;   ///< One line for --help.
+    const char* name;          ///< Written --name=value.
+    const char* value;         ///< What the value looks like, for --help.
+    const char* help;          ///< One line for --help.
     const char* defaultValue;  ///< What applies when the option is absent, for --help.
 };
 
@@ -60,6 +60,9 @@ class FeatureSet {
 /// The newest chapter written in this source tree (CMakeLists.txt knows it): `make chapterN`
 /// exists for N up to this; later chapters are planned.
 int newestChapter();
+
+/// True when chapter N is written in this source tree (chapters may land out of order).
+bool chapterWritten(int chapter);
 
 /// What a student can do about a missing chapter: "build it with make chapterN or later" for
 /// a written chapter, "chapter N is planned but not written yet" for a later one.
