@@ -54,6 +54,7 @@
 #include "soft_shadows/soft_shadows.h"
 #include "texture/texture.h"
 #include "tone_map/tone_map.h"
+#include "quadrics/quadrics.h"
 
 namespace rbtest {
 
@@ -101,7 +102,8 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::glossyFeature(),     rb::adaptiveAaFeature(),
                                           rb::smoothMeshFeature(),  rb::textureFeature(),
                                           rb::bumpFeature(),        rb::toneMapFeature(),
-                                          rb::dofFeature(),         rb::csgFeature()};
+                                          rb::dofFeature(),         rb::csgFeature(),
+                                          rb::quadricsFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

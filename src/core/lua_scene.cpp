@@ -293,7 +293,10 @@ void LuaBindings::option(const char* name, int chapter, double min, double max, 
 
 int missingChapter(lua_State* L, const std::string& name, std::string& title) {
     const int chapter = chapterProviding(name, title);
-    return chapter > sceneBuilder(L).lastChapter ? chapter : 0;
+    // A chapter is missing when it is not built in, even below the newest one: chapters may
+    // land out of order (a build with 1-8 and 15 lacks chapter 14).
+    const std::vector<int>& built = sceneBuilder(L).builtChapters;
+    return chapter && std::find(built.begin(), built.end(), chapter) == built.end() ? chapter : 0;
 }
 
 void setMaterialParam(lua_State* L, Material& m, const std::string& name, double value,
@@ -664,8 +667,10 @@ void runScene(const std::string& path, const FeatureSet& features, bool legacy,
     builder.legacy = legacy;
     builder.unitSphere = std::make_shared<Sphere>();
     builder.unitCube = std::make_shared<Box>();
-    for (const Feature& f : features.built())
+    for (const Feature& f : features.built()) {
         builder.lastChapter = std::max(builder.lastChapter, f.chapter);
+        builder.builtChapters.push_back(f.chapter);
+    }
     for (const Feature& f : features.on()) builder.featuresOn.insert(f.name);
 
     // A fresh state with a capped allocator; the builder is reachable from the state itself.

@@ -87,6 +87,7 @@ struct SceneBuilder {
     std::vector<std::pair<std::string, std::string>> ignoredKinds;  ///< --lenient, the same way.
     std::map<std::string, int> ignoredCounts;
     int lastChapter = 0;               ///< The newest chapter built into this binary.
+    std::vector<int> builtChapters;    ///< Every chapter built in (they may land out of order).
     std::set<std::string> featuresOn;  ///< The features switched on for this run.
     long long instructions = 0;
     size_t bytesInUse = 0;

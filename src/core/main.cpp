@@ -164,6 +164,8 @@ int run(int argc, char** argv) {
         const PinholeCamera camera(world->source.job.camera, world->source.job.width,
                                    world->source.job.height);
         // Say what would surprise; the image is made all the same.
+        for (const std::string& warning : world->warnings)
+            std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());
         for (const std::string& warning :
              renderWarnings(world->source.job, scene.instances, camera, features, output))
             std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());

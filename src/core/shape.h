@@ -25,6 +25,9 @@ class Shape {
     /// Append the materials the shape carries itself (chapter 14's CSG operands); most
     /// shapes carry none and take their instance's.
     virtual void materials(std::vector<const Material*>& out) const { (void)out; }
+    /// The feature (chapter module) that provides this kind of shape, or null for the core's.
+    /// When that feature is switched off, the scene's instances of the shape are not drawn.
+    virtual const char* feature() const { return nullptr; }
 };
 
 }  // namespace rb

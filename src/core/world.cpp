@@ -1,5 +1,7 @@
 #include "core/world.h"
 
+#include <string>
+
 #include "core/error.h"
 #include "core/render_context.h"
 
@@ -22,6 +24,18 @@ std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& feature
     if (maxDepth >= 0) scene.maxDepth = maxDepth;
     auto minWeight = job.options.find("min_weight");
     if (minWeight != job.options.end()) scene.minWeight = minWeight->second;
+    // A shape whose chapter is switched off is not drawn, as if the chapter were not written.
+    std::map<std::string, size_t> hidden;
+    std::erase_if(scene.instances, [&](const Instance& i) {
+        const char* feature = i.shape->feature();
+        if (!feature || features.enabled(feature)) return false;
+        ++hidden[feature];
+        return true;
+    });
+    for (const auto& [feature, count] : hidden)
+        world->warnings.push_back(job.where + ": " + std::to_string(count) + " shape" +
+                                  (count == 1 ? "" : "s") + " of the '" + feature +
+                                  "' feature not drawn: --features switched it off");
     // Each enabled chapter plugs itself in, in chapter order; then the aggregate is built.
     const RenderContext context{scene.instances, job, featureOptions};
     for (const Feature& f : features.on()) {
