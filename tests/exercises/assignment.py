@@ -19,7 +19,9 @@ Commands (raybook's Makefile and the exported project's Makefile call them):
         CI: for every chapter with regions, export, check (every exercise must fail), solve,
         check (everything must pass). One export folder and one build folder are reused, with
         a compiler cache (objcache.py), so each chapter costs only what changed.
-    assignment.py tags BUILD --chapter N
+    assignment.py list
+        every chapter's exercises and the tests tagged [exN.k] for each.
+    assignment.py tags BUILD --chapter N [--apply]
         maintainer's tool: find which [chNN] tests pass once exercises 1..k are written and
         k+1.. are stubs, i.e. the [exN.k] tag each test should carry.
 
@@ -92,9 +94,25 @@ def left_out(path: str) -> bool:
     and their goldens, the docs build, CI, the maintainer's ladder and the front door (the
     export writes its own Makefile and README)."""
     prefixes = ("scenes/seeds/", "scenes/showcase", ".ci/", "docs/", "tests/ladder.sh",
-                "tests/docs_warnings.sh", "tests/scenes/seeds.sh", "tests/perf/", "tests/fuzz/")
+                "tests/docs_warnings.sh", "tests/scenes/seeds.sh", "tests/perf/", "tests/fuzz/",
+                "tests/exercises/README.md")
     return (path.startswith(prefixes) or re.match(r"^golden/\d\d\d-", path) is not None
             or path in ("Makefile", "README.md"))
+
+
+def shared_test_fits(root: Path, path: str, chapters: dict[int, dict], last: int) -> bool:
+    """Whether a test file that no single chapter owns (the stability suite, the property
+    test) belongs in an export of chapters 1..last: the property test draws scenes from every
+    chapter, so only the newest chapter's export has it; another shared file goes when every
+    module it includes is there."""
+    if not re.match(r"^tests/[^/]+\.cpp$", path) or re.match(r"^tests/ch\d\d_", path):
+        return True
+    if Path(path).name.startswith("property"):
+        return last == max(chapters)
+    modules = set(re.findall(r'^#include "(\w+)/', (root / path).read_text(), re.M))
+    have = {"core"} | {f.split("/")[1] for k, c in chapters.items() if k <= last
+                       for f in c["folders"]}
+    return modules <= have
 
 
 def tracked_files(root: Path) -> list[str]:
@@ -148,9 +166,94 @@ def trim_test_helpers(text: str, chapters: dict[int, dict], last: int) -> str:
     return re.sub(r",(\s*)\}", r"\1}", text)
 
 
+def dropped_names(root: Path, chapters: dict[int, dict], last: int,
+                  helpers: str) -> tuple[set[str], set[str]]:
+    """The modules of chapters after `last`, and the names their headers declare (classes,
+    structs, enums, aliases, functions) plus the test helpers that test_helpers.h defines only
+    when such a module is there (inside #if __has_include("module/...") ... #endif)."""
+    modules = {f.split("/")[1] for k, c in chapters.items() if k > last for f in c["folders"]}
+    names: set[str] = set()
+    for module in modules:
+        for header in (root / "src" / module).glob("*.h"):
+            text = header.read_text()
+            names.update(re.findall(r"\b(?:class|struct|enum class|enum|using)\s+(\w+)", text))
+            names.update(re.findall(r"^(?:inline\s+)?[\w:<>,]+[\s*&]+(\w+)\(", text, re.M))
+    for module in modules:
+        for block in re.findall(rf'#if __has_include\("{module}/[^"]+"\)(.*?)#endif', helpers,
+                                re.S):
+            names.update(re.findall(r"^inline\s+[^(]*?(\w+)\(", block, re.M))
+    names -= {"operator", "Feature"}
+    return modules, names
+
+
+def block_end(text: str, open_brace: int) -> int:
+    """The index just after the brace that closes the one at `open_brace`, skipping strings,
+    characters, raw strings and comments."""
+    depth, i = 0, open_brace
+    while i < len(text):
+        if text.startswith("//", i):
+            i = text.index("\n", i)
+        elif text.startswith("/*", i):
+            i = text.index("*/", i) + 2
+            continue
+        elif text.startswith('R"', i) and (i == 0 or not (text[i - 1].isalnum() or text[i - 1] == "_")):
+            delim = text[i + 2:text.index("(", i)]
+            i = text.index(")" + delim + '"', i) + len(delim) + 2
+        elif text[i] == '"' or (text[i] == "'" and not text[i - 1].isalnum()):
+            q, i = text[i], i + 1
+            while text[i] != q:
+                i += 2 if text[i] == "\\" else 1
+        elif text[i] == "{":
+            depth += 1
+        elif text[i] == "}":
+            depth -= 1
+            if depth == 0:
+                return i + 1
+        i += 1
+    return len(text)
+
+
+def trim_test_file(text: str, modules: set[str], names: set[str],
+                   last: int) -> tuple[str | None, list[str]]:
+    """A test file without the scenarios that use a later chapter's code or are tagged
+    [needs-chKK] for a later chapter K (a test of an early chapter that checks how it works
+    with later ones); None when code outside the scenarios uses a later chapter (the file is
+    left out). Also returns the scenarios removed."""
+    uses = re.compile(r"\b(?:rb|rbtest)::(?:" + "|".join(map(re.escape, sorted(names))) + r")\b"
+                      if names else r"(?!)")
+    includes = re.compile(r'^#include "(?:' + "|".join(map(re.escape, sorted(modules))) +
+                          r')/[^"]+"\n', re.M) if modules else re.compile(r"(?!)")
+    removed, pieces, pos = [], [], 0
+    for name, _span in scenarios(text):
+        start = text.index("SCENARIO(", pos)
+        body = text.index("{", text.index(")", _span[1]))
+        end = block_end(text, body)
+        pieces.append(text[pos:start])
+        needs = [int(k) for k in re.findall(r"\[needs-ch(\d+)\]", text[_span[0]:_span[1]])]
+        if uses.search(text[start:end]) or any(k > last for k in needs):
+            removed.append(name)
+            pieces.append(f"// Scenario left out of this assignment (it needs a later chapter): "
+                          f"{name}\n")
+        else:
+            pieces.append(text[start:end])
+        pos = end
+    pieces.append(text[pos:])
+    outside = "".join(p for p in pieces if not p.startswith("SCENARIO("))
+    if uses.search(outside) or (includes.search(outside) and removed == [] and
+                                 uses.search(text)):
+        return None, []
+    trimmed = "".join(pieces)
+    if removed:
+        trimmed = includes.sub("", trimmed)
+    elif includes.search(trimmed):
+        return None, []
+    return trimmed, removed
+
+
 CHECK_CMAKE = """
 # make check (an assignment): chapter {n}'s tests alone, so that a check builds only them.
-file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp)
+file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp
+     ${{CMAKE_SOURCE_DIR}}/tests/stability*.cpp)
 add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp ${{RB_CHECK_SOURCES}})
 target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src ${{CMAKE_SOURCE_DIR}}/tests)
 target_link_libraries(raybook_check PRIVATE raybook rb_golden_compare Catch2::Catch2)
@@ -180,7 +283,7 @@ def exercise_info(root: Path, n: int) -> list[dict]:
     return out
 
 
-def readme(root: Path, n: int, exercises: list[dict]) -> str:
+def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
     """The exported project's README, built from the chapter page."""
     page = page_of(root, n)
     text = page.read_text() if page else ""
@@ -198,7 +301,7 @@ def readme(root: Path, n: int, exercises: list[dict]) -> str:
            f"complete; in chapter {n} the code that *is* the chapter's idea has been taken out "
            f"and replaced by stubs. Each stub throws `rb::ExerciseNotDone`, which names the "
            f"exercise and the section of `{page_rel}` that explains it.", ""]
-    out += [l for l in intro if l.strip() or (out and out[-1].strip())]
+    out += "\n".join(intro).strip().split("\n")
     out += ["", "## What to implement, in this order", "",
             f"Read `{page_rel}` first. Then write each exercise between its two "
             "`// [exercise-…]` marker comments (keep the markers):", ""]
@@ -219,10 +322,13 @@ def readme(root: Path, n: int, exercises: list[dict]) -> str:
             f"renders the chapter's scene |",
             f"| `build/tests/raybook_check \"[ex{n}.1]\"` | after `make check`, runs one "
             f"exercise's tests with Catch2's full messages |",
-            "| `make test` | every test of chapters 1 to N and their golden images |", "",
+            f"| `make test` | every test of chapters 1 to {n} and their golden images |", "",
             "A stub that is still in place makes its tests fail with a message such as "
             f"`exercise {exercises[0]['name'] if exercises else n} (...) is not written yet: "
             "read the section ... of the chapter page`.", ""]
+    if left:
+        out += ["Tests of chapters 1 to {} that use code of a later chapter are left out of this "
+                "project:".format(n), ""] + [f"- {l}" for l in left] + [""]
     more = re.search(r"\n## Exercises \{#[\w-]+\}\n(.*?)(\n## |\Z)", text, re.S)
     if more:
         challenges = re.split(r"\n\n(?=1\. )", more.group(1), maxsplit=1)
@@ -241,8 +347,8 @@ def export(args) -> int:
     dest = Path(args.dir).resolve()
     if dest == root or root in dest.parents and not dest.name.startswith(("assignment", "build")):
         sys.exit(f"assignment: refusing to write into {dest}")
-    files = [p for p in tracked_files(root)
-             if not left_out(p) and (owner(p, chapters) or 0) <= n]
+    files = [p for p in tracked_files(root) if not left_out(p)
+             and (owner(p, chapters) or 0) <= n and shared_test_fits(root, p, chapters, n)]
     exercises = exercise_info(root, n)
     if not exercises:
         sys.exit(f"assignment: chapter {n} has no exercise regions")
@@ -255,6 +361,17 @@ def export(args) -> int:
                                             n).encode()
     contents["tests/test_helpers.h"] = trim_test_helpers(
         contents["tests/test_helpers.h"].decode(), chapters, n).encode()
+    # Test files and scenarios that use a later chapter's code are left out.
+    modules, names = dropped_names(root, chapters, n, contents["tests/test_helpers.h"].decode())
+    left = []
+    for rel in [r for r in contents if re.match(r"^tests/[^/]+\.cpp$", r)]:
+        trimmed, removed = trim_test_file(contents[rel].decode(), modules, names, n)
+        if trimmed is None:
+            del contents[rel]
+            left.append(f"{rel} (the whole file)")
+        else:
+            contents[rel] = trimmed.encode()
+            left += [f"{rel}: {s}" for s in removed]
     # Benchmarks and fuzz targets are not part of an assignment.
     for folder in ("tests/perf", "tests/fuzz"):
         contents[f"{folder}/CMakeLists.txt"] = b"# Not part of an assignment (see raybook).\n"
@@ -262,12 +379,12 @@ def export(args) -> int:
     template = (root / "tests/exercises/assignment.mk").read_text()
     contents["Makefile"] = template.replace("@CHAPTER@", str(n)).replace(
         "@WHOLE_BOOK@", "|".join(WHOLE_BOOK_SUITES)).encode()
-    contents["README.md"] = readme(root, n, exercises).encode()
+    contents["README.md"] = readme(root, n, exercises, left).encode()
     contents[".gitignore"] = b"/build/\n/rt\n/rt.tmp*\n/*.png\n"
     scene = scene_of(root, n)
     info = {"chapter": n, "page": str(page_of(root, n).relative_to(root)),
             "scene": str(scene.relative_to(root)) if scene else None,
-            "exercises": exercises}
+            "exercises": exercises, "left_out": left}
     contents[INFO] = (json.dumps(info, indent=2) + "\n").encode()
     # Sync: write what changed, remove what the export no longer has.
     dest.mkdir(parents=True, exist_ok=True)
@@ -420,7 +537,7 @@ def check_project(project: Path, build: Path, quiet: bool = False) -> dict:
                          str(report), str(build / "tests" / "rb_imgdiff"),
                          "--report-name=check"], 600, cwd=project)
         name = Path(info["scene"]).stem
-        m = re.search(r"rmse[ =:]+([0-9.eE+-]+)", out)
+        m = re.search(r"RMSE ([0-9.eE+-]+)", out)
         html = report / "check.html"
         result["golden"] = {"status": "pass" if code == 0 else "fail", "scene": name,
                             "metric": m.group(1) if m else "", "output": out.strip()[-1500:],
@@ -634,6 +751,22 @@ def apply_tags(chapter: int, owned: dict[str, list[str]]) -> None:
             print(f"not found in the test files (tag it by hand): {key}")
 
 
+def list_exercises(_args) -> int:
+    """Every chapter's exercises and the tests tagged for each (read from the test files)."""
+    tagged: dict[str, list[str]] = {}
+    for path in sorted((ROOT / "tests").glob("*.cpp")):
+        text = path.read_text()
+        for name, (begin, end) in scenarios(text):
+            for ex in re.findall(r"\[ex(\d+\.\d+)\]", text[begin:end]):
+                tagged.setdefault(ex, []).append(f"{path.name}: {name}")
+    for r in rg.find_regions():
+        tests = tagged.get(r.name, [])
+        print(f"{r.name} {r.title} ({r.path.relative_to(ROOT)}), {len(tests)} tests:")
+        for t in tests:
+            print(f"    {t}")
+    return 0
+
+
 def roundtrip(args) -> int:
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
@@ -700,6 +833,7 @@ def main() -> int:
     p = sub.add_parser("solve")
     p.add_argument("project")
     p.set_defaults(func=solve)
+    sub.add_parser("list").set_defaults(func=list_exercises)
     p = sub.add_parser("roundtrip")
     p.add_argument("work")
     p.add_argument("--chapters", type=int, nargs="*")
