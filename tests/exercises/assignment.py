@@ -172,12 +172,19 @@ def dropped_names(root: Path, chapters: dict[int, dict], last: int,
     structs, enums, aliases, functions) plus the test helpers that test_helpers.h defines only
     when such a module is there (inside #if __has_include("module/...") ... #endif)."""
     modules = {f.split("/")[1] for k, c in chapters.items() if k > last for f in c["folders"]}
-    names: set[str] = set()
-    for module in modules:
-        for header in (root / "src" / module).glob("*.h"):
+
+    def declared(folders) -> set[str]:
+        found: set[str] = set()
+        for header in (h for f in folders for h in (root / "src" / f).glob("*.h")):
             text = header.read_text()
-            names.update(re.findall(r"\b(?:class|struct|enum class|enum|using)\s+(\w+)", text))
-            names.update(re.findall(r"^(?:inline\s+)?[\w:<>,]+[\s*&]+(\w+)\(", text, re.M))
+            # Definitions, not forward declarations (struct RenderContext;).
+            found.update(re.findall(r"\b(?:class|struct|enum class|enum|using)\s+(\w+)\b(?!;)",
+                                    text))
+            found.update(re.findall(r"^(?:inline\s+)?[\w:<>,]+[\s*&]+(\w+)\(", text, re.M))
+        return found
+
+    kept = {f.name for f in (root / "src").iterdir() if f.is_dir()} - modules
+    names = declared(modules) - declared(kept)
     for module in modules:
         for block in re.findall(rf'#if __has_include\("{module}/[^"]+"\)(.*?)#endif', helpers,
                                 re.S):
@@ -481,9 +488,12 @@ def run_tests(program: Path, names: list[str], cwd: Path) -> list[dict]:
         code, out = run([str(program), catch_escape(name)], TEST_TIMEOUT, cwd=cwd)
         why = ""
         if code != 0:
-            m = re.search(r"(is not written yet.*?replace this stub)", out)
-            why = ("stub still in place" if m else "timed out" if code == 124
-                   else "failed" if code > 0 else f"crashed (signal {-code})")
+            flat = " ".join(out.split())
+            stub = re.search(r"exercise \S+ \(.*?\) is not written yet: .*?replace this stub", flat)
+            failed = re.search(r"(\S+:\d+: FAILED:.*?)(?: -{20}| ={20}|$)", flat)
+            why = (stub.group(0) if stub else f"timed out after {TEST_TIMEOUT} s" if code == 124
+                   else failed.group(1)[:400] if failed and code > 0
+                   else f"failed (exit {code})" if code > 0 else f"crashed (signal {-code})")
         results.append({"name": name, "passed": code == 0, "why": why, "output": out[-3000:]})
     return results
 
@@ -560,8 +570,14 @@ def table(result: dict) -> str:
                     f"{'pass' if o['passed'] == o['tests'] else 'fail'} | the whole page |")
     g = result["golden"]
     if g["status"] != "not run":
+        if g["report"]:
+            what = "diff: " + g["report"]
+        elif g["status"] == "fail":
+            what = (g.get("output", "").split("\n")[0].split(": ", 1)[-1] or "the render failed")
+        else:
+            what = f"golden/{g.get('scene', '')}.png"
         rows.append(f"| golden image {g.get('scene', '')} | rmse {g['metric'] or '-'} | "
-                    f"{g['status']} | {'diff: ' + g['report'] if g['report'] else 'golden/'} |")
+                    f"{g['status']} | {what} |")
     return "\n".join(rows)
 
 
@@ -581,11 +597,12 @@ def check(args) -> int:
     print(table(result))
     for e in result["exercises"]:
         for t in e.get("failures", [])[:1]:
-            first = [l for l in t["output"].split("\n") if l.strip()]
-            msg = next((l for l in first if "not written yet" in l or "FAILED" in l), "")
-            print(f"\n{e['name']}: {t['name']}: {t['why']}" + (f"\n  {msg.strip()}" if msg else ""))
+            print(f"\n{e['name']}: {t['name']}\n  {t['why']}")
+            if len(e["failures"]) > 1:
+                print(f"  (and {len(e['failures']) - 1} more; run build/tests/raybook_check "
+                      f"\"{e['tag']}\" for every message)")
     if result["golden"]["status"] == "fail":
-        print(f"\ngolden image: {result['golden']['output'].splitlines()[0] if result['golden']['output'] else ''}")
+        print("\ngolden image: " + "\n  ".join(result["golden"]["output"].splitlines()[:3]))
         if result["golden"]["report"]:
             print(f"  open {result['golden']['report']} (expected, yours, and the difference)")
     if args.json:
@@ -593,6 +610,28 @@ def check(args) -> int:
     ok = passed_all(result)
     print("\nall exercises pass" if ok else "\nnot done yet")
     return 0 if ok else 1
+
+
+def changed_tests(project: Path) -> list[str]:
+    """The files a grade relies on (tests, golden images, scenes, the exercise list) that
+    differ from a fresh export of the same chapter by this raybook: a student is to change
+    src/ only."""
+    import tempfile
+    n = json.loads((project / INFO).read_text())["chapter"]
+    with tempfile.TemporaryDirectory() as tmp:
+        fresh = Path(tmp) / "assignment"
+        code, out = run([sys.executable, __file__, "export", str(n), str(fresh)], 300)
+        if code != 0:
+            return [f"(cannot export chapter {n} to compare: {out.strip()[-200:]})"]
+        changed = []
+        for path in sorted(fresh.rglob("*")):
+            rel = path.relative_to(fresh)
+            if path.is_file() and (rel.parts[0] in ("tests", "golden", "scenes")
+                                   or str(rel) == INFO) and "exercises" not in rel.parts:
+                theirs = project / rel
+                if not theirs.is_file() or theirs.read_bytes() != path.read_bytes():
+                    changed.append(str(rel))
+        return changed
 
 
 # ---- Grading --------------------------------------------------------------------------------
@@ -613,12 +652,17 @@ def grade(args) -> int:
         build = Path(args.build_root).resolve() / project.name if args.build_root else \
             project / "build"
         start = time.monotonic()
+        changed = changed_tests(project)
         result = check_project(project, build)
         seconds = time.monotonic() - start
         print(f"## {project.name} (chapter {result['chapter']}, {seconds:.0f} s)")
         print(table(result))
         print()
-        row = {"student": project.name, "chapter": result["chapter"], "build": result["build"]}
+        if changed:
+            print(f"note: files that grading relies on differ from a fresh export: "
+                  f"{', '.join(changed[:10])}")
+        row = {"student": project.name, "chapter": result["chapter"], "build": result["build"],
+               "tests changed": " ".join(changed)}
         for e in result["exercises"]:
             key = f"ex{e['name']}"
             if key not in exercise_names:
@@ -631,7 +675,7 @@ def grade(args) -> int:
         row["score"] = (f"{sum(e['passed'] for e in result['exercises'])}/{total}"
                         if result["build"] == "ok" else "0")
         rows.append(row)
-    fields = ["student", "chapter", "build"]
+    fields = ["student", "chapter", "build", "tests changed"]
     for key in exercise_names:
         fields += [f"{key} passed", f"{key} tests"]
     fields += ["golden", "golden rmse", "score"]

@@ -81,6 +81,8 @@ for e in exercises:
     elif e < "ex" + bug:
         expect(p == t, f"buggy: {e}, before the bug, passes ({p}/{t})")
 expect(x["build"] == "failed" and x["score"] == "0", "broken: a build failure, score 0")
+expect(all(r["tests changed"] == "" for r in rows.values()),
+       "no project's tests, goldens or scenes differ from a fresh export")
 sys.exit(1 if failures else 0)
 EOF
 echo "grade test: $((SECONDS - start)) s"
