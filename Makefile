@@ -82,7 +82,8 @@ assignment:
 	  $(or $(DIR),assignment-ch$(shell printf %02d $(N) 2>/dev/null))
 
 grade:
-	@[ -n "$(DIR)" ] || { echo "usage: make grade DIR=student-project-or-folder [CSV=grades.csv]" >&2; exit 2; }
+	@[ -n "$(DIR)" ] || { echo "usage: make grade DIR=project-or-folder [CSV=grades.csv]" >&2; \
+	  exit 2; }
 	python3 tests/exercises/assignment.py grade $(DIR) $(if $(CSV),--csv $(CSV))
 
 # The assignments' round trip (every chapter: export, make check fails every exercise; restore

@@ -36,9 +36,9 @@ import csv
 import json
 import os
 import re
-import shutil
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -205,7 +205,7 @@ def block_end(text: str, open_brace: int) -> int:
         elif text.startswith("/*", i):
             i = text.index("*/", i) + 2
             continue
-        elif text.startswith('R"', i) and (i == 0 or not (text[i - 1].isalnum() or text[i - 1] == "_")):
+        elif text.startswith('R"', i) and not (text[i - 1:i].isalnum() or text[i - 1:i] == "_"):
             delim = text[i + 2:text.index("(", i)]
             i = text.index(")" + delim + '"', i) + len(delim) + 2
         elif text[i] == '"' or (text[i] == "'" and not text[i - 1].isalnum()):
@@ -264,7 +264,8 @@ CHECK_CMAKE = """
 file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp
      ${{CMAKE_SOURCE_DIR}}/tests/stability*.cpp)
 add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp ${{RB_CHECK_SOURCES}})
-target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src ${{CMAKE_SOURCE_DIR}}/tests)
+target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src
+                           ${{CMAKE_SOURCE_DIR}}/tests)
 target_link_libraries(raybook_check PRIVATE raybook rb_golden_compare Catch2::Catch2)
 target_compile_definitions(raybook_check PRIVATE RB_SOURCE_DIR="${{CMAKE_SOURCE_DIR}}")
 """
@@ -635,7 +636,6 @@ def changed_tests(project: Path) -> list[str]:
     """The files a grade relies on (tests, golden images, scenes, the exercise list) that
     differ from a fresh export of the same chapter by this raybook: a student is to change
     src/ only."""
-    import tempfile
     n = json.loads((project / INFO).read_text())["chapter"]
     with tempfile.TemporaryDirectory() as tmp:
         fresh = Path(tmp) / "assignment"

@@ -36,7 +36,7 @@ def main() -> int:
     dep_target = args[args.index("-MT") + 1] if "-MT" in args else out
     # The preprocessor run: the same command without its outputs, printing to stdout.
     pre, skip = [command[0]], False
-    for i, a in enumerate(args):
+    for a in args:
         if skip:
             skip = False
             continue
