@@ -16,8 +16,8 @@ FUZZ_SECONDS ?= 60
 FUZZ_TARGETS := obj lua_scene options
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps bench-deps configure rt test test-exercises test-sanitize demo docs golden-update bench \
-        charts fuzz clean $(CHAPTER_TARGETS)
+.PHONY: deps bench-deps configure rt test test-exercises test-assignments assignment grade \
+        test-sanitize demo docs golden-update bench charts fuzz clean $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
 deps:
@@ -51,18 +51,47 @@ rt: chapter$(LAST)
 
 # Every test: the unit tests, golden images, scenes and bad input (CTest), then the chapter
 # ladder the way a student climbs it (make chapterN for each N), which leaves ./rt the newest,
-# then the check that the tests notice every exercise region blanked.
+# then the check that the tests notice every exercise region blanked, then the assignments'
+# round trip and grading (make test-assignments).
 test: configure
 	cmake --build $(BUILD) -j $(JOBS)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"
 	python3 tests/exercises/regions.py mutate $(BUILD)
+	$(MAKE) --no-print-directory test-assignments
 
 # The tests prove they can fail: each exercise region, blanked one at a time, must make one of
 # its chapter's tests fail (only the test program is rebuilt, and only that chapter's tests run).
 test-exercises: configure
 	cmake --build $(BUILD) -j $(JOBS) --target raybook_tests
 	python3 tests/exercises/regions.py mutate $(BUILD)
+
+# Assignments (tests/exercises/assignment.py): make assignment N [DIR=...] writes chapters 1..N
+# as a project of its own, chapter N's exercise regions replaced by stubs; make grade DIR=...
+# checks one such project, or a folder of them, and writes a CSV. `make assignment 5` works as
+# written: the number after "assignment" is its argument, not a target.
+ifeq (assignment,$(firstword $(MAKECMDGOALS)))
+  N ?= $(word 2,$(MAKECMDGOALS))
+  ifneq ($(word 2,$(MAKECMDGOALS)),)
+    $(eval $(word 2,$(MAKECMDGOALS)):;@:)
+  endif
+endif
+assignment:
+	@[ -n "$(N)" ] || { echo "usage: make assignment N [DIR=assignment-chNN]" >&2; exit 2; }
+	python3 tests/exercises/assignment.py export $(N) \
+	  $(or $(DIR),assignment-ch$(shell printf %02d $(N) 2>/dev/null))
+
+grade:
+	@[ -n "$(DIR)" ] || { echo "usage: make grade DIR=project-or-folder [CSV=grades.csv]" >&2; \
+	  exit 2; }
+	python3 tests/exercises/assignment.py grade $(DIR) $(if $(CSV),--csv $(CSV))
+
+# The assignments' round trip (every chapter: export, make check fails every exercise; restore
+# the regions, make check passes) and make grade over an untouched, a solved and a buggy
+# project. One export folder and one build folder with a compiler cache serve every chapter.
+test-assignments:
+	python3 tests/exercises/assignment.py roundtrip $(BUILD)/assignments
+	bash tests/exercises/grade_test.sh $(BUILD)/grade-test
 
 # The same CTest suite (unit tests, golden images, determinism, bad input, scenes, batch,
 # interrupt, docs) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build

@@ -143,7 +143,7 @@ struct AmbientWall {
 
 // [ch01-sphere-hit]
 SCENARIO("a ray from outside meets the unit sphere at the nearer root of |o + t·d|² = 1",
-         "[ch01]") {
+         "[ch01][ex1.1]") {
     const rb::Sphere sphere;
     rb::ObjectHit hit;
     GIVEN("a ray from (0, 0, 5) straight at the centre") {
@@ -183,7 +183,7 @@ SCENARIO("a ray from outside meets the unit sphere at the nearer root of |o + t�
 }
 // [ch01-sphere-hit]
 
-SCENARIO("a ray that starts inside the sphere meets it on the way out", "[ch01]") {
+SCENARIO("a ray that starts inside the sphere meets it on the way out", "[ch01][ex1.1]") {
     const rb::Sphere sphere;
     rb::ObjectHit hit;
     GIVEN("a ray from the centre along +x") {
@@ -204,7 +204,7 @@ SCENARIO("a ray that starts inside the sphere meets it on the way out", "[ch01]"
     }
 }
 
-SCENARIO("a ray that passes beside or away from the sphere misses it", "[ch01]") {
+SCENARIO("a ray that passes beside or away from the sphere misses it", "[ch01][ex1.1]") {
     const rb::Sphere sphere;
     rb::ObjectHit hit;
     GIVEN("rays parallel to z at distances just over and just under the radius") {
@@ -230,7 +230,8 @@ SCENARIO("a ray that passes beside or away from the sphere misses it", "[ch01]")
 }
 
 // [ch01-stable-quadratic]
-SCENARIO("the stable quadratic finds a unit sphere 1e8 away to within a few ulps", "[ch01]") {
+SCENARIO("the stable quadratic finds a unit sphere 1e8 away to within a few ulps",
+         "[ch01][ex1.1]") {
     const rb::Sphere sphere;
     rb::ObjectHit hit;
     GIVEN("a ray from (0, 0, 1e8) towards the centre") {
@@ -280,7 +281,7 @@ SCENARIO("the stable quadratic finds a unit sphere 1e8 away to within a few ulps
 // ---- Ray–box ----------------------------------------------------------------------------------
 
 SCENARIO("a ray meets the unit cube on the face it enters, or the face it leaves from inside",
-         "[ch01]") {
+         "[ch01][ex1.3]") {
     // Source for every row: hand derivation with the slabs 0 ≤ x, y, z ≤ 1; the entry distance
     // is the largest near-plane distance, the exit the smallest far-plane distance.
     const BoxCase cases[] = {
@@ -323,7 +324,7 @@ SCENARIO("a ray meets the unit cube on the face it enters, or the face it leaves
     }
 }
 
-SCENARIO("a ray lying in the plane of a box face touches the box without NaN", "[ch01]") {
+SCENARIO("a ray lying in the plane of a box face touches the box without NaN", "[ch01][ex1.3]") {
     const rb::Box box;
     rb::ObjectHit hit;
     GIVEN("rays along +x in the planes of the bottom face (y = 0) and the top face (y = 1)") {
@@ -345,7 +346,7 @@ SCENARIO("a ray lying in the plane of a box face touches the box without NaN", "
     }
 }
 
-SCENARIO("a ray with zero direction components is handled by the slab tests", "[ch01]") {
+SCENARIO("a ray with zero direction components is handled by the slab tests", "[ch01][ex1.3]") {
     const rb::Box box;
     const rb::AABB unit{Vec3(0), Vec3(1)};
     GIVEN("rays along −z (d = (0, 0, −1)) and along −z with negative zeros (d = (−0, −0, −1))") {
@@ -395,7 +396,7 @@ SCENARIO("a ray with zero direction components is handled by the slab tests", "[
 
 // [ch01-camera-corners]
 SCENARIO("camera rays through the image corners and centre follow from fovy and the aspect ratio",
-         "[ch01]") {
+         "[ch01][ex1.2]") {
     GIVEN(
         "A4's conventions: view (0, 0, −7) not normalised, up (0, 1, 1) not orthogonal, "
         "fovy 90°, a 200 × 100 image") {
@@ -550,7 +551,7 @@ SCENARIO("the sampler's numbers are uniform on the unit interval and the unit sq
 // ---- The render loop --------------------------------------------------------------------------
 
 // [ch01-determinism]
-SCENARIO("the image is bit-identical for 1 and 2 threads and for every run", "[ch01]") {
+SCENARIO("the image is bit-identical for 1 and 2 threads and for every run", "[ch01][ex1.3]") {
     GIVEN("a scene of three spheres on a floor, two lights, 64 × 48 pixels, 4 jittered samples") {
         const CodeScene code;
         WHEN("it is rendered with 1 thread, with 2 threads, and with 2 threads again") {
@@ -576,7 +577,7 @@ SCENARIO("the image is bit-identical for 1 and 2 threads and for every run", "[c
 }
 
 SCENARIO("both threads render part of the image and it still matches one thread bit for bit",
-         "[ch01]") {
+         "[ch01][ex1.3]") {
     GIVEN("the same scene at 256 × 192 pixels (192 tiles of 16 × 16) with 4 jittered samples") {
         const CodeScene code;
         std::vector<int> oneThreads;
@@ -614,7 +615,8 @@ SCENARIO("both threads render part of the image and it still matches one thread 
 }
 // [ch01-determinism]
 
-SCENARIO("the pixel value is the average of its samples: their sum divided by spp", "[ch01]") {
+SCENARIO("the pixel value is the average of its samples: their sum divided by spp",
+         "[ch01][ex1.3][needs-ch02]") {
     GIVEN("a wall that fills the view, lit only by ambient light (radiance 0.15 everywhere)") {
         const AmbientWall wall;
         for (int spp : {1, 2, 3, 4, 16}) {

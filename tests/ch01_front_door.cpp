@@ -158,7 +158,7 @@ SCENARIO(
 SCENARIO(
     "a scene in its own folder loads its mesh and its require()d helper from there, "
     "wherever it is run from",
-    "[ch01][front-door]") {
+    "[ch01][front-door][needs-ch03]") {
     GIVEN("a folder holding scene.lua, tri.obj and helper.lua, and another working directory") {
         rbtest::TempDir dir;
         fs::create_directory(dir.path() / "Assets");
@@ -206,7 +206,7 @@ SCENARIO("a helper that raises an error while require() loads it stops the scene
 }
 
 SCENARIO("--features=-glossy on its own means everything built except glossy",
-         "[ch01][front-door]") {
+         "[ch01][front-door][needs-ch07]") {
     GIVEN("the chapter-7 build") {
         WHEN("the list starts by switching one feature off") {
             const rb::FeatureSet set = rbtest::chapters(7, "-glossy");
@@ -230,7 +230,7 @@ SCENARIO("--features=-glossy on its own means everything built except glossy",
 }
 
 SCENARIO("a message tells a student to build a chapter only when that chapter is written",
-         "[ch01][front-door]") {
+         "[ch01][front-door][needs-ch04]") {
     GIVEN("the newest chapter written in this tree") {
         const int newest = rb::newestChapter();
         THEN("a written chapter's advice names its make target") {
@@ -336,7 +336,8 @@ SCENARIO("--help shows the default of every option that has one, and --assets ma
     }
 }
 
-SCENARIO("--version names the version, the commit and the chapters built", "[ch01][front-door]") {
+SCENARIO("--version names the version, the commit and the chapters built",
+         "[ch01][front-door][needs-ch03]") {
     GIVEN("the features of chapters 1-3") {
         const std::string text = rb::versionText(rbtest::chapters(3).built());
         THEN("the first line has the version and commit, the second chapters 1-3 by name") {
@@ -376,7 +377,8 @@ SCENARIO("the camera knows which boxes no camera ray can reach", "[ch01][front-d
     }
 }
 
-SCENARIO("a render that can only disappoint says why, and is still made", "[ch01][front-door]") {
+SCENARIO("a render that can only disappoint says why, and is still made",
+         "[ch01][front-door][needs-ch07]") {
     const rb::Sphere sphere;
     const rb::PinholeCamera camera(jobAt().camera, 40, 30);
     GIVEN("a render with no shapes at all") {

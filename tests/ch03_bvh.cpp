@@ -151,7 +151,7 @@ std::shared_ptr<rb::Mesh> heightField(int k) {
 
 // [ch03-watertight]
 SCENARIO("a ray through the shared edge or vertex of two triangles hits at least one of them",
-         "[ch03]") {
+         "[ch03][ex3.1]") {
     GIVEN("the unit square split along its diagonal into (p0, p1, p2) and (p0, p2, p3)") {
         const Vec3 p0(0, 0, 0), p1(1, 0, 0), p2(1, 1, 0), p3(0, 1, 0);
         // Directions with small integer components: with a dyadic point s on the diagonal, the
@@ -237,7 +237,7 @@ SCENARIO("a ray through the shared edge or vertex of two triangles hits at least
 }
 // [ch03-watertight]
 
-SCENARIO("the barycentric coordinates of a hit rebuild the hit point", "[ch03]") {
+SCENARIO("the barycentric coordinates of a hit rebuild the hit point", "[ch03][ex3.1]") {
     GIVEN("the triangle (0,0,0), (1,0,0), (0,1,0) and a ray down from (0.25, 0.5, 1)") {
         rb::TriangleHit th;
         REQUIRE(
@@ -301,7 +301,7 @@ SCENARIO("the barycentric coordinates of a hit rebuild the hit point", "[ch03]")
     }
 }
 
-SCENARIO("a triangle is hit from either side", "[ch03]") {
+SCENARIO("a triangle is hit from either side", "[ch03][ex3.1]") {
     GIVEN("the triangle (0,0,0), (1,0,0), (0,1,0), whose winding makes +z its front") {
         const Vec3 p0(0, 0, 0), p1(1, 0, 0), p2(0, 1, 0);
         THEN("a ray from above and a ray from below both hit it at t = 1") {
@@ -327,7 +327,7 @@ SCENARIO("a triangle is hit from either side", "[ch03]") {
     }
 }
 
-SCENARIO("a degenerate triangle is never hit", "[ch03]") {
+SCENARIO("a degenerate triangle is never hit", "[ch03][ex3.1]") {
     GIVEN("a triangle with three collinear corners and one with two equal corners") {
         const Vec3 a(0, 0, 0), b(1, 1, 0), c(2, 2, 0);
         WHEN("rays pass exactly through their corners and along and across their line") {
@@ -374,7 +374,8 @@ SCENARIO("a degenerate triangle is never hit", "[ch03]") {
 
 // [ch03-bvh-equals-brute-force]
 // [ch03-fast-equals-simple]
-SCENARIO("the compact SSE traversal finds exactly what the simple traversal finds", "[ch03]") {
+SCENARIO("the compact SSE traversal finds exactly what the simple traversal finds",
+         "[ch03][ex3.2]") {
     GIVEN("the bunny's BVH and 5 000 random rays aimed into its bounds (fixed seed)") {
         const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
         const rb::BVH& bvh = bunny.bvh();
@@ -420,7 +421,7 @@ SCENARIO("the compact SSE traversal finds exactly what the simple traversal find
 }
 // [ch03-fast-equals-simple]
 
-SCENARIO("the BVH finds the same closest triangle as testing every triangle", "[ch03]") {
+SCENARIO("the BVH finds the same closest triangle as testing every triangle", "[ch03][ex3.2]") {
     GIVEN(
         "the Stanford bunny (3 674 triangles) and 2 000 random rays aimed into its bounds "
         "(fixed seed)") {
@@ -461,7 +462,8 @@ SCENARIO("the BVH finds the same closest triangle as testing every triangle", "[
 }
 // [ch03-bvh-equals-brute-force]
 
-SCENARIO("a two-level BVH over instances finds the same hits as testing every instance", "[ch03]") {
+SCENARIO("a two-level BVH over instances finds the same hits as testing every instance",
+         "[ch03][ex3.2]") {
     GIVEN(
         "400 spheres, 400 boxes and 12 bunnies, each randomly scaled, turned and placed in a "
         "40-unit cube (fixed seed)") {
@@ -534,7 +536,8 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
     }
 }
 
-SCENARIO("a BVH is well formed: boxes nest, and every primitive is in exactly one leaf", "[ch03]") {
+SCENARIO("a BVH is well formed: boxes nest, and every primitive is in exactly one leaf",
+         "[ch03][ex3.2]") {
     GIVEN("the bunny's BVH") {
         const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
         const rb::BVH& bvh = bunny.bvh();
@@ -570,7 +573,7 @@ SCENARIO("a BVH is well formed: boxes nest, and every primitive is in exactly on
 }
 
 // [ch03-log-cost]
-SCENARIO("the cost of a ray grows like log n with the number of triangles", "[ch03]") {
+SCENARIO("the cost of a ray grows like log n with the number of triangles", "[ch03][ex3.2]") {
     // We count work instead of timing it. For meshes of n = 2 048, 32 768 and 524 288 triangles
     // (a wavy height field cut ever finer) we trace 2 000 rays that hit the surface (fixed
     // seed), and count per ray

@@ -113,7 +113,8 @@ std::unique_ptr<rb::World> loadRepoScene(const std::string& relative,
 // ---- The law of reflection ------------------------------------------------------------------
 
 // [ch04-reflection-law]
-SCENARIO("a mirror sends light out at the angle it came in, in the plane of d and n", "[ch04]") {
+SCENARIO("a mirror sends light out at the angle it came in, in the plane of d and n",
+         "[ch04][ex4.1]") {
     GIVEN("10,000 random unit directions d and random unit normals n") {
         rbtest::Rng rng(4);
         WHEN("each d is reflected about its n: r = d − 2(d·n)n") {
@@ -141,7 +142,7 @@ SCENARIO("a mirror sends light out at the angle it came in, in the plane of d an
 }
 // [ch04-reflection-law]
 
-SCENARIO("reflecting twice about the same normal gives the ray back", "[ch04]") {
+SCENARIO("reflecting twice about the same normal gives the ray back", "[ch04][ex4.1]") {
     GIVEN("random directions of any length and unit normals") {
         rbtest::Rng rng(40);
         THEN("reflect(reflect(d, n), n) = d, and |reflect(d, n)| = |d|") {
@@ -169,7 +170,8 @@ SCENARIO("reflecting twice about the same normal gives the ray back", "[ch04]") 
 // ---- Energy: r^k after k bounces --------------------------------------------------------------
 
 // [ch04-rk]
-SCENARIO("light that bounced k times between mirrors of reflectivity r carries r^k", "[ch04]") {
+SCENARIO("light that bounced k times between mirrors of reflectivity r carries r^k",
+         "[ch04][ex4.2]") {
     for (const double r : {0.3, 0.5, 0.9, 1.0}) {
         for (int k = 0; k <= 8; ++k) {
             GIVEN("a corridor of two black mirrors (kd = 0, reflect = " + std::to_string(r) +
@@ -203,7 +205,7 @@ SCENARIO("light that bounced k times between mirrors of reflectivity r carries r
 }
 // [ch04-rk]
 
-SCENARIO("the depth limit cuts off images that need more bounces than it allows", "[ch04]") {
+SCENARIO("the depth limit cuts off images that need more bounces than it allows", "[ch04][ex4.2]") {
     GIVEN("the corridor with r = 0.8 and the wall 5 reflections away") {
         const double r = 0.8;
         const int k = 5;
@@ -235,7 +237,7 @@ SCENARIO("the depth limit cuts off images that need more bounces than it allows"
 
 // [ch04-depth-series]
 SCENARIO("a ray trapped between two facing mirrors sums a geometric series cut at maxDepth",
-         "[ch04]") {
+         "[ch04][ex4.2]") {
     for (const double r : {0.5, 0.9, 1.0}) {
         for (int maxDepth = 0; maxDepth <= 12; ++maxDepth) {
             GIVEN("two grey mirrors (kd = 0.5, reflect = " + std::to_string(r) +
@@ -269,7 +271,7 @@ SCENARIO("a ray trapped between two facing mirrors sums a geometric series cut a
 
 // [ch04-adaptive-depth]
 SCENARIO("adaptive depth control stops a path once its light could no longer change a pixel",
-         "[ch04]") {
+         "[ch04][ex4.2]") {
     GIVEN("the trapped ray between grey mirrors of reflectivity 1/2, depth limit 20") {
         const double r = 0.5;
         const Colour kd(0.5);
@@ -299,7 +301,8 @@ SCENARIO("adaptive depth control stops a path once its light could no longer cha
 // ---- When the chapter changes nothing ---------------------------------------------------------
 
 // [ch04-depth0-is-phong]
-SCENARIO("with a depth limit of 0 the chapter scene renders exactly as chapter 2 would", "[ch04]") {
+SCENARIO("with a depth limit of 0 the chapter scene renders exactly as chapter 2 would",
+         "[ch04][ex4.2]") {
     GIVEN("scenes/chapter04-reflection.lua, which has mirrors") {
         WHEN("it is rendered with maxDepth 0, and with --features=all,-reflection") {
             const auto depthZero =
@@ -412,7 +415,7 @@ SCENARIO("reflectivity 0 shades exactly as plain Phong", "[ch04]") {
 }
 
 // [ch04-feature-off]
-SCENARIO("with --features=all,-reflection a mirror shades as plain Phong", "[ch04]") {
+SCENARIO("with --features=all,-reflection a mirror shades as plain Phong", "[ch04][ex4.2]") {
     GIVEN("the room with a mirror ball (reflect = 0.7), and the same room with a Phong ball") {
         TestWorld off, phong, on;
         const rb::Material* mirrorOff = nullptr;
@@ -444,7 +447,8 @@ SCENARIO("with --features=all,-reflection a mirror shades as plain Phong", "[ch0
 }
 // [ch04-feature-off]
 
-SCENARIO("a mirror seen from behind reflects like its front (no back-face culling)", "[ch04]") {
+SCENARIO("a mirror seen from behind reflects like its front (no back-face culling)",
+         "[ch04][ex4.2]") {
     GIVEN("a single mirror triangle in the plane z = 0, its normal along +z") {
         rb::ObjData data;
         data.positions = {Vec3(-5, -5, 0), Vec3(5, -5, 0), Vec3(0, 5, 0)};
@@ -471,7 +475,8 @@ SCENARIO("a mirror seen from behind reflects like its front (no back-face cullin
 
 // ---- Stability ---------------------------------------------------------------------------------
 
-SCENARIO("1000 bounces between perfect mirrors end, with a finite colour", "[ch04][stability]") {
+SCENARIO("1000 bounces between perfect mirrors end, with a finite colour",
+         "[ch04][stability][ex4.2]") {
     GIVEN("two facing mirrors with r = 1, a faint kd, and maxDepth = 1000") {
         const Colour kd(1e-3);
         TestWorld world;
@@ -507,7 +512,7 @@ SCENARIO("1000 bounces between perfect mirrors end, with a finite colour", "[ch0
 
 // [ch04-edge]
 SCENARIO("a ray that meets a mirror exactly on its edge reflects once, cleanly",
-         "[ch04][stability]") {
+         "[ch04][stability][ex4.2]") {
     GIVEN("a black mirror cube [0,1]³ with r = 0.5 in front of a coloured background") {
         TestWorld world;
         world.addBox(Mat4(1.0), world.material(Colour(0.0), 0.5));
@@ -547,7 +552,7 @@ SCENARIO("a ray that meets a mirror exactly on its edge reflects once, cleanly",
 
 // [ch04-no-self-hit]
 SCENARIO("a reflected ray never hits the mirror it leaves, at scene scales 1e-3 to 1e4",
-         "[ch04][stability]") {
+         "[ch04][stability][ex4.2]") {
     for (const double scale : {1e-3, 1e-1, 1.0, 1e2, 1e4}) {
         for (const bool sphere : {true, false}) {
             GIVEN(std::string("a black convex mirror (") + (sphere ? "sphere" : "box") +

@@ -176,7 +176,8 @@ struct Panel {
 
 // ---- Unbiased irradiance ----------------------------------------------------------------------
 
-SCENARIO("a rectangular light delivers the irradiance of Lambert's polygon formula", "[ch06]") {
+SCENARIO("a rectangular light delivers the irradiance of Lambert's polygon formula",
+         "[ch06][ex6.1]") {
     GIVEN("the reference formula") {
         THEN("it reproduces the small-source limit E = L·A/h² for a tiny overhead square") {
             // Source: for a source of area A ≪ h², E → L·A·cosθ_l·cosθ_s / h² with both cosines 1.
@@ -221,7 +222,7 @@ SCENARIO("a rectangular light delivers the irradiance of Lambert's polygon formu
     // [ch06-rectangle-lambert]
 }
 
-SCENARIO("a ball light delivers exactly a point light's irradiance I·cosθ/d²", "[ch06]") {
+SCENARIO("a ball light delivers exactly a point light's irradiance I·cosθ/d²", "[ch06][ex6.2]") {
     // [ch06-ball-closed-form]
     GIVEN(
         "balls of intensity I = 1 wholly above a white floor's horizon: overhead, oblique, "
@@ -309,7 +310,7 @@ SCENARIO("a floor point inside a ball light receives the irradiance I/R² wherev
     // [ch06-ball-inside]
 }
 
-SCENARIO("the light samplers draw points with the density their pdfs state", "[ch06]") {
+SCENARIO("the light samplers draw points with the density their pdfs state", "[ch06][ex6.2]") {
     // Chi-square goodness of fit on a 10 × 10 grid of equal-probability cells, 10 000 independent
     // samples (100 expected per cell, so no pooling is needed), α = 0.01 shared by two tests.
     const int cells = 10, samples = 10000;
@@ -378,7 +379,7 @@ SCENARIO("the light samplers draw points with the density their pdfs state", "[c
 
 // ---- Penumbra geometry ------------------------------------------------------------------------
 
-SCENARIO("a penumbra lies exactly where similar triangles put it", "[ch06]") {
+SCENARIO("a penumbra lies exactly where similar triangles put it", "[ch06][ex6.1]") {
     // [ch06-penumbra]
     // A 2 × 1 panel at height H = 4 faces down onto the floor; a thin plate (thickness δ) fills
     // x ≤ 0 at heights [h − δ, h], h = 2. A floor point (x_f, 0, 0) sees the panel point at x_l
@@ -458,7 +459,7 @@ SCENARIO("a penumbra lies exactly where similar triangles put it", "[ch06]") {
 
 // ---- The zero-size limit ----------------------------------------------------------------------
 
-SCENARIO("a light shrunk to zero size is a point light", "[ch06][stability]") {
+SCENARIO("a light shrunk to zero size is a point light", "[ch06][stability][ex6.1]") {
     // [ch06-zero-size]
     // A floor, a box that casts a shadow, and a light at (0.3, 3, 0.2): floor points in the
     // light, in the shadow and at its edge.
@@ -528,7 +529,7 @@ SCENARIO("a light shrunk to zero size is a point light", "[ch06][stability]") {
 }
 
 SCENARIO("degenerate lights and shading points give finite, non-negative light",
-         "[ch06][stability]") {
+         "[ch06][stability][ex6.2]") {
     GIVEN("a ball light whose centre is a floor point, and a floor point inside a ball light") {
         const auto world =
             worldFromLua(floorScene("gr.ball_light({0, 0, 0}, {1, 1, 1}, {0, 0, 1}, 0.5), "
@@ -606,7 +607,7 @@ SlopeFit convergence(rb::World& world, const Vec3& p, double expected, int trial
 }  // namespace
 
 SCENARIO("the error falls like 1/√N with independent samples and faster when stratified",
-         "[ch06]") {
+         "[ch06][ex6.1]") {
     // [ch06-convergence]
     // The expectation. N independent samples: Var = σ²/N exactly, so RMSE ∝ N^(−1/2), slope
     // −0.5. Jittered stratified sampling (one sample in each of N = n² cells) of a smooth 2D

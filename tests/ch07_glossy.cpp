@@ -317,7 +317,8 @@ std::string stripedRoom(const std::string& glossiness, const std::string& prelud
 
 // ---- The statistics the tests rely on ---------------------------------------------------------
 
-SCENARIO("the chi-square and normal tail functions used below match published tables", "[ch07]") {
+SCENARIO("the chi-square and normal tail functions used below match published tables",
+         "[ch07][ex7.1]") {
     GIVEN("the chi-square tail P(χ²_k > x) and the two-sided normal critical value") {
         THEN("they reproduce table values") {
             // Source: NIST/SEMATECH e-Handbook of Statistical Methods, §1.3.6.7.4 (upper
@@ -352,7 +353,8 @@ SCENARIO("the chi-square and normal tail functions used below match published ta
 // ---- Sampler 2: the Phong lobe ---------------------------------------------------------------
 
 // [ch07-lobe-chi2]
-SCENARIO("the Phong-lobe sampler draws directions with density (n+1)/(2π) cos^n α", "[ch07]") {
+SCENARIO("the Phong-lobe sampler draws directions with density (n+1)/(2π) cos^n α",
+         "[ch07][ex7.1]") {
     GIVEN("200,000 samples about a tilted axis for each of five exponents") {
         const std::vector<double> exponents = {0.0, 1.0, 10.0, 100.0, 10000.0};
         // Five tests together at family-wise level 0.01 (Šidák).
@@ -437,7 +439,7 @@ SCENARIO("both pdfs integrate to 1 and agree with the closed-form CDFs of cos α
 SCENARIO(
     "the renderer weighs every lobe sample 1, so a glossy mirror shows the share of its lobe "
     "that sees a light disc",
-    "[ch07]") {
+    "[ch07][ex7.2]") {
     // The estimator of ∫ L(ω) D(ω) dω draws ω from the lobe D itself and averages L(ω): each
     // sample weighs D/p = 1. Here L is 1 inside a cone of half-angle α0 about the normal and 0
     // outside, so the renderer must return P(α < α0) under the lobe.
@@ -505,7 +507,8 @@ SCENARIO(
 // ---- Sampler 1: the fuzz sphere --------------------------------------------------------------
 
 // [ch07-fuzz-chi2]
-SCENARIO("the fuzz-sphere sampler draws directions with the density its pdf states", "[ch07]") {
+SCENARIO("the fuzz-sphere sampler draws directions with the density its pdf states",
+         "[ch07][ex7.2]") {
     GIVEN("200,000 samples about a tilted axis for each of four fuzz radii") {
         const std::vector<double> radii = {0.05, 0.3, 1.0, 2.0};
         // Four tests together at family-wise level 0.01 (Šidák).
@@ -550,7 +553,7 @@ SCENARIO("the fuzz-sphere sampler draws directions with the density its pdf stat
 SCENARIO(
     "the fuzz sphere's offsets are uniform in the unit ball and its directions stay in "
     "the cone of half-angle asin(f)",
-    "[ch07]") {
+    "[ch07][ex7.2]") {
     GIVEN("100,000 offsets from sampleUniformBall") {
         const int count = 100000;
         rb::Sampler sampler(testSeed(), 13, 0);
@@ -606,7 +609,7 @@ SCENARIO(
 SCENARIO(
     "the exponent n = 5/f² − 2 gives the Phong lobe the fuzz sphere's mean cosine "
     "1 − f²/5",
-    "[ch07]") {
+    "[ch07][ex7.2]") {
     GIVEN("fuzz radii 0.05, 0.2, 0.5 and 1") {
         const std::vector<double> radii = {0.05, 0.2, 0.5, 1.0};
         // Four z-tests together at level 0.01 (Bonferroni).
@@ -670,7 +673,7 @@ double phongLostFraction(double n, double theta) {
 SCENARIO(
     "lobe samples that fall below the surface are rejected and carry no light, losing a "
     "computable share of the energy near grazing",
-    "[ch07]") {
+    "[ch07][ex7.1]") {
     GIVEN("glossiness 0.3 (Phong exponent 53.6) and a mirror direction 10° above the surface") {
         const double g = 0.3, theta = 80.0 * kPi / 180.0;
         const double n = rb::phongExponentFromFuzz(g);
@@ -755,7 +758,7 @@ SCENARIO(
 // ---- Glossiness → 0 ---------------------------------------------------------------------------
 
 // [ch07-to-mirror]
-SCENARIO("as glossiness falls to 0 the image tends to chapter 4's sharp mirror", "[ch07]") {
+SCENARIO("as glossiness falls to 0 the image tends to chapter 4's sharp mirror", "[ch07][ex7.2]") {
     GIVEN("a mirror ball between striped walls, rendered 48×36 with 16 directions per pixel") {
         const rb::Image sharp = renderWorld(*buildWorld(stripedRoom(""), chapters(7)));
         for (const std::string sampler : {"0", "1"}) {
@@ -788,7 +791,7 @@ SCENARIO("as glossiness falls to 0 the image tends to chapter 4's sharp mirror",
 SCENARIO(
     "frosted glass is chapter 5's refraction spread by the same lobe, and clears as "
     "glossiness falls to 0",
-    "[ch07]") {
+    "[ch07][ex7.1]") {
     // A glass pane (ior 1.5, fully transparent, kd = 0) a little in front of a wall of
     // stripes, lit by ambient light only; max_depth 2 lets a ray enter and leave the pane.
     auto paneScene = [](const std::string& glossiness) {
@@ -1007,7 +1010,7 @@ SCENARIO("raybook's named field and the seeds' glossy calls all set `glossiness`
 // ---- Stability --------------------------------------------------------------------------------
 
 SCENARIO("extreme glossiness and degenerate axes give finite unit directions",
-         "[ch07][stability]") {
+         "[ch07][stability][ex7.2]") {
     GIVEN("glossiness from 1e-9 to 100 and axes along ±z and random directions") {
         THEN("the frame is orthonormal and every sample is a finite unit vector") {
             std::mt19937_64 engine(testSeed());
@@ -1052,7 +1055,8 @@ SCENARIO("extreme glossiness and degenerate axes give finite unit directions",
     }
 }
 
-SCENARIO("a lobe whose axis lies in the surface loses half its samples", "[ch07][stability]") {
+SCENARIO("a lobe whose axis lies in the surface loses half its samples",
+         "[ch07][stability][ex7.2]") {
     GIVEN("a mirror direction exactly along the surface (the grazing limit)") {
         const Vec3 normal(0, 1, 0), axis(1, 0, 0);
         rb::Material m;
@@ -1081,7 +1085,7 @@ SCENARIO("a lobe whose axis lies in the surface loses half its samples", "[ch07]
 }
 
 SCENARIO("the chapter scene renders finite, non-negative and the same on 1 and 2 threads",
-         "[ch07][stability]") {
+         "[ch07][stability][ex7.1]") {
     GIVEN("scenes/chapter07-glossy.lua at 48×36 with 4 glossy directions") {
         std::ifstream in(std::string(RB_SOURCE_DIR) + "/scenes/chapter07-glossy.lua");
         const std::string lua((std::istreambuf_iterator<char>(in)), {});

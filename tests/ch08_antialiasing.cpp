@@ -134,7 +134,8 @@ const rb::SupersamplingSampler* installed(const rb::World& w) {
 // ---- Flat regions -------------------------------------------------------------------------
 
 // [ch08-flat]
-SCENARIO("on a flat region adaptive supersampling equals uniform, with far fewer rays", "[ch08]") {
+SCENARIO("on a flat region adaptive supersampling equals uniform, with far fewer rays",
+         "[ch08][ex8.2]") {
     GIVEN("a picture of one colour, 16 × 16 pixels (one tile)") {
         std::uint64_t uniformRays = 0, adaptiveRays = 0;
         const auto flatU = picture([](const Vec2&) { return true; }, uniformRays);
@@ -184,7 +185,7 @@ SCENARIO("on a flat region adaptive supersampling equals uniform, with far fewer
 // ---- Edges --------------------------------------------------------------------------------
 
 // [ch08-edge]
-SCENARIO("a straight edge across a pixel gets the area it covers", "[ch08]") {
+SCENARIO("a straight edge across a pixel gets the area it covers", "[ch08][ex8.2]") {
     GIVEN("200 random straight edges through a pixel, white on one side, black on the other") {
         rbtest::Rng rng(seed());
         std::vector<HalfPlane> edges;
@@ -230,7 +231,7 @@ SCENARIO("a straight edge across a pixel gets the area it covers", "[ch08]") {
 
 // [ch08-thin]
 SCENARIO("adaptive supersampling misses a feature thinner than its first sample spacing",
-         "[ch08][stability]") {
+         "[ch08][stability][ex8.2]") {
     // A vertical stripe of width w repeats in every pixel at offset x0: white where
     // frac(x − x0) < w. Adaptive sampling first looks at x = 0, ½ and 1 within the pixel (the
     // corners and the centre); a stripe that covers none of these columns leaves all five
@@ -280,7 +281,7 @@ SCENARIO("adaptive supersampling misses a feature thinner than its first sample 
 
 // [ch08-jitter-z]
 SCENARIO("jittered supersampling estimates the covered area without bias, with less noise",
-         "[ch08]") {
+         "[ch08][ex8.1]") {
     GIVEN("an edge covering a known share of the pixel, and 4000 pixels' independent streams") {
         // The line 0.9·x + 0.44·y = 0.55 (chosen to cut the pixel obliquely): exact coverage
         // by clipping, 0.5349 to 4 decimals.
@@ -374,7 +375,8 @@ SCENARIO("seed 001's aa = 1 is a 2 × 2 uniform supersample: render at double si
 // ---- Determinism ----------------------------------------------------------------------------
 
 // [ch08-determinism]
-SCENARIO("antialiased images are the same for any thread count and any tile order", "[ch08]") {
+SCENARIO("antialiased images are the same for any thread count and any tile order",
+         "[ch08][ex8.2]") {
     // Soft shadows from a ball light make every sample draw random numbers too.
     std::string soft = kEdges;
     soft.replace(soft.find("gr.light({3, 5, 4}, {0.9, 0.9, 0.9}, {1, 0, 0})"),

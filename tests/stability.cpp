@@ -111,7 +111,7 @@ std::string scaledScene(double s) {
 SCENARIO(
     "shadow rays from a convex mesh are never blocked by the mesh itself, at scales from "
     "1e-3 to 1e4",
-    "[stability][ch02]") {
+    "[stability][ch02][ex2.3]") {
     // A convex polyhedron (a latitude–longitude sphere of 16 × 32 quads), stretched, turned and
     // placed a few sizes from the origin, in a two-level BVH. A light anywhere in the outer
     // half-space of the face a point lies on cannot be hidden by a convex solid: the solid lies
@@ -151,7 +151,7 @@ SCENARIO(
 }
 
 SCENARIO("a scene scaled from 1e-3 to 1e4 renders the same picture and shows no acne",
-         "[stability][ch02]") {
+         "[stability][ch02][ex2.2][ex2.3]") {
     // With a constant falloff every colour depends only on angles, and raybook's ray offsets
     // scale with the scene, so scaling the whole scene must not change the picture. Shadow acne
     // would show up as speckled lit surfaces at some scales. Rounding may still flip a pixel
@@ -192,7 +192,7 @@ SCENARIO("a scene scaled from 1e-3 to 1e4 renders the same picture and shows no 
 // ---- Edges, vertices and degenerate triangles ---------------------------------------------
 
 SCENARIO("rays through the edges and vertices of a closed mesh always hit it",
-         "[stability][ch03]") {
+         "[stability][ch03][ex3.2]") {
     GIVEN("the octahedron |x| + |y| + |z| = 1 as an 8-triangle mesh") {
         const auto octahedron = rbtest::makeMesh({Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0),
                                                   Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)},
@@ -273,7 +273,8 @@ SCENARIO("rays through the edges and vertices of a closed mesh always hit it",
     }
 }
 
-SCENARIO("degenerate triangles neither crash, nor produce NaN, nor get hit", "[stability][ch03]") {
+SCENARIO("degenerate triangles neither crash, nor produce NaN, nor get hit",
+         "[stability][ch03][ex3.1]") {
     GIVEN(
         "a legacy table mesh with a good triangle, a repeated index and three collinear "
         "corners") {
@@ -316,7 +317,7 @@ SCENARIO("degenerate triangles neither crash, nor produce NaN, nor get hit", "[s
 // ---- Grazing and degenerate rays --------------------------------------------------------------
 
 SCENARIO("grazing rays on spheres give no NaN, and hit or miss as the geometry says",
-         "[stability][ch01]") {
+         "[stability][ch01][ex1.1]") {
     // Rays parallel to a tangent of the sphere, at distance b = R·(1 + δ) from the centre, from
     // 10 R away, at every scene scale. The ray's own position is only known to about
     // 1e-16·|origin| ≈ 1e-14·R, so for |δ| ≤ 1e-12 either answer is right; beyond that the
@@ -382,7 +383,8 @@ SCENARIO("grazing rays on spheres give no NaN, and hit or miss as the geometry s
     }
 }
 
-SCENARIO("a degenerate ray (zero or NaN direction) never reports a hit", "[stability][ch01]") {
+SCENARIO("a degenerate ray (zero or NaN direction) never reports a hit",
+         "[stability][ch01][ex1.3]") {
     // Such a ray has no direction to travel in, so no t describes a hit; a shape that answers
     // "hit" hands NaN to everything downstream (hit point, normal, shading).
     const rb::Sphere sphere;
@@ -409,7 +411,7 @@ SCENARIO("a degenerate ray (zero or NaN direction) never reports a hit", "[stabi
 }
 
 SCENARIO("rays with zero direction components pass through boxes and BVH nodes correctly",
-         "[stability][ch03]") {
+         "[stability][ch03][ex3.2]") {
     GIVEN(
         "a flat 8 × 8 grid of 128 triangles over the unit square (z = 0), whose BVH nodes "
         "have zero thickness in z and share their x and y faces") {
@@ -464,7 +466,7 @@ SCENARIO("rays with zero direction components pass through boxes and BVH nodes c
 }
 
 SCENARIO("a BVH over objects at exponentially growing distances fits its traversal stack",
-         "[stability][ch03]") {
+         "[stability][ch03][ex3.2]") {
     // Binned SAH splits off the farthest object or two at each level when objects sit at
     // 1, 2, 4, 8, ... (the bins spread over the whole range, and all but the last are nearly
     // empty), so without a limit the tree's depth grows with the number of objects. The
@@ -548,7 +550,8 @@ SCENARIO("NaN and Inf from a scene file are rejected with the file and the line"
     }
 }
 
-SCENARIO("coincident surfaces never render NaN, Inf or negative pixels", "[stability][ch02]") {
+SCENARIO("coincident surfaces never render NaN, Inf or negative pixels",
+         "[stability][ch02][ex2.2][ex2.3]") {
     GIVEN(
         "two spheres in the same place with different materials, a crate whose bottom is the "
         "floor's top, a second floor in the same place, a triangle lying in the floor's top, "

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -159,11 +160,17 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     // any schedule and any tile order give the same image.
     // A stop (Ctrl-C, SIGTERM, --time-limit) skips the tiles not yet started; OpenMP cannot
     // leave a parallel loop early.
+    // An exception may not leave an OpenMP region (it would end the program): a tile that
+    // throws (an exercise stub, std::bad_alloc) keeps the first exception, the other tiles are
+    // skipped, and it is thrown again after the loop.
     std::atomic<bool> stopped{false};
+    std::atomic<bool> failed{false};
+    std::exception_ptr failure;
     std::atomic<std::size_t> tilesDone{0};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int k = 0; k < static_cast<int>(tiles.size()); ++k) {
-        if (stopped.load(std::memory_order_relaxed)) continue;
+        if (stopped.load(std::memory_order_relaxed) || failed.load(std::memory_order_relaxed))
+            continue;
         if (settings.shouldStop && settings.shouldStop()) {
             stopped = true;
             continue;
@@ -174,16 +181,24 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         if (settings.tileThreads) (*settings.tileThreads)[k] = omp_get_thread_num();
         // A pixel sampler (chapter 8), when one is installed, takes the whole tile; otherwise
         // the core's loop runs, so a scene without antialiasing pays one test per tile.
-        if (pipeline.pixelSampler)
-            pipeline.pixelSampler->renderTile(tiles[k], integrator, camera, width, height,
-                                              settings.seed, image, rays);
-        else
-            renderTile(tiles[k], integrator, camera, pipeline.cameraRays.get(), width, spp,
-                       settings.seed, image, rays);
+        try {
+            if (pipeline.pixelSampler)
+                pipeline.pixelSampler->renderTile(tiles[k], integrator, camera, width, height,
+                                                  settings.seed, image, rays);
+            else
+                renderTile(tiles[k], integrator, camera, pipeline.cameraRays.get(), width, spp,
+                           settings.seed, image, rays);
+        } catch (...) {
+#pragma omp critical(rb_render_failure)
+            if (!failure) failure = std::current_exception();
+            failed = true;
+            continue;
+        }
         progress.tileDone(k, rays.total() - raysBefore);
         ++tilesDone;
     }
     progress.finish();
+    if (failure) std::rethrow_exception(failure);
     for (const RayCounters& c : perThread) counters.merge(c);
     if (stopped) {
         // Every tile that started has finished: hand over the image as it is, if asked.

@@ -1,0 +1,914 @@
+#!/usr/bin/env python3
+"""Assignments: a chapter's exercise regions become code a student writes, checked by the
+chapter's own tests and golden image.
+
+Commands (raybook's Makefile and the exported project's Makefile call them):
+    assignment.py export N DIR
+        write a standalone project to DIR holding chapters 1..N, with chapter N's exercise
+        regions replaced by their stubs (make assignment N).
+    assignment.py check [PROJECT] [--build DIR] [--json FILE]
+        in an exported project: build chapter N's tests and binary, run each exercise's tests
+        and the golden image, print the table (make check). Exit 0 when everything passes.
+    assignment.py grade DIR [--csv FILE]
+        DIR is an exported project or a folder of them: check each, print a score table per
+        student and write a CSV (make grade DIR=...).
+    assignment.py solve PROJECT
+        put raybook's own code back into the project's stubbed regions (the round trip's
+        "restored" state; never shipped to students, it reads raybook's source).
+    assignment.py roundtrip WORK [--chapters 1 2 ...]
+        CI: for every chapter with regions, export, check (every exercise must fail), solve,
+        check (everything must pass). One export folder and one build folder are reused, with
+        a compiler cache (objcache.py), so each chapter costs only what changed.
+    assignment.py list
+        every chapter's exercises and the tests tagged [exN.k] for each.
+    assignment.py tags BUILD --chapter N [--apply]
+        maintainer's tool: find which [chNN] tests pass once exercises 1..k are written and
+        k+1.. are stubs, i.e. the [exN.k] tag each test should carry.
+
+Which tests belong to which exercise: a chapter test tagged [exN.k] passes as soon as
+exercises N.1 .. N.k are written, even while the later ones are still stubs (tags computed by
+`tags`, checked by `roundtrip`). Chapters are found from CMakeLists.txt's rb_chapter(NN ...)
+lines, so chapters added later need no change here.
+"""
+
+import argparse
+import csv
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import regions as rg  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+INFO = ".assignment.json"
+JOBS = str(os.cpu_count() or 2)
+BUILD_TIMEOUT = int(os.environ.get("RB_BUILD_TIMEOUT", "1800"))
+TEST_TIMEOUT = int(os.environ.get("RB_TEST_TIMEOUT", "120"))
+# Whole-book suites that need every chapter (or the seed scenes, the showcase or the docs):
+# an exported project leaves them out of its CTest list.
+WHOLE_BOOK_SUITES = ["scenes_smoke", "seed_scenes_smoke", "golden-seed\\..*", "docs_warnings",
+                     "batch", "bad_input.*", "scenes_portable", "dialect_examples",
+                     "scene_warnings"]
+# CTest suites that need a chapter after 1: left out of the exports of earlier chapters.
+SUITES_NEEDING = {"resources": 3}  # its scenes read meshes
+
+
+# ---- What belongs to which chapter ----------------------------------------------------------
+
+def book_chapters(root: Path) -> dict[int, dict]:
+    """The chapters of CMakeLists.txt's rb_chapter(NN name header function sources...) calls,
+    with the module folders their sources live in (chapter 1 owns src/core)."""
+    text = (root / "CMakeLists.txt").read_text()
+    chapters = {}
+    for m in re.finditer(r"^rb_chapter\(([^)]*)\)", text, re.M):
+        words = m.group(1).split()
+        number = int(words[0])
+        sources = words[4:]
+        folders = sorted({"/".join(s.split("/")[:2]) for s in sources if s.startswith("src/")})
+        chapters[number] = {"name": words[1], "header": words[2], "function": words[3],
+                            "folders": folders, "span": (m.start(), m.end())}
+    return chapters
+
+
+def owner(path: str, chapters: dict[int, dict]) -> int | None:
+    """The chapter a repository file belongs to, by the book's naming rules, or None."""
+    patterns = [r"^tests/ch(\d\d)_", r"^tests/perf/ch(\d\d)/", r"^scenes/chapter(\d\d)-",
+                r"^golden/chapter(\d\d)-", r"^chapters/(\d\d)-", r"^docs/figures/ch(\d\d)_",
+                r"^docs/charts/ch(\d\d)-"]
+    for p in patterns:
+        m = re.match(p, path)
+        if m:
+            return int(m.group(1))
+    for n, c in chapters.items():
+        if n > 1 and any(path.startswith(f + "/") for f in c["folders"]):
+            return n
+    return None
+
+
+def left_out(path: str) -> bool:
+    """Files of the whole book that an assignment does not ship: the showcase and seed scenes
+    and their goldens, the docs build, CI, the maintainer's ladder and the front door (the
+    export writes its own Makefile and README)."""
+    prefixes = ("scenes/seeds/", "scenes/showcase", ".ci/", "docs/", "tests/ladder.sh",
+                "tests/docs_warnings.sh", "tests/scenes/seeds.sh", "tests/perf/", "tests/fuzz/",
+                "tests/exercises/README.md")
+    return (path.startswith(prefixes) or re.match(r"^golden/\d\d\d-", path) is not None
+            or path in ("Makefile", "README.md"))
+
+
+def shared_test_fits(root: Path, path: str, chapters: dict[int, dict], last: int) -> bool:
+    """Whether a test file that no single chapter owns (the stability suite, the property
+    test) belongs in an export of chapters 1..last: the property test draws scenes from every
+    chapter, so only the newest chapter's export has it; another shared file goes when every
+    module it includes is there."""
+    if not re.match(r"^tests/[^/]+\.cpp$", path) or re.match(r"^tests/ch\d\d_", path):
+        return True
+    if Path(path).name.startswith("property"):
+        return last == max(chapters)
+    modules = set(re.findall(r'^#include "(\w+)/', (root / path).read_text(), re.M))
+    have = {"core"} | {f.split("/")[1] for k, c in chapters.items() if k <= last
+                       for f in c["folders"]}
+    return modules <= have
+
+
+def tracked_files(root: Path) -> list[str]:
+    """The repository's files: git's tracked and untracked-but-not-ignored ones."""
+    out = subprocess.run(["git", "-C", str(root), "ls-files", "-co", "--exclude-standard"],
+                         stdout=subprocess.PIPE, text=True, check=True).stdout
+    return sorted({p for p in out.split("\n") if p and (root / p).is_file()})
+
+
+def page_of(root: Path, n: int) -> Path | None:
+    pages = sorted((root / "chapters").glob(f"{n:02d}-*.md"))
+    return pages[0] if pages else None
+
+
+def scene_of(root: Path, n: int) -> Path | None:
+    scenes = sorted((root / "scenes").glob(f"chapter{n:02d}-*.lua"))
+    return scenes[0] if scenes else None
+
+
+def sections(page: Path) -> dict[str, str]:
+    """Anchor -> heading text of a chapter page."""
+    found = {}
+    for line in page.read_text().split("\n"):
+        m = re.match(r"^#+ (.*?) \{#([\w-]+)\}\s*$", line)
+        if m:
+            found[m.group(2)] = m.group(1)
+    return found
+
+
+# ---- Exporting ------------------------------------------------------------------------------
+
+def trim_cmake(text: str, chapters: dict[int, dict], last: int) -> str:
+    """CMakeLists.txt without the rb_chapter calls of chapters after `last`."""
+    for n in sorted(chapters, reverse=True):
+        if n > last:
+            begin, end = chapters[n]["span"]
+            text = text[:begin] + text[end:].lstrip("\n")
+    return text
+
+
+def trim_test_helpers(text: str, chapters: dict[int, dict], last: int) -> str:
+    """tests/test_helpers.h without the headers and Feature records of later chapters."""
+    for n, c in chapters.items():
+        if n <= last:
+            continue
+        for folder in c["folders"]:
+            module = folder.split("/", 1)[1]
+            text = re.sub(rf'^#include "{re.escape(module)}/[^"]+"\n', "", text, flags=re.M)
+        text = re.sub(rf"\s*rb::{re.escape(c['function'])}\(\),?", "", text)
+    # A list may now end in a comma before its brace.
+    return re.sub(r",(\s*)\}", r"\1}", text)
+
+
+def dropped_names(root: Path, chapters: dict[int, dict], last: int,
+                  helpers: str) -> tuple[set[str], set[str]]:
+    """The modules of chapters after `last`, and the names their headers declare (classes,
+    structs, enums, aliases, functions) plus the test helpers that test_helpers.h defines only
+    when such a module is there (inside #if __has_include("module/...") ... #endif)."""
+    modules = {f.split("/")[1] for k, c in chapters.items() if k > last for f in c["folders"]}
+
+    def declared(folders) -> set[str]:
+        found: set[str] = set()
+        for header in (h for f in folders for h in (root / "src" / f).glob("*.h")):
+            text = header.read_text()
+            # Definitions, not forward declarations (struct RenderContext;).
+            found.update(re.findall(r"\b(?:class|struct|enum class|enum|using)\s+(\w+)\b(?!;)",
+                                    text))
+            found.update(re.findall(r"^(?:inline\s+)?[\w:<>,]+[\s*&]+(\w+)\(", text, re.M))
+        return found
+
+    kept = {f.name for f in (root / "src").iterdir() if f.is_dir()} - modules
+    names = declared(modules) - declared(kept)
+    for module in modules:
+        for block in re.findall(rf'#if __has_include\("{module}/[^"]+"\)(.*?)#endif', helpers,
+                                re.S):
+            names.update(re.findall(r"^inline\s+[^(]*?(\w+)\(", block, re.M))
+    names -= {"operator", "Feature"}
+    return modules, names
+
+
+def block_end(text: str, open_brace: int) -> int:
+    """The index just after the brace that closes the one at `open_brace`, skipping strings,
+    characters, raw strings and comments."""
+    depth, i = 0, open_brace
+    while i < len(text):
+        if text.startswith("//", i):
+            i = text.index("\n", i)
+        elif text.startswith("/*", i):
+            i = text.index("*/", i) + 2
+            continue
+        elif text.startswith('R"', i) and not (text[i - 1:i].isalnum() or text[i - 1:i] == "_"):
+            delim = text[i + 2:text.index("(", i)]
+            i = text.index(")" + delim + '"', i) + len(delim) + 2
+        elif text[i] == '"' or (text[i] == "'" and not text[i - 1].isalnum()):
+            q, i = text[i], i + 1
+            while text[i] != q:
+                i += 2 if text[i] == "\\" else 1
+        elif text[i] == "{":
+            depth += 1
+        elif text[i] == "}":
+            depth -= 1
+            if depth == 0:
+                return i + 1
+        i += 1
+    return len(text)
+
+
+def trim_test_file(text: str, modules: set[str], names: set[str],
+                   last: int) -> tuple[str | None, list[str]]:
+    """A test file without the scenarios that use a later chapter's code or are tagged
+    [needs-chKK] for a later chapter K (a test of an early chapter that checks how it works
+    with later ones); None when code outside the scenarios uses a later chapter (the file is
+    left out). Also returns the scenarios removed."""
+    uses = re.compile(r"\b(?:rb|rbtest)::(?:" + "|".join(map(re.escape, sorted(names))) + r")\b"
+                      if names else r"(?!)")
+    includes = re.compile(r'^#include "(?:' + "|".join(map(re.escape, sorted(modules))) +
+                          r')/[^"]+"\n', re.M) if modules else re.compile(r"(?!)")
+    removed, pieces, pos = [], [], 0
+    for name, _span in scenarios(text):
+        start = text.index("SCENARIO(", pos)
+        body = text.index("{", text.index(")", _span[1]))
+        end = block_end(text, body)
+        pieces.append(text[pos:start])
+        needs = [int(k) for k in re.findall(r"\[needs-ch(\d+)\]", text[_span[0]:_span[1]])]
+        if uses.search(text[start:end]) or any(k > last for k in needs):
+            removed.append(name)
+            pieces.append(f"// Scenario left out of this assignment (it needs a later chapter): "
+                          f"{name}\n")
+        else:
+            pieces.append(text[start:end])
+        pos = end
+    pieces.append(text[pos:])
+    outside = "".join(p for p in pieces if not p.startswith("SCENARIO("))
+    if uses.search(outside) or (includes.search(outside) and removed == [] and
+                                 uses.search(text)):
+        return None, []
+    trimmed = "".join(pieces)
+    if removed:
+        trimmed = includes.sub("", trimmed)
+    elif includes.search(trimmed):
+        return None, []
+    return trimmed, removed
+
+
+CHECK_CMAKE = """
+# make check (an assignment): chapter {n}'s tests alone, so that a check builds only them.
+file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp
+     ${{CMAKE_SOURCE_DIR}}/tests/stability*.cpp)
+add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp ${{RB_CHECK_SOURCES}})
+target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src
+                           ${{CMAKE_SOURCE_DIR}}/tests)
+target_link_libraries(raybook_check PRIVATE raybook rb_golden_compare Catch2::Catch2)
+target_compile_definitions(raybook_check PRIVATE RB_SOURCE_DIR="${{CMAKE_SOURCE_DIR}}")
+"""
+
+
+def write_if_changed(path: Path, data: bytes) -> None:
+    """Write a file only when its bytes change, so a build folder reused across exports
+    recompiles only what changed."""
+    if path.is_file() and path.read_bytes() == data:
+        return
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(data)
+
+
+def exercise_info(root: Path, n: int) -> list[dict]:
+    page = page_of(root, n)
+    heads = sections(page) if page else {}
+    out = []
+    for r in rg.find_regions(root):
+        if r.chapter != n:
+            continue
+        out.append({"name": r.name, "id": r.id, "title": r.title, "anchor": r.anchor,
+                    "section": heads.get(r.anchor, r.anchor),
+                    "file": str(r.path.relative_to(root)), "tag": f"[ex{r.name}]"})
+    return out
+
+
+def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
+    """The exported project's README, built from the chapter page."""
+    page = page_of(root, n)
+    text = page.read_text() if page else ""
+    lines = text.split("\n")
+    title = re.sub(r"\s*\{#[\w-]+\}", "", lines[0].lstrip("# ")) if lines else f"Chapter {n}"
+    intro = []
+    for line in lines[1:]:
+        if line.startswith("#") or line.strip() == "[TOC]":
+            break
+        intro.append(line)
+    scene = scene_of(root, n)
+    page_rel = page.relative_to(root) if page else "chapters/"
+    out = [f"# Assignment: {title}", "",
+           f"This project holds chapters 1 to {n} of raybook. Chapters 1 to {n - 1} are "
+           f"complete; in chapter {n} the code that *is* the chapter's idea has been taken out "
+           f"and replaced by stubs. Each stub throws `rb::ExerciseNotDone`, which names the "
+           f"exercise and the section of `{page_rel}` that explains it.", ""]
+    out += "\n".join(intro).strip().split("\n")
+    out += ["", "## What to implement, in this order", "",
+            f"Read `{page_rel}` first. Then write each exercise between its two "
+            "`// [exercise-…]` marker comments (keep the markers):", ""]
+    for e in exercises:
+        out.append(f"{e['name'].split('.')[1]}. **Exercise {e['name']}, {e['title']}**, in "
+                   f"`{e['file']}`. Read the section *{e['section']}* (`#{e['anchor']}`). "
+                   f"Its tests carry the tag `{e['tag']}`.")
+    out += ["", "An exercise's tests pass as soon as it and the exercises before it are written, "
+            "even while the later ones are still stubs."]
+    # Where the chapter's structure does not allow that: tests tagged with a later exercise too.
+    later: dict[str, set[str]] = {}
+    for path in sorted((root / "tests").glob(f"ch{n:02d}_*.cpp")) + sorted(
+            (root / "tests").glob("stability*.cpp")):
+        text = path.read_text()
+        for _name, (b, e) in scenarios(text):
+            tags_here = re.findall(rf"\[ex({n}\.\d+)\]", text[b:e])
+            for ex in tags_here:
+                later.setdefault(ex, set()).update(x for x in tags_here
+                                                   if int(x.split(".")[1]) > int(ex.split(".")[1]))
+    for ex, needs in sorted(later.items()):
+        if needs:
+            out.append(f"Except here: some tests of exercise {ex} also need exercise"
+                       f"{'s' if len(needs) > 1 else ''} {', '.join(sorted(needs))}, so its row "
+                       f"turns green once that is written too.")
+    out += ["",
+            "## How to check your work", "",
+            "| command | what it does |", "|---|---|",
+            f"| `make check` | builds chapter {n}'s tests, runs each exercise's tests and the "
+            f"golden image, and prints a table: exercise, tests passed, pass/fail, what to read. "
+            f"When the picture is wrong it names the HTML report that shows the expected and "
+            f"your image and their difference |",
+            f"| `make chapter{n}` | builds `./rt` from chapters 1 to {n} |",
+            f"| `./rt --features=all {scene.relative_to(root) if scene else 'scenes/'}` | "
+            f"renders the chapter's scene |",
+            f"| `build/tests/raybook_check \"[ex{n}.1]\"` | after `make check`, runs one "
+            f"exercise's tests with Catch2's full messages |",
+            f"| `make test` | every test of chapters 1 to {n} and their golden images |", "",
+            "A stub that is still in place makes its tests fail with a message such as "
+            f"`exercise {exercises[0]['name'] if exercises else n} (...) is not written yet: "
+            "read the section ... of the chapter page`.", ""]
+    if left:
+        out += ["Tests of chapters 1 to {} that use code of a later chapter are left out of this "
+                "project:".format(n), ""] + [f"- {l}" for l in left] + [""]
+    more = re.search(r"\n## Exercises \{#[\w-]+\}\n(.*?)(\n## |\Z)", text, re.S)
+    if more:
+        challenges = re.split(r"\n\n(?=1\. )", more.group(1), maxsplit=1)
+        if len(challenges) == 2:
+            out += ["## Going further", "", challenges[1].strip(), ""]
+    return "\n".join(out)
+
+
+def export(args) -> int:
+    root = ROOT
+    n = args.chapter
+    chapters = book_chapters(root)
+    if n not in chapters:
+        sys.exit(f"assignment: chapter {n} is not written; the written chapters are "
+                 f"{' '.join(str(c) for c in sorted(chapters))}")
+    dest = Path(args.dir).resolve()
+    if dest == root or root in dest.parents and not dest.name.startswith(("assignment", "build")):
+        sys.exit(f"assignment: refusing to write into {dest}")
+    files = [p for p in tracked_files(root) if not left_out(p)
+             and (owner(p, chapters) or 0) <= n and shared_test_fits(root, p, chapters, n)]
+    exercises = exercise_info(root, n)
+    if not exercises:
+        sys.exit(f"assignment: chapter {n} has no exercise regions")
+    contents: dict[str, bytes] = {p: (root / p).read_bytes() for p in files}
+    # Chapter N's regions become stubs.
+    for rel, text in stub_files([r for r in rg.find_regions(root) if r.chapter == n],
+                                root).items():
+        contents[rel] = text.encode()
+    contents["CMakeLists.txt"] = trim_cmake(contents["CMakeLists.txt"].decode(), chapters,
+                                            n).encode()
+    contents["tests/test_helpers.h"] = trim_test_helpers(
+        contents["tests/test_helpers.h"].decode(), chapters, n).encode()
+    # Test files and scenarios that use a later chapter's code are left out.
+    modules, names = dropped_names(root, chapters, n, contents["tests/test_helpers.h"].decode())
+    left = []
+    for rel in [r for r in contents if re.match(r"^tests/[^/]+\.cpp$", r)]:
+        trimmed, removed = trim_test_file(contents[rel].decode(), modules, names, n)
+        if trimmed is None:
+            del contents[rel]
+            left.append(f"{rel} (the whole file)")
+        else:
+            contents[rel] = trimmed.encode()
+            left += [f"{rel}: {s}" for s in removed]
+    # Benchmarks and fuzz targets are not part of an assignment.
+    for folder in ("tests/perf", "tests/fuzz"):
+        contents[f"{folder}/CMakeLists.txt"] = b"# Not part of an assignment (see raybook).\n"
+    contents["tests/CMakeLists.txt"] += CHECK_CMAKE.format(n=n, nn=f"{n:02d}").encode()
+    template = (root / "tests/exercises/assignment.mk").read_text()
+    contents["Makefile"] = template.replace("@CHAPTER@", str(n)).replace(
+        "@WHOLE_BOOK@", "|".join(WHOLE_BOOK_SUITES + [s for s, k in SUITES_NEEDING.items()
+                                                     if k > n])).encode()
+    contents["README.md"] = readme(root, n, exercises, left).encode()
+    contents[".gitignore"] = b"/build/\n/rt\n/rt.tmp*\n/*.png\n"
+    scene = scene_of(root, n)
+    info = {"chapter": n, "page": str(page_of(root, n).relative_to(root)),
+            "scene": str(scene.relative_to(root)) if scene else None,
+            "exercises": exercises, "left_out": left}
+    contents[INFO] = (json.dumps(info, indent=2) + "\n").encode()
+    # Sync: write what changed, remove what the export no longer has.
+    dest.mkdir(parents=True, exist_ok=True)
+    for rel, data in contents.items():
+        write_if_changed(dest / rel, data)
+        if (root / rel).is_file() and os.access(root / rel, os.X_OK):
+            (dest / rel).chmod(0o755)
+    for path in sorted(dest.rglob("*"), reverse=True):
+        rel = str(path.relative_to(dest))
+        if rel.startswith("build") or rel in ("rt",):
+            continue
+        if path.is_file() and rel not in contents:
+            path.unlink()
+        elif path.is_dir() and not any(path.iterdir()):
+            path.rmdir()
+    print(f"assignment: chapter {n} written to {dest} "
+          f"({len(exercises)} exercises: {', '.join(e['name'] for e in exercises)})")
+    print(f"  cd {dest} && make check")
+    return 0
+
+
+def stub_text(text: str, regions: list[rg.Region]) -> str:
+    """A file's text with some of its regions' code replaced by their stubs (markers and
+    header comments stay), and the stub's header included."""
+    lines = text.split("\n")
+    # From the bottom up, so that the line numbers of the regions above stay right.
+    for region in sorted(regions, key=lambda r: -r.begin):
+        header_end = region.begin + (3 if region.blank is not None else 2)
+        lines = lines[:header_end] + [region.indent + region.stub()] + lines[region.end:]
+    if '#include "core/error.h"' not in lines:
+        first = next((i for i, l in enumerate(lines) if l.startswith("#include")), 0)
+        lines.insert(first + 1, '#include "core/error.h"')
+    return "\n".join(lines)
+
+
+def stub_files(regions: list[rg.Region], root: Path) -> dict[str, str]:
+    """Path (relative to root) -> text with the given regions stubbed."""
+    by_file: dict[Path, list[rg.Region]] = {}
+    for r in regions:
+        by_file.setdefault(r.path, []).append(r)
+    return {str(path.relative_to(root)): stub_text(path.read_text(), rs)
+            for path, rs in by_file.items()}
+
+
+def solve(args) -> int:
+    """Put raybook's region code back into a project's stubs."""
+    project = Path(args.project).resolve()
+    n = json.loads((project / INFO).read_text())["chapter"]
+    for r in rg.find_regions(ROOT):
+        if r.chapter != n:
+            continue
+        original = r.path.read_text().split("\n")
+        target = project / r.path.relative_to(ROOT)
+        lines = target.read_text().split("\n")
+        begin = next(i for i, l in enumerate(lines) if l.strip() == f"// [exercise-{r.id}]")
+        end = next(i for i in range(begin + 1, len(lines))
+                   if lines[i].strip() == f"// [exercise-{r.id}]")
+        lines[begin:end + 1] = original[r.begin:r.end + 1]
+        write_if_changed(target, "\n".join(lines).encode())
+    print(f"assignment: chapter {n}'s regions restored in {project}")
+    return 0
+
+
+# ---- Checking -------------------------------------------------------------------------------
+
+def run(command, timeout, cwd=None, env=None) -> tuple[int, str]:
+    """Run a command; return its exit code (124 on timeout) and its output."""
+    # A make started from inside another make must not inherit its job server.
+    env = {k: v for k, v in (env or os.environ).items()
+           if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    try:
+        p = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           text=True, errors="replace", timeout=timeout, cwd=cwd, env=env)
+        return p.returncode, p.stdout
+    except subprocess.TimeoutExpired as e:
+        out = e.stdout.decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
+        return 124, out + f"\n(timed out after {timeout} s)"
+
+
+def catch_escape(name: str) -> str:
+    """A test name as a Catch2 test spec that matches only it."""
+    return re.sub(r"([\\\[\],*~\"])", r"\\\1", name)
+
+
+def list_tests(program: Path, spec: str) -> list[str]:
+    code, out = run([str(program), spec, "--list-test-names-only"], 60)
+    return [l for l in out.split("\n") if l.strip()] if code >= 0 else []
+
+
+def run_tests(program: Path, names: list[str], cwd: Path) -> list[dict]:
+    """Run each test in its own process (a crash or hang fails that test alone)."""
+    results = []
+    for name in names:
+        code, out = run([str(program), catch_escape(name)], TEST_TIMEOUT, cwd=cwd)
+        why = ""
+        if code != 0:
+            flat = " ".join(out.split())
+            stub = re.search(r"exercise \S+ \(.*?\) is not written yet: .*?replace this stub", flat)
+            failed = re.search(r"(\S+:\d+: FAILED:.*?)(?: -{20}| ={20}|$)", flat)
+            why = (stub.group(0) if stub else f"timed out after {TEST_TIMEOUT} s" if code == 124
+                   else failed.group(1)[:400] if failed and code > 0
+                   else f"failed (exit {code})" if code > 0 else f"crashed (signal {-code})")
+        results.append({"name": name, "passed": code == 0, "why": why, "output": out[-3000:]})
+    return results
+
+
+def check_project(project: Path, build: Path, quiet: bool = False) -> dict:
+    """Build and check one exported project; return its results (never raises on a student's
+    failure: a build failure is a result)."""
+    info = json.loads((project / INFO).read_text())
+    n = info["chapter"]
+    result = {"project": str(project), "chapter": n, "build": "ok", "build_log": "",
+              "exercises": [], "golden": {"status": "not run", "metric": "", "report": ""}}
+    build.mkdir(parents=True, exist_ok=True)
+    configure = ["cmake", "-S", str(project), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"]
+    launcher = os.environ.get("RB_COMPILER_LAUNCHER")
+    if launcher:
+        configure.append(f"-DCMAKE_CXX_COMPILER_LAUNCHER={launcher}")
+    code, out = run(configure, 300)
+    if code == 0:
+        code, out = run(["cmake", "--build", str(build), "-j", JOBS, "--target",
+                         "raybook_check", f"rt_ch{n}", "rb_imgdiff"], BUILD_TIMEOUT)
+    if code != 0:
+        result["build"] = "timed out" if code == 124 else "failed"
+        errors = [l for l in out.split("\n") if "error" in l.lower()]
+        result["build_log"] = "\n".join(errors[:15]) or out[-2000:]
+        for e in info["exercises"]:
+            result["exercises"].append({**e, "tests": 0, "passed": 0, "status": "no build",
+                                        "failures": []})
+        return result
+    program = build / "tests" / "raybook_check"
+    for e in info["exercises"]:
+        names = list_tests(program, e["tag"])
+        tests = run_tests(program, names, project)
+        passed = sum(t["passed"] for t in tests)
+        status = "pass" if names and passed == len(names) else "fail"
+        result["exercises"].append({**e, "tests": len(names), "passed": passed,
+                                    "status": status,
+                                    "failures": [t for t in tests if not t["passed"]]})
+    # The chapter's other tests (those no single exercise owns).
+    tagged = set()
+    for e in info["exercises"]:
+        tagged.update(list_tests(program, e["tag"]))
+    others = [t for t in list_tests(program, f"[ch{n:02d}]") if t not in tagged]
+    tests = run_tests(program, others, project)
+    result["others"] = {"tests": len(others), "passed": sum(t["passed"] for t in tests),
+                        "failures": [t for t in tests if not t["passed"]]}
+    # The golden image.
+    if info.get("scene"):
+        report = build / "golden-report"
+        code, out = run(["bash", str(project / "tests/golden/run_golden.sh"),
+                         str(build / f"rt_ch{n}"), info["scene"], str(project / "golden"),
+                         str(report), str(build / "tests" / "rb_imgdiff"),
+                         "--report-name=check"], 600, cwd=project)
+        name = Path(info["scene"]).stem
+        m = re.search(r"RMSE ([0-9.eE+-]+)", out)
+        html = report / "check.html"
+        result["golden"] = {"status": "pass" if code == 0 else "fail", "scene": name,
+                            "metric": m.group(1) if m else "", "output": out.strip()[-1500:],
+                            "report": str(html) if code != 0 and html.exists() else ""}
+    return result
+
+
+def table(result: dict) -> str:
+    n = result["chapter"]
+    rows = ["| exercise | tests | pass/fail | what to read |", "|---|---|---|---|"]
+    for e in result["exercises"]:
+        tests = f"{e['passed']}/{e['tests']} `{e['tag']}`" if result["build"] == "ok" else "-"
+        rows.append(f"| {e['name']} {e['title']} | {tests} | {e['status']} | "
+                    f"{e['section']} (`#{e['anchor']}`), `{e['file']}` |")
+    if result["build"] != "ok":
+        return "\n".join(rows) + f"\n\nbuild {result['build']}:\n{result['build_log']}"
+    o = result.get("others", {"tests": 0})
+    if o["tests"]:
+        rows.append(f"| chapter {n}, other tests | {o['passed']}/{o['tests']} `[ch{n:02d}]` | "
+                    f"{'pass' if o['passed'] == o['tests'] else 'fail'} | the whole page |")
+    g = result["golden"]
+    if g["status"] != "not run":
+        if g["report"]:
+            what = "diff: " + g["report"]
+        elif g["status"] == "fail":
+            what = (g.get("output", "").split("\n")[0].split(": ", 1)[-1] or "the render failed")
+        else:
+            what = f"golden/{g.get('scene', '')}.png"
+        rows.append(f"| golden image {g.get('scene', '')} | rmse {g['metric'] or '-'} | "
+                    f"{g['status']} | {what} |")
+    return "\n".join(rows)
+
+
+def passed_all(result: dict) -> bool:
+    return (result["build"] == "ok" and all(e["status"] == "pass" for e in result["exercises"])
+            and result.get("others", {}).get("passed", 0) == result.get("others", {}).get(
+                "tests", 0) and result["golden"]["status"] in ("pass", "not run"))
+
+
+def check(args) -> int:
+    project = Path(args.project).resolve()
+    if not (project / INFO).is_file():
+        sys.exit(f"check: {project} is not an exported assignment (no {INFO}); "
+                 "make one with make assignment N")
+    build = Path(args.build).resolve() if args.build else project / "build"
+    result = check_project(project, build)
+    print(table(result))
+    for e in result["exercises"]:
+        for t in e.get("failures", [])[:1]:
+            print(f"\n{e['name']}: {t['name']}\n  {t['why']}")
+            if len(e["failures"]) > 1:
+                print(f"  (and {len(e['failures']) - 1} more; run build/tests/raybook_check "
+                      f"\"{e['tag']}\" for every message)")
+    if result["golden"]["status"] == "fail":
+        print("\ngolden image: " + "\n  ".join(result["golden"]["output"].splitlines()[:3]))
+        if result["golden"]["report"]:
+            print(f"  open {result['golden']['report']} (expected, yours, and the difference)")
+    if args.json:
+        Path(args.json).write_text(json.dumps(result, indent=2))
+    ok = passed_all(result)
+    print("\nall exercises pass" if ok else "\nnot done yet")
+    return 0 if ok else 1
+
+
+def changed_tests(project: Path) -> list[str]:
+    """The files a grade relies on (tests, golden images, scenes, the exercise list) that
+    differ from a fresh export of the same chapter by this raybook: a student is to change
+    src/ only."""
+    n = json.loads((project / INFO).read_text())["chapter"]
+    with tempfile.TemporaryDirectory() as tmp:
+        fresh = Path(tmp) / "assignment"
+        code, out = run([sys.executable, __file__, "export", str(n), str(fresh)], 300)
+        if code != 0:
+            return [f"(cannot export chapter {n} to compare: {out.strip()[-200:]})"]
+        changed = []
+        for path in sorted(fresh.rglob("*")):
+            rel = path.relative_to(fresh)
+            if path.is_file() and (rel.parts[0] in ("tests", "golden", "scenes")
+                                   or str(rel) == INFO) and "exercises" not in rel.parts:
+                theirs = project / rel
+                if not theirs.is_file() or theirs.read_bytes() != path.read_bytes():
+                    changed.append(str(rel))
+        return changed
+
+
+# ---- Grading --------------------------------------------------------------------------------
+
+def grade(args) -> int:
+    target = Path(args.dir).resolve()
+    projects = ([target] if (target / INFO).is_file() else
+                sorted(p for p in target.iterdir() if (p / INFO).is_file()))
+    if not projects:
+        sys.exit(f"grade: no exported assignment in {target} (looked for {INFO})")
+    out = Path(args.csv) if args.csv else (target if target.is_dir() and len(projects) > 1
+                                          else target.parent) / "grades.csv"
+    rows = []
+    exercise_names: list[str] = []
+    for project in projects:
+        # The student's code runs only in its own build and tests; a separate build folder
+        # keeps the student's folder as it was handed in.
+        build = Path(args.build_root).resolve() / project.name if args.build_root else \
+            project / "build"
+        start = time.monotonic()
+        changed = changed_tests(project)
+        result = check_project(project, build)
+        seconds = time.monotonic() - start
+        print(f"## {project.name} (chapter {result['chapter']}, {seconds:.0f} s)")
+        print(table(result))
+        print()
+        if changed:
+            print(f"note: files that grading relies on differ from a fresh export: "
+                  f"{', '.join(changed[:10])}")
+        row = {"student": project.name, "chapter": result["chapter"], "build": result["build"],
+               "tests changed": " ".join(changed)}
+        for e in result["exercises"]:
+            key = f"ex{e['name']}"
+            if key not in exercise_names:
+                exercise_names.append(key)
+            row[f"{key} passed"] = e["passed"] if result["build"] == "ok" else ""
+            row[f"{key} tests"] = e["tests"] if result["build"] == "ok" else ""
+        row["golden"] = result["golden"]["status"]
+        row["golden rmse"] = result["golden"]["metric"]
+        total = sum(e["tests"] for e in result["exercises"])
+        row["score"] = (f"{sum(e['passed'] for e in result['exercises'])}/{total}"
+                        if result["build"] == "ok" else "0")
+        rows.append(row)
+    fields = ["student", "chapter", "build", "tests changed"]
+    for key in exercise_names:
+        fields += [f"{key} passed", f"{key} tests"]
+    fields += ["golden", "golden rmse", "score"]
+    with open(out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        for row in rows:
+            w.writerow(row)
+    print("| student | build | " + " | ".join(exercise_names) + " | golden | score |")
+    print("|---|---|" + "---|" * len(exercise_names) + "---|---|")
+    for row in rows:
+        cells = [f"{row.get(k + ' passed', '')}/{row.get(k + ' tests', '')}"
+                 if row["build"] == "ok" and f"{k} passed" in row else "-"
+                 for k in exercise_names]
+        golden = f"{row['golden']} {row['golden rmse']}".strip()
+        print(f"| {row['student']} | {row['build']} | " + " | ".join(cells) +
+              f" | {golden} | {row['score']} |")
+    print(f"\ngrades written to {out}")
+    return 0
+
+
+# ---- Maintainer's tools ---------------------------------------------------------------------
+
+def tags(args) -> int:
+    """Which [exN.k] tags the chapter's tests should carry. Two experiments, each a rebuild of
+    the test program per step:
+      progressive  for k = 0..K-1, exercises 1..k written and the rest stubs: a test that
+                   fails at k-1 and passes at k belongs to exercise k (it passes as soon as
+                   exercise k is written, while the later ones are still stubs);
+      single       each region alone stubbed: the tests that then fail.
+    An exercise that owns no test by the first rule (an earlier exercise's stub breaks every
+    test of it) takes the tests that its stub alone breaks. With --apply the tags are written
+    into the SCENARIO lines of tests/chNN_*.cpp."""
+    build = Path(args.build).resolve()
+    program = build / "tests" / "raybook_tests"
+    regions = [r for r in rg.find_regions() if r.chapter == args.chapter]
+    names = list_tests(program, f"[ch{args.chapter:02d}]")
+    originals = {r.path: r.path.read_text() for r in regions}
+
+    def passing(stubbed: list[rg.Region]) -> set[str]:
+        for path, text in originals.items():
+            path.write_text(text)
+        for rel, text in stub_files(stubbed, ROOT).items():
+            (ROOT / rel).write_text(text)
+        code, out = run(["cmake", "--build", str(build), "-j", JOBS, "--target",
+                         "raybook_tests"], BUILD_TIMEOUT)
+        if code != 0:
+            sys.exit(out[-3000:])
+        return {t for t, res in zip(names, run_tests(program, names, ROOT)) if res["passed"]}
+
+    try:
+        progressive = [passing(regions[k:]) for k in range(len(regions))]
+        single = [set(names) - passing([r]) for r in regions]
+    finally:
+        for path, text in originals.items():
+            path.write_text(text)
+        run(["cmake", "--build", str(build), "-j", JOBS, "--target", "raybook_tests"],
+            BUILD_TIMEOUT)
+    owned: dict[str, list[str]] = {t: [] for t in names}
+    for t in names:
+        for k in range(len(regions)):
+            if t in progressive[k]:
+                if k > 0:
+                    owned[t].append(regions[k - 1].name)
+                break
+        else:
+            owned[t].append(regions[-1].name)
+    for k, r in enumerate(regions):
+        if not any(r.name in v for v in owned.values()):
+            for t in sorted(single[k]):
+                owned[t].append(r.name)
+    for t in names:
+        print(("".join(f"[ex{e}]" for e in sorted(owned[t])) or "(none)") + "\t" + t)
+    if args.apply:
+        apply_tags(args.chapter, owned)
+    return 0
+
+
+STRING = re.compile(r'\s*"((?:[^"\\]|\\.)*)"')
+
+
+def scenarios(text: str):
+    """Each SCENARIO of a test file: (its name, the span of its tag string's contents)."""
+    for m in re.finditer(r"\bSCENARIO\(", text):
+        pos, parts = m.end(), []
+        while (s := STRING.match(text, pos)):
+            parts.append(s.group(1))
+            pos = s.end()
+        comma = re.compile(r"\s*,").match(text, pos)
+        tag = STRING.match(text, comma.end()) if comma else None
+        if parts and tag:
+            name = re.sub(r"\\(.)", r"\1", "".join(parts))
+            yield name, tag.span(1)
+
+
+def apply_tags(chapter: int, owned: dict[str, list[str]]) -> None:
+    """Add [exN.k] to the tag string of each SCENARIO (only tags change)."""
+    found = set()
+    for path in sorted((ROOT / "tests").glob("*.cpp")):
+        text = path.read_text()
+        edits = []
+        for name, (begin, end) in scenarios(text):
+            key = "Scenario: " + name
+            if key not in owned:
+                continue
+            found.add(key)
+            tags_now = re.sub(r"\[ex\d+\.\d+\]", "", text[begin:end])
+            edits.append((begin, end, tags_now + "".join(f"[ex{e}]" for e in sorted(owned[key]))))
+        changed = text
+        for begin, end, tags_new in sorted(edits, reverse=True):
+            changed = changed[:begin] + tags_new + changed[end:]
+        if changed != text:
+            path.write_text(changed)
+            print(f"tagged {path.relative_to(ROOT)}")
+    for key in owned:
+        if owned[key] and key not in found:
+            print(f"not found in the test files (tag it by hand): {key}")
+
+
+def list_exercises(_args) -> int:
+    """Every chapter's exercises and the tests tagged for each (read from the test files)."""
+    tagged: dict[str, list[str]] = {}
+    for path in sorted((ROOT / "tests").glob("*.cpp")):
+        text = path.read_text()
+        for name, (begin, end) in scenarios(text):
+            for ex in re.findall(r"\[ex(\d+\.\d+)\]", text[begin:end]):
+                tagged.setdefault(ex, []).append(f"{path.name}: {name}")
+    for r in rg.find_regions():
+        tests = tagged.get(r.name, [])
+        print(f"{r.name} {r.title} ({r.path.relative_to(ROOT)}), {len(tests)} tests:")
+        for t in tests:
+            print(f"    {t}")
+    return 0
+
+
+def roundtrip(args) -> int:
+    work = Path(args.work).resolve()
+    work.mkdir(parents=True, exist_ok=True)
+    project = work / "assignment"
+    build = work / "build"
+    env_launcher = f"{sys.executable} {Path(__file__).resolve().parent / 'objcache.py'}"
+    os.environ.setdefault("RB_COMPILER_LAUNCHER", env_launcher.replace(" ", ";"))
+    os.environ.setdefault("RB_OBJCACHE", str(work / "objcache"))
+    chapters = args.chapters or sorted({r.chapter for r in rg.find_regions()})
+    failures = []
+    total = time.monotonic()
+    for n in chapters:
+        start = time.monotonic()
+        subprocess.run([sys.executable, __file__, "export", str(n), str(project)], check=True,
+                       stdout=subprocess.DEVNULL)
+        stubbed = check_project(project, build)
+        solve(argparse.Namespace(project=str(project)))
+        solved = check_project(project, build)
+        problems = []
+        if stubbed["build"] != "ok":
+            problems.append(f"the stubbed export does not build:\n{stubbed['build_log']}")
+        else:
+            for e in stubbed["exercises"]:
+                if e["tests"] == 0:
+                    problems.append(f"exercise {e['name']} has no {e['tag']} test")
+                elif e["status"] == "pass":
+                    problems.append(f"exercise {e['name']}'s tests pass with its stub")
+        if not passed_all(solved):
+            problems.append("the solved export does not pass:\n" + table(solved))
+        seconds = time.monotonic() - start
+        verdict = "ok" if not problems else "FAIL"
+        print(f"chapter {n}: {verdict} ({seconds:.0f} s): stubbed "
+              + ", ".join(f"{e['name']} {e['passed']}/{e['tests']}" for e in stubbed["exercises"])
+              + "; solved " + ", ".join(f"{e['name']} {e['passed']}/{e['tests']}"
+                                        for e in solved["exercises"])
+              + f"; golden {stubbed['golden']['status']} -> {solved['golden']['status']}")
+        for p in problems:
+            print("  " + p.replace("\n", "\n  "))
+        if problems:
+            failures.append(n)
+    print(f"round trip: {len(chapters) - len(failures)} of {len(chapters)} chapters ok "
+          f"in {time.monotonic() - total:.0f} s")
+    return 1 if failures else 0
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("export")
+    p.add_argument("chapter", type=int)
+    p.add_argument("dir")
+    p.set_defaults(func=export)
+    p = sub.add_parser("check")
+    p.add_argument("project", nargs="?", default=".")
+    p.add_argument("--build")
+    p.add_argument("--json")
+    p.set_defaults(func=check)
+    p = sub.add_parser("grade")
+    p.add_argument("dir")
+    p.add_argument("--csv")
+    p.add_argument("--build-root")
+    p.set_defaults(func=grade)
+    p = sub.add_parser("solve")
+    p.add_argument("project")
+    p.set_defaults(func=solve)
+    sub.add_parser("list").set_defaults(func=list_exercises)
+    p = sub.add_parser("roundtrip")
+    p.add_argument("work")
+    p.add_argument("--chapters", type=int, nargs="*")
+    p.set_defaults(func=roundtrip)
+    p = sub.add_parser("tags")
+    p.add_argument("build")
+    p.add_argument("--chapter", type=int, required=True)
+    p.add_argument("--apply", action="store_true")
+    p.set_defaults(func=tags)
+    args = parser.parse_args()
+    return args.func(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

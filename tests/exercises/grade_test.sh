@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# make grade over a class of four exported chapter-1 projects, each a case the grader must get
+# right:
+#   untouched  the export as handed out: every exercise fails, and so does the golden image;
+#   solved     raybook's own code put back: every exercise and the golden image pass;
+#   buggy      solved, then the last exercise replaced by its blank (compiles, wrong): only
+#              that exercise fails, the ones before it pass, the golden image fails;
+#   broken     solved, then a syntax error: reported as a build failure with score 0, never
+#              a crash of the grader.
+# Checks the printed table and the CSV. The four builds share objects through objcache.py.
+#
+# Usage: bash tests/exercises/grade_test.sh WORK_DIR
+set -euo pipefail
+[[ $# -eq 1 ]] || { echo "usage: $0 WORK_DIR" >&2; exit 2; }
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+WORK=$(realpath -m "$1")
+CLASS=$WORK/class
+SCRIPT=$ROOT/tests/exercises/assignment.py
+start=$SECONDS
+rm -rf "$CLASS"
+mkdir -p "$CLASS"
+export RB_OBJCACHE=$WORK/objcache RB_OBJCACHE_STRIP=$CLASS
+export RB_COMPILER_LAUNCHER="python3;$ROOT/tests/exercises/objcache.py"
+
+for student in untouched solved buggy broken; do
+    python3 "$SCRIPT" export 1 "$CLASS/$student" >/dev/null
+done
+for student in solved buggy broken; do
+    python3 "$SCRIPT" solve "$CLASS/$student" >/dev/null
+done
+# The bug: the chapter's last region with a Blank line gets its blank code. The broken
+# project gets a line that cannot compile in the same place.
+read -r bug_name bug_file < <(python3 - "$ROOT" "$CLASS" <<'EOF'
+import json, re, sys
+from pathlib import Path
+sys.path.insert(0, sys.argv[1] + "/tests/exercises")
+import regions
+class_dir = Path(sys.argv[2])
+region = [r for r in regions.find_regions(class_dir / "buggy") if r.chapter == 1 and r.blank][-1]
+for student, code in (("buggy", region.blank), ("broken", "this is not C++;")):
+    r = [x for x in regions.find_regions(class_dir / student) if x.id == region.id][0]
+    r.path.write_text(regions.replaced(r, code))
+print(region.name, r.path.relative_to(class_dir / "broken"))
+EOF
+)
+echo "the bug: exercise $bug_name ($bug_file) replaced by its blank"
+
+status=0
+out=$(python3 "$SCRIPT" grade "$CLASS" --csv "$WORK/grades.csv") || status=$?
+echo "$out"
+[[ $status -eq 0 ]] || { echo "FAIL: make grade exited with $status"; exit 1; }
+
+python3 - "$WORK/grades.csv" "$bug_name" <<'EOF'
+import csv, sys
+rows = {r["student"]: r for r in csv.DictReader(open(sys.argv[1]))}
+bug = sys.argv[2]
+failures = []
+def expect(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    if not cond:
+        failures.append(what)
+expect(sorted(rows) == ["broken", "buggy", "solved", "untouched"], "one CSV row per student")
+exercises = sorted({k.split()[0] for k in next(iter(rows.values())) if k.startswith("ex")})
+expect(len(exercises) >= 2, f"the CSV has a column pair per exercise: {exercises}")
+def passed(row, ex):
+    return row[f"{ex} passed"], row[f"{ex} tests"]
+u, s, b, x = rows["untouched"], rows["solved"], rows["buggy"], rows["broken"]
+expect(u["build"] == s["build"] == b["build"] == "ok", "three projects build")
+expect(all(int(passed(u, e)[0]) == 0 < int(passed(u, e)[1]) for e in exercises),
+       "untouched: no exercise test passes")
+expect(all(passed(s, e)[0] == passed(s, e)[1] for e in exercises),
+       "solved: every exercise test passes")
+expect(u["golden"] == "fail" and s["golden"] == "pass" and b["golden"] == "fail",
+       "golden image: untouched fail, solved pass, buggy fail")
+expect(s["golden rmse"] != "" and float(s["golden rmse"]) < float(b["golden rmse"] or "inf"),
+       "the golden metric is reported, smaller for the solved project than the buggy one")
+for e in exercises:
+    p, t = passed(b, e)
+    if e == "ex" + bug:
+        expect(int(p) < int(t), f"buggy: {e} fails ({p}/{t})")
+    elif e < "ex" + bug:
+        expect(p == t, f"buggy: {e}, before the bug, passes ({p}/{t})")
+expect(x["build"] == "failed" and x["score"] == "0", "broken: a build failure, score 0")
+expect(all(r["tests changed"] == "" for r in rows.values()),
+       "no project's tests, goldens or scenes differ from a fresh export")
+sys.exit(1 if failures else 0)
+EOF
+echo "grade test: $((SECONDS - start)) s"
