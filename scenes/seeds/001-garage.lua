@@ -13,12 +13,16 @@
 -- so on stderr; no flag is needed.
 --
 -- Chapters used: 1-3, 4 (reflectivity), 5 (gr.transMat), 6 (the rectangular light and ss),
--- 7 (glossiness, scatter and dist), 8 (aa). Parts of the seed's scene that wait for later chapters:
---   * dof > 0, the thin-lens camera                             chapter 13 (dof)
---   * node:csg(other, 'u'|'n'|'d'), e.g. cutting wheel arches   chapter 14 (csg)
---   * gr.cyllinder / gr.cone for the wheels and the lamps       chapter 15 (quadrics)
---   * the seed's car mesh from the web                          (a primitive car stands in)
--- Until then the wheels are squashed spheres and the car body is made of boxes.
+-- 7 (glossiness, scatter and dist: the epoxy floor and the translucent water), 8 (aa),
+-- 11 (ripples on the water: seed 001's objective 4, which it left undone), 13 (gr.render's
+-- 14th argument, {aperture, focalLength, dof}), 14 (node:csg cuts the wheel arches) and
+-- 15 (gr.cyllinder: wheels, hub caps and headlamps; gr.cone: the lamp shades). gr.cyllinder and
+-- gr.cone are seed 001's calls, so they too mark the scene as pre-2015 (rt says "era: pre-2015
+-- framework" on stderr).
+-- Chapters 9, 10 and 12 are not used: no meshes, textures or tone map in seed 001's report.
+-- Parts of the seed's scene that wait for later chapters: none (seed 001 named photon mapping,
+-- chapter 16, only as future work). The seed's car mesh from the web is not in raybook; a car of
+-- boxes, cylinders and CSG stands in.
 
 -- ---- Materials (seed 001's calls) ------------------------------------------------------------
 local white     = gr.phongMat({0.85, 0.85, 0.83}, {0.1, 0.1, 0.1}, 10, 0, 0)
@@ -35,7 +39,12 @@ local seat      = gr.phongMat({0.25, 0.18, 0.12}, {0.1, 0.1, 0.1}, 10, 0, 0)
 -- Tinted windows, clear headlamps, and water (mostly transparent, tinted blue-green).
 local tinted    = gr.transMat({0.05, 0.06, 0.08}, 1.5, 0.75, 0)
 local lampGlass = gr.transMat({0.9, 0.9, 0.8}, 1.5, 0.9, 0)
-local water     = gr.transMat({0.05, 0.25, 0.3}, 1.33, 0.8, 0)
+-- The water is translucent: its scatter blurs what is seen through it (chapter 7), and
+-- ripples from two drops tilt its surface (chapter 11, raybook's set_bump: seed 001 documented
+-- no bump call).
+local water     = gr.transMat({0.05, 0.25, 0.3}, 1.33, 0.8, 0.04)
+water:set_bump{pattern = 'ripples', strength = 0.004, wavelength = 0.04,
+               centres = {{0.2, 1, 0.8}, {0.85, 1, 0.2}}}
 
 local root = gr.node('root')
 
@@ -47,6 +56,17 @@ local function box(parent, name, lo, hi, material)
   b:set_material(material)
   parent:add_child(b)
   return b
+end
+
+--- A cylinder (seed 001's gr.cyllinder, chapter 15) with centre c, radius r and length len along z.
+local function wheel(parent, name, c, r, len, material)
+  local w = gr.cyllinder(name)
+  w:translate(c[1], c[2], c[3])
+  w:rotate('x', 90)
+  w:scale(r, len / 2, r)
+  w:set_material(material)
+  parent:add_child(w)
+  return w
 end
 
 --- An ellipsoid with centre c and radii r under `parent`.
@@ -81,7 +101,7 @@ end
 
 -- ---- The car (x: front to back, y: up, z: side to side) -------------------------------------
 local car = gr.node('car')
-box(car, 'body', {-2.0, 0.3, -0.9}, {2.0, 0.85, 0.9}, paint)
+local body = box(car, 'body', {-2.0, 0.3, -0.9}, {2.0, 0.85, 0.9}, paint)
 box(car, 'bonnet', {0.9, 0.85, -0.85}, {2.0, 0.95, 0.85}, paint)
 box(car, 'cabin', {-1.2, 0.85, -0.8}, {0.9, 1.38, 0.8}, tinted)
 box(car, 'roof', {-1.25, 1.38, -0.82}, {0.75, 1.48, 0.82}, paint)
@@ -89,15 +109,28 @@ box(car, 'front seat', {-0.3, 0.85, -0.6}, {0.2, 1.25, 0.6}, seat)
 box(car, 'back seat', {-1.15, 0.85, -0.6}, {-0.7, 1.2, 0.6}, seat)
 box(car, 'front bumper', {2.0, 0.3, -0.95}, {2.12, 0.48, 0.95}, chrome)
 box(car, 'rear bumper', {-2.12, 0.3, -0.95}, {-2.0, 0.48, 0.95}, chrome)
+-- Headlamps: short glass cylinders, whose caps refract (seed 001 showed them black).
 for _, z in ipairs({-0.6, 0.6}) do
-  ellipsoid(car, 'headlamp', {2.0, 0.68, z}, {0.06, 0.12, 0.18}, lampGlass)
+  local lamp = gr.cyllinder('headlamp')
+  lamp:translate(2.0, 0.68, z)
+  lamp:rotate('z', 90)
+  lamp:scale(0.13, 0.05, 0.13)
+  lamp:set_material(lampGlass)
+  car:add_child(lamp)
 end
 for _, x in ipairs({-1.3, 1.3}) do
   for _, side in ipairs({-1, 1}) do
-    ellipsoid(car, 'tyre', {x, 0.38, side * 0.9}, {0.38, 0.38, 0.16}, rubber)
-    ellipsoid(car, 'hub cap', {x, 0.38, side * 1.0}, {0.2, 0.2, 0.08}, chrome)
+    wheel(car, 'tyre', {x, 0.38, side * 0.9}, 0.38, 0.32, rubber)
+    wheel(car, 'hub cap', {x, 0.38, side * 1.0}, 0.2, 0.14, chrome)
   end
 end
+-- Wheel arches cut out of the body with seed 001's node:csg (chapter 14); operand B is a
+-- group of two ellipsoids, the hierarchy seed 001 could not take.
+local arches = gr.node('arches')
+for _, x in ipairs({-1.3, 1.3}) do
+  ellipsoid(arches, 'arch', {x, 0.38, 0}, {0.47, 0.47, 1.5}, paint)
+end
+body:csg(arches, 'd')
 car:translate(0, 0.2, -5)
 car:rotate('y', -35)
 root:add_child(car)
@@ -106,10 +139,19 @@ root:add_child(car)
 local panel = gr.light({0, 3.95, -5}, {0.85, 0.85, 0.8}, {1, 0, 0},
                        {4, 2}, {0, -1, 0}, {1, 0, 0})
 local fill  = gr.light({4, 3, 2}, {0.25, 0.25, 0.28}, {1, 0, 0})
+-- Two lamp shades under the ceiling: seed 001's gr.cone (chapter 15).
+for _, x in ipairs({-3.5, 3.5}) do
+  local shade = gr.cone('lamp shade')
+  shade:translate(x, 3.6, -5)
+  shade:scale(0.35, 0.25, 0.35)
+  shade:set_material(white)
+  root:add_child(shade)
+end
 
 -- aa = 1 (2 x 2 supersampling, chapter 8), ss = 3 (3 x 3 shadow rays per light), dist = 2 (2 x 2 glossy rays),
--- and the depth of field switched off (dof = 0; chapter 13).
+-- and the depth of field (chapter 13): a square aperture of side 0.1 focused at 7.7, the car's
+-- distance, with dof = 3 (3 x 3 lens samples, paired with the pixel's rays).
 gr.render(root, '001-garage.png', 320, 240,
           {4.2, 2.3, 1.2}, {-4.2, -1.7, -6.2}, {0, 1, 0}, 45,
           {0.3, 0.3, 0.3}, {panel, fill},
-          1, 3, 2, {0.05, 9, 0})
+          1, 3, 2, {0.1, 7.7, 3})

@@ -3,15 +3,17 @@
 --   gr.fancy_material(kd, ks, shininess, reflectivity, ior, transparency, glossiness)
 --   gr.ball_light(position, colour, falloff, radius)
 --   gr.obj_mesh(name, file)
--- The cup and the glasses' rims are surfaces of revolution, built here in Lua as triangle
--- meshes with gr.mesh's table form (vertices and 0-based faces).
+-- The cup and the glasses' rims are surfaces of revolution, built here in Lua as smooth
+-- triangle meshes with gr.smooth_mesh's table form (vertices and 0-based faces).
 --
--- Chapters used: 1-3 (A4 scene, meshes), 4 (reflectivity), 5 (ior, transparency),
--- 6 (gr.ball_light), 7 (glossiness), 8 (adaptive supersampling). Parts of the seed's scene that wait for later chapters:
---   * mat:set_texture_map('cup.png'), the cup's printed logo       chapter 10 (texture)
---   * mat:set_bump_map('ridges.png'), the cup's pressed ridges      chapter 11 (bump)
---   * smooth shading of the cup and rims (they look faceted)        chapter 9 (smooth_mesh)
---   * Reinhard tone mapping                                         chapter 12
+-- Chapters used: 1-3 (A4 scene, meshes), 4 (reflectivity), 5 (ior, transparency: the lenses),
+-- 6 (gr.ball_light), 7 (glossiness: the desk), 8 (adaptive supersampling), 9 (smooth shading of
+-- the cup, the rims and seed 002's obj_mesh rabbit), 10 (set_texture_map: the desk's wood;
+-- gr.texture: the sleeve's print), 11 (the cup's pressed ridges, a bump image), 12 (Reinhard's
+-- global tone map) and 15 (the sleeve is an open cone frustum).
+-- Chapters 13 and 14 are not used: seed 002 asked for neither depth of field nor CSG.
+-- Parts of the seed's scene that wait for later chapters: none (photon mapping and media were
+-- not among seed 002's objectives).
 
 -- ---- Materials (seed 002's gr.fancy_material) ----------------------------------------------
 --                            kd                   ks                 shin  refl  ior  transp gloss
@@ -27,10 +29,20 @@ local frame    = gr.fancy_material({0.12, 0.07, 0.04}, {0.5, 0.5, 0.5},    60, 0
 -- A glazed ceramic rabbit.
 local glaze    = gr.fancy_material({0.2, 0.35, 0.55},  {0.7, 0.7, 0.7},    90, 0.2,  1.0, 0,    0)
 
+-- The desk's wood (seed 002's set_texture_map, chapter 10); the sleeve's print (raybook's
+-- gr.texture, which can wrap an image round a cylinder); the cup's pressed ridges (chapter 11:
+-- seed 002's ridges.png, through raybook's set_bump so that it too wraps round, 16 x 3 times).
+desk:set_texture_map('../assets/textures/wood.jpg')
+band:set_texture(gr.texture{image = '../assets/textures/cup.png', mapping = 'cylindrical',
+                            scale = {-1, -0.5}, offset = {1, 0.5}, wrap = 'clamp'})
+paper:set_bump{pattern = 'image', file = '../assets/textures/ridges.png', strength = 0.004,
+               mapping = 'cylindrical', scale = {3, 1}}
+
 local root = gr.node('root')
 
 --- A surface of revolution about the y axis: `profile` is a list of {radius, height} points,
---- turned through `segments` steps. Returns a gr.mesh node.
+--- turned through `segments` steps. Returns a smooth mesh node (chapter 9): its normals are
+--- averaged across the faces within 60 degrees, so the wall is round and the rim's edges stay.
 local function lathe(name, profile, segments)
   local vertices, faces = {}, {}
   local n = #profile
@@ -46,7 +58,7 @@ local function lathe(name, profile, segments)
       faces[#faces + 1] = {i * n + k, i * n + k + 1, j * n + k + 1, j * n + k}
     end
   end
-  return gr.mesh(name, vertices, faces)
+  return gr.smooth_mesh(name, vertices, faces)
 end
 
 --- The profile of a ring (torus) of tube radius rho at distance R from the axis.
@@ -89,8 +101,14 @@ surface:scale(0.355, 0.004, 0.355)
 surface:translate(0, 0.943, 0)
 surface:set_material(coffee)
 cupNode:add_child(surface)
--- A printed band around the cup (a slightly larger cone section).
-local sleeve = lathe('sleeve', {{0.302, 0.25}, {0.337, 0.6}}, 48)
+-- A printed sleeve around the cup: an open cone frustum (chapter 15), the narrow end down,
+-- just outside the wall from height 0.25 to 0.6. The frustum's own y runs from 1 (bottom, after
+-- the half turn) to -1 (top), and the turn mirrors its angle: the texture's scale and offset turn
+-- both back, so the band reads left to right and upright.
+local sleeve = gr.cone{name = 'sleeve', top_radius = 0.302 / 0.337, open = true}
+sleeve:rotate('x', 180)
+sleeve:scale(0.337, 0.175, 0.337)
+sleeve:translate(0, 0.425, 0)
 sleeve:set_material(band)
 cupNode:add_child(sleeve)
 cupNode:translate(-0.7, 0, -0.6)
@@ -142,10 +160,14 @@ local bulb = gr.ball_light({-2.2, 2.6, 1.0}, {0.95, 0.88, 0.75}, {1, 0, 0.02}, 0
 local fill = gr.light({3, 3, 4}, {0.25, 0.27, 0.32}, {1, 0, 0})
 
 -- Keep it quick: few glossy directions and light samples.
-gr.option('glossy_samples', 4)
+gr.option('glossy_samples', 9)
 gr.option('light_samples', 3)
 -- Seed 002's objective 5, adaptive supersampling (chapter 8; the seed names no call for it).
 gr.antialias{sampler = 'adaptive'}
+-- Seed 002's objective 9, Reinhard's global tone map (chapter 12; the seed names no call). The
+-- colours were chosen for linear output, so the sRGB curve stays off (it washes them out); 0.7
+-- stops of exposure bring the desk and the cup to mid-grey and white.
+gr.tone_map{operator = 'global', srgb = false, exposure = 0.7}
 gr.render(root, '002-desk.png', 320, 240,
           {0.2, 2.2, 3.2}, {-0.2, -1.7, -3.6}, {0, 1, 0}, 38,
           {0.25, 0.25, 0.25}, {bulb, fill})

@@ -13,6 +13,8 @@ poster.png  96 x 64, a sunset: sky, sun, hills; for seed 000's plane.obj (its vt
 wood.jpg    128 x 64, horizontal planks with grain, a stand-in for seed 000's JapanWood.jpg.
 cup.png     128 x 32, a paper cup's printed band (red, a white wave, brown edges), for seed
             002's cup with mapping = 'cylindrical'.
+ridges.png  64 x 4, grey heights rising and falling 16 times across u (constant in v): seed
+            002's ridges.png, the pressed ridges of its paper cup, for a bump map.
 Pure Python (zlib) for PNG, so nothing but Debian's python3 and netpbm is needed.
 """
 import math
@@ -108,9 +110,15 @@ def cup(x, y, w=128, h=32):
     return (190, 30, 35)
 
 
+def ridges(x, y, w=64, n=16):
+    h = round(127.5 + 127.5 * math.cos(2 * math.pi * n * (x + 0.5) / w))
+    return (h, h, h)
+
+
 if __name__ == "__main__":
     write_png(HERE / "globe.png", 128, 64, globe)
     write_jpeg(HERE / "crate.jpg", 64, 64, crate)
     write_png(HERE / "poster.png", 96, 64, poster)
     write_jpeg(HERE / "wood.jpg", 128, 64, wood)
     write_png(HERE / "cup.png", 128, 32, cup)
+    write_png(HERE / "ridges.png", 64, 4, ridges)
