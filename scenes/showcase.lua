@@ -126,6 +126,8 @@ slab('left', -17, -0.2, -11, -16, 14, 17, wallM)
 slab('right', 16, -0.2, -11, 17, 14, 17, wallM)
 slab('ceiling', -20, 12, -11, 20, 13, 17, ceilM)
 
+-- Chapter 10: a painting between the two right-hand columns: seed 000's 2 x 2 quad, whose vt
+-- map the poster onto it, stood up against the back wall (2.7 x 1.8: the poster's 3 : 2).
 local painting = gr.mesh('painting', 'assets/textures/plane.obj')
 painting:rotate('x', 90)
 painting:scale(1.35, 0.9, 1)
