@@ -112,7 +112,7 @@ test-sanitize: deps
 	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
 
 demo: rt
-	./rt --features=all --spp 4 scenes/showcase.lua
+	./rt --features=all scenes/showcase.lua
 	@echo "demo image: $$(pwd)/showcase.png"
 
 docs: configure

@@ -1,29 +1,51 @@
--- rt-stats: [^0-9]3694 triangles
--- showcase.lua: every chapter in one picture, a small sculpture gallery.
---   1 ray casting     spheres and boxes seen through the pinhole camera
+-- rt-stats: [^0-9]3696 triangles
+-- showcase.lua: all fifteen chapters in one picture, a small sculpture gallery.
+--   1 ray casting     spheres and boxes
 --   2 Phong, shadows  Phong materials; instancing: 600 floor tiles made of two nodes, five
 --                     columns of one, a ring of twelve pearls of one sphere; a warm point lamp
 --                     on the right with hard shadows
 --   3 meshes, BVH     the Stanford bunny (3,674 triangles) loaded once and shown on four
---                     plinths; an icosahedron
+--                     plinths; an icosahedron; the painting's quad
 --   4 mirrors         a framed standing mirror that shows the gold bunny's other side and the
 --                     frosted ball, a chrome ball, a polished marble floor
 --   5 refraction      a glass globe filled with water that holds an air bubble (nested media:
 --                     the IOR stack), a glass icosahedron
 --   6 soft shadows    a large softbox panel high on the left: every shadow it casts is soft
---   7 glossy          a brushed-steel ball, a frosted-glass ball, a satin-gold bunny
+--   7 glossy          a steel ball, a frosted-glass ball, a satin-gold bunny
+--   8 antialiasing    jittered 5 x 5 rays a pixel (gr.antialias): smooth edges, and 25 paths
+--                     a pixel to average the soft shadows, glossy surfaces and lens
+--   9 smooth meshes   the bunnies are smooth (gr.smooth_mesh: normals computed from the
+--                     faces), not faceted
+--  10 textures        a painting on the back wall (poster.png on seed 000's plane.obj, by its
+--                     vt), wood grain on the mirror's frame and foot and the lens's post
+--  11 bump mapping    a hammered steel ball and a rough-hewn jade block (noise bumps)
+--  12 tone mapping    Reinhard's global operator (key 0.3, white at the brightest pixel)
+--                     brings the chrome and glass highlights back from clipping; the output
+--                     stays linear (srgb = false), as the colours were chosen for
+--  13 depth of field  a thin lens (disk aperture 0.12) focused 11 units away, on the middle
+--                     row: the gold bunny, the CSG pieces, the frosted ball; the balls in front
+--                     and the columns and painting behind are softly out of focus
+--  14 CSG             a jade block with a ball bitten out of its corner (a difference; the
+--                     bite keeps the porcelain of the ball that cut it) and a glass lens, the
+--                     intersection of two spheres, standing on edge on a post
+--  15 cylinders/cones the column shafts are capped cylinders; the lens's post a small one; a
+--                     glass paperweight is a cone frustum whose caps refract (seed 001's were
+--                     black)
 -- Glass casts full shadows (raybook's shadow rays are opaque), so nothing stands in the light
 -- of the softbox behind a glass object.
 --
--- Run:  make demo, which runs  ./rt --features=all --spp 4 scenes/showcase.lua  (writes
--- showcase.png): four random rays per pixel smooth the edges. The scene asks for no sampler of
--- its own, so docs/images/showcase.png stays that image; try --aa=adaptive or
--- --aa=jittered --spp 16 (chapter 8). Meshes are named relative to this file's folder.
--- The rt-stats line above is checked by tests/scenes/run_all.sh: 3,694 unique triangles (the
--- bunny's 3,674 once, however often it is shown, and the icosahedron's 20).
+-- Run:  make demo, which runs  ./rt --features=all scenes/showcase.lua  (writes showcase.png,
+-- the README's docs/images/showcase.png). The scene sets its own sampler, lens and tone map;
+-- --features=all,-dof (or -tone_map, -bump, ...) shows the picture without one chapter.
+-- Meshes and images are named relative to this file's folder.
+-- The rt-stats line above is checked by tests/scenes/run_all.sh: 3,696 unique triangles (the
+-- bunny's 3,674 once, however often it is shown, the icosahedron's 20 and the painting's 2).
 gr.option('max_depth', 6)
-gr.option('light_samples', 4)   -- 4 x 4 points on each area light
-gr.option('glossy_samples', 16)
+gr.option('light_samples', 2)   -- 2 x 2 points on each area light, per camera ray
+gr.option('glossy_samples', 4)  -- per camera ray: 25 rays a pixel make 100 of each
+gr.antialias{sampler = 'jittered', samples = 25}          -- chapter 8
+gr.lens{aperture = 0.12, focus = 11.0, samples = 25}      -- chapter 13
+gr.tone_map{operator = 'global', key = 0.3, srgb = false} -- chapter 12
 
 local marbleA = gr.material{kd = {0.76, 0.72, 0.64}, ks = {0.3, 0.3, 0.3},
                             shininess = 80, reflect = 0.12}
@@ -56,6 +78,15 @@ local steel   = gr.material{kd = {0.08, 0.08, 0.10}, ks = {0.6, 0.6, 0.6}, shini
                             reflect = 0.7, glossiness = 0.25}
 local frosted = gr.material{kd = {0.10, 0.16, 0.24}, ks = {0.5, 0.5, 0.5}, shininess = 80,
                             ior = 1.5, transparency = 0.85, glossiness = 0.08}
+
+-- Chapter 10: wood grain, and a painting on the wall.
+wood:set_texture(gr.texture{image = 'assets/textures/wood.jpg'})
+local canvas = gr.material{kd = {0.8, 0.8, 0.8}, ks = {0, 0, 0}, shininess = 1}
+canvas:set_texture('kd', 'assets/textures/poster.png')
+-- Chapter 11: a hammered steel ball and a rough-hewn jade block.
+steel:set_bump{pattern = 'noise', strength = 0.01, scale = 0.3, octaves = 2, seed = 7}
+local carved = gr.material{kd = {0.20, 0.58, 0.40}, ks = {0.5, 0.6, 0.5}, shininess = 70}
+carved:set_bump{pattern = 'noise', strength = 0.04, scale = 0.15, octaves = 2, seed = 3}
 
 local scene = gr.node('gallery')
 
@@ -95,14 +126,23 @@ slab('left', -17, -0.2, -11, -16, 14, 17, wallM)
 slab('right', 16, -0.2, -11, 17, 14, 17, wallM)
 slab('ceiling', -20, 12, -11, 20, 13, 17, ceilM)
 
+-- Chapter 10: a painting between the two right-hand columns: seed 000's 2 x 2 quad, whose vt
+-- map the poster onto it, stood up against the back wall (2.7 x 1.8: the poster's 3 : 2).
+local painting = gr.mesh('painting', 'assets/textures/plane.obj')
+painting:rotate('x', 90)
+painting:scale(1.35, 0.9, 1)
+painting:translate(1.95, 3.6, -9.98)
+painting:set_material(canvas)
+scene:add_child(painting)
+
 -- A colonnade along the back wall: one column (base, ellipsoid shaft, capital), five times.
 local col = gr.node('column')
 local cbase = gr.nh_box('cbase', {-0.45, 0, -0.45}, 0.9)
 cbase:set_material(column)
 col:add_child(cbase)
-local shaft = gr.sphere('shaft')
-shaft:scale(0.32, 2.6, 0.32)
-shaft:translate(0, 3.1, 0)
+local shaft = gr.cylinder('shaft')   -- chapter 15: a real cylinder, base to capital
+shaft:scale(0.32, 2.3, 0.32)
+shaft:translate(0, 3.2, 0)
 shaft:set_material(column)
 col:add_child(shaft)
 local capital = gr.cube('capital')
@@ -119,7 +159,7 @@ end
 slab('beam', -7.5, 5.85, -8.1, 7.5, 6.35, -6.9, column)
 
 -- The bunny (about 9.7 tall, feet at y = 0), loaded once, shown on four plinths.
-local bunny = gr.mesh('bunny', 'assets/bunny.obj')
+local bunny = gr.smooth_mesh('bunny', 'assets/bunny.obj')
 local function exhibit(name, x, z, height, size, turn, material)
   local w = 8 * size
   slab(name .. '-plinth', x - w / 2, 0, z - w / 2, x + w / 2, height, z + w / 2, stone)
@@ -166,6 +206,36 @@ scene:add_child(inner)
 local bubble = gr.nh_sphere('bubble', {3.85, 1.85, -0.55}, 0.3)
 bubble:set_material(air)
 scene:add_child(bubble)
+
+-- Chapter 14: a jade block with a ball bitten out of its top corner (the bite is porcelain),
+-- and a glass lens, the intersection of two spheres, standing on edge on a small post.
+local block = gr.cube('csg-block')
+block:set_material(carved)
+local bite = gr.nh_sphere('csg-bite', {1, 1, 1}, 0.75)
+bite:set_material(porcel)
+local bitten = gr.difference(block, bite, 'bitten block')
+bitten:scale(0.7, 0.7, 0.7)
+bitten:rotate('y', -50)
+bitten:translate(2.6, 0, 1.2)
+scene:add_child(bitten)
+local lens = gr.intersection(gr.nh_sphere('lens-a', {0, 0, 0.8}, 1),
+                             gr.nh_sphere('lens-b', {0, 0, -0.8}, 1), 'lens')
+lens:set_material(glass)
+lens:scale(0.9, 0.9, 0.9)
+lens:rotate('y', -50)
+lens:translate(-0.9, 0.74, 0.6)
+scene:add_child(lens)
+local post = gr.cylinder('lens post')
+post:scale(0.06, 0.1, 0.06)
+post:translate(-0.9, 0.1, 0.6)
+post:set_material(wood)
+scene:add_child(post)
+-- Chapter 15: a glass paperweight, a cone frustum whose caps refract.
+local weight = gr.cone{name = 'paperweight', top_radius = 0.6}
+weight:scale(0.45, 0.3, 0.45)
+weight:translate(-1.4, 0.3, 3.2)
+weight:set_material(glass)
+scene:add_child(weight)
 
 -- In front: a chrome ball, a brushed-steel ball and a glass icosahedron; round the centre
 -- plinth, a ring of small porcelain pearls (one sphere, twelve instances).

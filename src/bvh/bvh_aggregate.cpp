@@ -38,12 +38,13 @@ bool BVHAggregate::occluded(const Ray& ray, double tMax) const {
 }
 
 std::string BVHAggregate::statistics() const {
-    // Count each mesh once, however many instances share it.
+    // Count each mesh once, however many instances share it (a smooth mesh counts the
+    // faceted mesh it wraps).
     size_t nodes = bvh_.nodes().size(), bytes = bvh_.nodeBytes() + bvh_.wideNodeBytes();
     size_t triangles = 0, triangleBytes = 0, meshBvhBytes = 0;
     std::vector<const Mesh*> seen;
     for (const Instance* i : ordered_)
-        if (auto* mesh = dynamic_cast<const Mesh*>(i->shape))
+        if (const Mesh* mesh = i->shape->triangleMesh())
             if (std::find(seen.begin(), seen.end(), mesh) == seen.end()) {
                 seen.push_back(mesh);
                 nodes += mesh->bvh().nodes().size();

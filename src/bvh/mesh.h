@@ -29,6 +29,7 @@ class Mesh final : public Shape {
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
     AABB bounds() const override { return bounds_; }
+    const Mesh* triangleMesh() const override { return this; }
 
     /// Number of triangles kept.
     size_t triangleCount() const { return triangles_.size(); }

@@ -9,6 +9,8 @@
 
 namespace rb {
 
+class Mesh;
+
 /// Geometry in object space. Chapters add kinds (mesh, CSG, cylinder, cone) by deriving.
 class Shape {
   public:
@@ -28,6 +30,9 @@ class Shape {
     /// The feature (chapter module) that provides this kind of shape, or null for the core's.
     /// When that feature is switched off, the scene's instances of the shape are not drawn.
     virtual const char* feature() const { return nullptr; }
+    /// The triangle mesh this shape intersects (itself, or the one it wraps), for --stats;
+    /// null for the other shapes.
+    virtual const Mesh* triangleMesh() const { return nullptr; }
 };
 
 }  // namespace rb

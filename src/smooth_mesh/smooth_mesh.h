@@ -66,6 +66,7 @@ class SmoothMesh final : public Shape {
     }
     bool occluded(const Ray& ray, double tMax) const override { return mesh_->occluded(ray, tMax); }
     AABB bounds() const override { return mesh_->bounds(); }
+    const Mesh* triangleMesh() const override { return mesh_.get(); }
 
     /// The faceted mesh underneath.
     const Mesh& mesh() const { return *mesh_; }
