@@ -45,7 +45,7 @@ using rbtest::smoothMesh;
 }  // namespace
 
 // [interpolation-exact]
-SCENARIO("the interpolated normal is exact at the corners and linear in between", "[ch09]") {
+SCENARIO("the interpolated normal is exact at the corners and linear in between", "[ch09][ex9.1][ex9.3][ex9.4]") {
     GIVEN("a triangle whose corners carry three different unit normals") {
         const std::array<Vec3, 3> v = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 3, 0)};
         const std::array<Vec3, 3> n = {glm::normalize(Vec3(0.3, 0, 1)),
@@ -106,7 +106,7 @@ SCENARIO("the interpolated normal is exact at the corners and linear in between"
 // [interpolation-exact]
 
 // [cube-corner]
-SCENARIO("angle weighting makes a vertex normal independent of the triangulation", "[ch09]") {
+SCENARIO("angle weighting makes a vertex normal independent of the triangulation", "[ch09][ex9.2]") {
     GIVEN(
         "the unit cube as 12 triangles, split so that corner (1,0,0) touches one face's "
         "two triangles and one triangle of each other face") {
@@ -166,7 +166,7 @@ SCENARIO("angle weighting makes a vertex normal independent of the triangulation
 
 // [sphere-convergence]
 SCENARIO("a tessellated sphere's shading normals converge to the sphere's at second order",
-         "[ch09]") {
+         "[ch09][ex9.1][ex9.3][ex9.4]") {
     GIVEN("icospheres of 80 to 5,120 triangles (edge length h halves at each level)") {
         // Expected rates. A flat facet's normal is off by up to half the angle between
         // neighbours, O(h): the error halves when h halves (order 1). Exact `vn` interpolated
@@ -204,7 +204,7 @@ SCENARIO("a tessellated sphere's shading normals converge to the sphere's at sec
 
 // [mirror-above]
 SCENARIO("a shading normal never sends a mirror or refracted ray through the geometric surface",
-         "[ch09]") {
+         "[ch09][ex9.4]") {
     GIVEN("random views of a surface whose shading normal leans up to 60° off the geometric one") {
         rbtest::Rng rng(kSeed);
         const Vec3 ng(0, 0, 1);
@@ -247,7 +247,7 @@ SCENARIO("a shading normal never sends a mirror or refracted ray through the geo
 
 // [terminator]
 SCENARIO("shadow rays from the curved surface are not blocked at a low-poly sphere's terminator",
-         "[ch09]") {
+         "[ch09][ex9.1][ex9.3][ex9.4]") {
     GIVEN("the 80-triangle icosphere with exact normals, lit from far along +x") {
         const auto mesh = smoothMesh(icosphere(1, true));
         const rb::Instance instance = rbtest::makeInstance(*mesh, rb::Mat4(1.0));
@@ -320,7 +320,7 @@ SCENARIO("shadow rays from the curved surface are not blocked at a low-poly sphe
 }
 // [terminator]
 
-SCENARIO("with the chapter switched off a smooth mesh renders as the faceted mesh", "[ch09]") {
+SCENARIO("with the chapter switched off a smooth mesh renders as the faceted mesh", "[ch09][ex9.1][ex9.3][ex9.4]") {
     GIVEN("the icosphere as gr.mesh and as gr.smooth_mesh, lit from the side") {
         const std::string asset = std::string(RB_SOURCE_DIR) + "/scenes/assets/icosphere80.obj";
         auto scene = [&](const std::string& call) {
@@ -355,7 +355,7 @@ SCENARIO("with the chapter switched off a smooth mesh renders as the faceted mes
     }
 }
 
-SCENARIO("gr.smooth_mesh checks its options", "[ch09]") {
+SCENARIO("gr.smooth_mesh checks its options", "[ch09][ex9.2]") {
     const std::string asset = std::string(RB_SOURCE_DIR) + "/scenes/assets/cube.obj";
     auto call = [&](const std::string& options) {
         return "root = gr.node('root')\nroot:add_child(gr.smooth_mesh('c', '" + asset + "'" +
@@ -414,7 +414,7 @@ SCENARIO("gr.smooth_mesh checks its options", "[ch09]") {
 
 // [ch09-stability]
 SCENARIO("degenerate triangles and zero-length or cancelling normals give no NaN",
-         "[ch09][stability]") {
+         "[ch09][stability][ex9.1][ex9.3][ex9.4]") {
     GIVEN("an OBJ with a zero-area triangle, a zero-length vn and a vn with no direction") {
         rbtest::TempDir dir;
         const std::string obj =

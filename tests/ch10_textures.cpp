@@ -90,7 +90,7 @@ std::string loadImageError(const std::string& path, const rb::MemoryBudget& budg
 // ---- UV mapping -----------------------------------------------------------------------------
 
 // [ch10-sphere-uv]
-SCENARIO("the sphere's (u, v) is (φ/2π, θ/π) at points whose angles are known", "[ch10]") {
+SCENARIO("the sphere's (u, v) is (φ/2π, θ/π) at points whose angles are known", "[ch10][ex10.1]") {
     GIVEN("points on the unit sphere at known longitude φ and angle θ from the south pole") {
         // Source: φ measured about +y from +x towards −z, θ from −y (uv_mapping.h).
         struct Case {
@@ -134,7 +134,7 @@ SCENARIO("the sphere's (u, v) is (φ/2π, θ/π) at points whose angles are know
 }
 // [ch10-sphere-uv]
 
-SCENARIO("dp/du and dp/dv are the derivatives of the surface along its (u, v)", "[ch10]") {
+SCENARIO("dp/du and dp/dv are the derivatives of the surface along its (u, v)", "[ch10][ex10.1]") {
     GIVEN("a point on the sphere away from the poles") {
         const Vec3 d = glm::normalize(Vec3(0.3, -0.4, 0.8));
         const rb::SurfaceUV s = rb::sphereUV(d);
@@ -226,7 +226,7 @@ SCENARIO("the cylindrical mapping is the longitude about y and the height", "[ch
 }
 
 // [ch10-mesh-uv]
-SCENARIO("a mesh's (u, v) is its corners' vt blended by barycentrics", "[ch10]") {
+SCENARIO("a mesh's (u, v) is its corners' vt blended by barycentrics", "[ch10][ex10.2]") {
     GIVEN("seed 000's plane.obj: a quad on y = 0 with vt at its corners") {
         // Source: seed 000, section 3.1 (the file as the report prints it).
         std::istringstream obj(
@@ -279,7 +279,7 @@ SCENARIO("a mesh's (u, v) is its corners' vt blended by barycentrics", "[ch10]")
 // ---- Lookup ---------------------------------------------------------------------------------
 
 // [ch10-bilinear]
-SCENARIO("bilinear filtering is exact on a linear ramp", "[ch10]") {
+SCENARIO("bilinear filtering is exact on a linear ramp", "[ch10][ex10.4]") {
     GIVEN(
         "a 7 × 5 image whose texels sample the ramp f(s, t) = 0.1 + 0.6 s + 0.3 t at their "
         "centres") {
@@ -318,7 +318,7 @@ SCENARIO("bilinear filtering is exact on a linear ramp", "[ch10]") {
 // [ch10-bilinear]
 
 // [ch10-seam]
-SCENARIO("a repeating texture has no seam: u = 0 and u = 1 agree", "[ch10]") {
+SCENARIO("a repeating texture has no seam: u = 0 and u = 1 agree", "[ch10][ex10.4]") {
     GIVEN("an image of random texels") {
         rbtest::Rng rng(rbtest::seedFromEnv("RB_CH10_SEED"));
         const auto image =
@@ -363,7 +363,7 @@ SCENARIO("a repeating texture has no seam: u = 0 and u = 1 agree", "[ch10]") {
 // [ch10-seam]
 
 // [ch10-srgb]
-SCENARIO("8-bit sRGB levels decode to linear light and encode back to themselves", "[ch10]") {
+SCENARIO("8-bit sRGB levels decode to linear light and encode back to themselves", "[ch10][ex10.3]") {
     GIVEN("the decode and encode of IEC 61966-2-1") {
         THEN("mid-grey 0.5 is 21.4% linear, and the two pieces meet at the knee") {
             // Source: ((0.5 + 0.055) / 1.055)^2.4 = 0.214041140482232 (hand computation).
@@ -404,7 +404,7 @@ SCENARIO("8-bit sRGB levels decode to linear light and encode back to themselves
 // [ch10-srgb]
 
 // [ch10-checker]
-SCENARIO("the checker alternates unit squares of texture space", "[ch10]") {
+SCENARIO("the checker alternates unit squares of texture space", "[ch10][ex10.5]") {
     GIVEN("a white and black checker tiled 8 × 8 over a face") {
         rb::CheckerTexture checker(Colour(1.0), Colour(0.0));
         THEN("squares whose corners' sum ⌊s⌋ + ⌊t⌋ is even are white, odd are black") {
@@ -432,7 +432,7 @@ SCENARIO("the checker alternates unit squares of texture space", "[ch10]") {
 // ---- Images ---------------------------------------------------------------------------------
 
 SCENARIO("missing, truncated, corrupt, empty or absurdly large images fail with their name",
-         "[ch10]") {
+         "[ch10][ex10.3]") {
     rbtest::TempDir dir;
     const std::string good = writePng(dir, "good.png", 32, 32, [](int x, int y) {
         return std::array<int, 3>{x * 8, y * 8, (x * y) % 256};
@@ -503,7 +503,7 @@ SCENARIO("missing, truncated, corrupt, empty or absurdly large images fail with 
     }
 }
 
-SCENARIO("each image file is loaded once and shared, found where meshes are found", "[ch10]") {
+SCENARIO("each image file is loaded once and shared, found where meshes are found", "[ch10][ex10.3]") {
     rbtest::TempDir dir;
     std::filesystem::create_directories(dir.path() / "maps");
     writePng(dir, "maps/wood.png", 4, 4, [](int x, int) {
@@ -643,7 +643,7 @@ std::string twoObjectScene(const std::string& sphereExtra, const std::string& fl
 }  // namespace
 
 SCENARIO("textures change the picture only when the feature is on and a scene uses them",
-         "[ch10]") {
+         "[ch10][ex10.5]") {
     const std::string plain = twoObjectScene("", "");
     const std::string textured = twoObjectScene(
         "",
@@ -683,7 +683,7 @@ SCENARIO("textures change the picture only when the feature is on and a scene us
     }
 }
 
-SCENARIO("a one-colour image texture shades exactly like its decoded colour as kd", "[ch10]") {
+SCENARIO("a one-colour image texture shades exactly like its decoded colour as kd", "[ch10][ex10.4]") {
     GIVEN("a 3 × 2 PNG filled with the sRGB level (200, 120, 40), on the sphere") {
         rbtest::TempDir dir;
         writePng(dir, "flat.png", 3, 2, [](int, int) { return std::array<int, 3>{200, 120, 40}; });
@@ -719,7 +719,7 @@ SCENARIO("a one-colour image texture shades exactly like its decoded colour as k
 
 // ---- Stability ------------------------------------------------------------------------------
 
-SCENARIO("texture lookups stay finite where the mapping degenerates", "[ch10][stability]") {
+SCENARIO("texture lookups stay finite where the mapping degenerates", "[ch10][stability][ex10.5]") {
     GIVEN("the sphere's poles, where φ is undefined") {
         THEN("(u, v) and the derivatives are finite") {
             for (const Vec3 d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 1, -0.0)}) {

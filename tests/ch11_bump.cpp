@@ -85,7 +85,7 @@ std::string writeRampPng(const rbtest::TempDir& dir) {
 }  // namespace
 
 // [ch11-ramp]
-SCENARIO("a planar height ramp tilts the normal by atan(slope)", "[ch11]") {
+SCENARIO("a planar height ramp tilts the normal by atan(slope)", "[ch11][ex11.1][ex11.2][ex11.4]") {
     GIVEN("the top face (y = 1) of the unit cube, with the ramp h = s·x at strength a") {
         rb::Box box;
         for (const double s : {0.1, 0.5, 1.0, 3.0, 20.0})
@@ -138,7 +138,7 @@ SCENARIO("a planar height ramp tilts the normal by atan(slope)", "[ch11]") {
 // [ch11-ramp]
 
 // [ch11-lit-ramp]
-SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11]") {
+SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11][ex11.1][ex11.2][ex11.4]") {
     GIVEN(
         "a white floor stretched 10 × in x and z, a ramp of slope s in object space, a light "
         "straight above the point the camera sees") {
@@ -175,7 +175,7 @@ SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11]")
 // [ch11-lit-ramp]
 
 // [ch11-zero]
-SCENARIO("a zero bump leaves every normal unchanged", "[ch11]") {
+SCENARIO("a zero bump leaves every normal unchanged", "[ch11][ex11.1][ex11.2][ex11.4]") {
     GIVEN("a stretched, turned sphere with ripples and with noise") {
         rb::Sphere sphere;
         rbtest::Rng rng(11);
@@ -224,7 +224,7 @@ SCENARIO("a zero bump leaves every normal unchanged", "[ch11]") {
 // [ch11-zero]
 
 // [ch11-facing]
-SCENARIO("the bumped normal never faces away from the viewer, at any strength", "[ch11]") {
+SCENARIO("the bumped normal never faces away from the viewer, at any strength", "[ch11][ex11.1][ex11.2][ex11.4]") {
     GIVEN("a sphere and a box, with ripples and noise, seen from random points outside") {
         rb::Sphere sphere;
         rb::Box box;
@@ -273,7 +273,7 @@ SCENARIO("the bumped normal never faces away from the viewer, at any strength", 
 // [ch11-facing]
 
 // [ch11-gradient]
-SCENARIO("the numerical gradient converges to the exact one as the step squared", "[ch11]") {
+SCENARIO("the numerical gradient converges to the exact one as the step squared", "[ch11][ex11.1][ex11.3]") {
     GIVEN("ripples of wavelength 0.2 around two centres, and 100 points on the plane y = 0.5") {
         const double lambda = 0.2;
         const rb::RippleHeight ripples({Vec3(0.1, 0.0, 0.2), Vec3(-0.6, 0.1, 0.4)}, lambda);
@@ -315,7 +315,7 @@ SCENARIO("the numerical gradient converges to the exact one as the step squared"
 // [ch11-gradient]
 
 // [ch11-ripples]
-SCENARIO("ripples tilt the normal of a flat pond by their exact slope", "[ch11]") {
+SCENARIO("ripples tilt the normal of a flat pond by their exact slope", "[ch11][ex11.1][ex11.2][ex11.4]") {
     GIVEN("a pond: the unit cube's top face with ripples around (0.5, 1, 0.5)") {
         rb::Box box;
         const double lambda = 0.1, a = 0.02;
@@ -391,7 +391,7 @@ SCENARIO("gradient noise is zero on the lattice, bounded and smooth", "[ch11]") 
 
 // [ch11-stability]
 SCENARIO("a strength that would flip the normal is held on the viewer's side",
-         "[ch11][stability]") {
+         "[ch11][stability][ex11.1][ex11.2][ex11.4]") {
     GIVEN("a ramp of slope 1 on the unit cube's top face, seen at 60° from the normal") {
         rb::Box box;
         const rb::Instance cube = rbtest::makeInstance(box, rb::Mat4(1.0));
@@ -454,7 +454,7 @@ SCENARIO("a strength that would flip the normal is held on the viewer's side",
 // [ch11-stability]
 
 // [ch11-lua]
-SCENARIO("material:set_bump reads raybook's bump table, and refuses what it cannot use", "[ch11]") {
+SCENARIO("material:set_bump reads raybook's bump table, and refuses what it cannot use", "[ch11][ex11.3]") {
     GIVEN("materials with each pattern") {
         const auto bumpOf = [](const std::string& call) {
             const rb::Material m = rbtest::materialOf(
@@ -520,7 +520,7 @@ SCENARIO("material:set_bump reads raybook's bump table, and refuses what it cann
 // [ch11-lua]
 
 // [ch11-costs-nothing]
-SCENARIO("without bumps, or with the feature off, the chapter changes nothing", "[ch11]") {
+SCENARIO("without bumps, or with the feature off, the chapter changes nothing", "[ch11][ex11.1][ex11.2][ex11.4]") {
     const std::string body =
         "root = gr.node('root')\n"
         "local b = gr.nh_sphere('b', {0, 0, -3}, 1)\n"
@@ -569,7 +569,7 @@ SCENARIO("without bumps, or with the feature off, the chapter changes nothing", 
 // [ch11-costs-nothing]
 
 // [ch11-height-map]
-SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11]") {
+SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11][ex11.2][ex11.4]") {
     rbtest::TempDir dir;
     const std::string ramp = writeRampPng(dir);
     const auto heights = std::make_shared<rb::HeightImage>(*rb::loadTextureImage(ramp));
@@ -720,7 +720,7 @@ SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11
 
 // [ch11-height-map-stability]
 SCENARIO("a height map steep enough to flip the normal is held on the viewer's side",
-         "[ch11][stability]") {
+         "[ch11][stability][ex11.2][ex11.4]") {
     rbtest::TempDir dir;
     const auto heights =
         std::make_shared<rb::HeightImage>(*rb::loadTextureImage(writeRampPng(dir)));

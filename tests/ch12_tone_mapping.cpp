@@ -87,7 +87,7 @@ std::unique_ptr<rb::World> world(const std::string& lua,
 // ---- The global operator ----------------------------------------------------------------------
 
 // [ch12-global-limits]
-SCENARIO("L / (1 + L) keeps dark values, halves L = 1 and never reaches white", "[ch12]") {
+SCENARIO("L / (1 + L) keeps dark values, halves L = 1 and never reaches white", "[ch12][ex12.1]") {
     const double inf = std::numeric_limits<double>::infinity();
     GIVEN("the global operator without L_white (L_white = infinity)") {
         THEN("0 stays 0 and small values pass almost unchanged (the slope at 0 is 1)") {
@@ -113,7 +113,7 @@ SCENARIO("L / (1 + L) keeps dark values, halves L = 1 and never reaches white", 
 // [ch12-global-limits]
 
 // [ch12-white]
-SCENARIO("L_white maps to exactly 1, and only what is brighter burns out", "[ch12]") {
+SCENARIO("L_white maps to exactly 1, and only what is brighter burns out", "[ch12][ex12.1]") {
     for (const double Lwhite : {0.5, 1.0, 2.0, 10.0, 1000.0}) {
         GIVEN("L_white = " + std::to_string(Lwhite)) {
             THEN("L_white itself becomes 1, below it less, above it more") {
@@ -144,7 +144,7 @@ SCENARIO("L_white maps to exactly 1, and only what is brighter burns out", "[ch1
 // ---- The key --------------------------------------------------------------------------------
 
 // [ch12-key]
-SCENARIO("the log-average luminance is the geometric mean, as worked out by hand", "[ch12]") {
+SCENARIO("the log-average luminance is the geometric mean, as worked out by hand", "[ch12][ex12.2]") {
     GIVEN("four luminances 1, 2, 4 and 8") {
         const std::vector<double> Lw = {1.0, 2.0, 4.0, 8.0};
         THEN("with δ = 0 it is (1 · 2 · 4 · 8)^(1/4) = 64^(1/4) = 2√2") {
@@ -174,7 +174,7 @@ SCENARIO("the log-average luminance is the geometric mean, as worked out by hand
 }
 // [ch12-key]
 
-SCENARIO("the key makes the picture independent of how bright the film is", "[ch12]") {
+SCENARIO("the key makes the picture independent of how bright the film is", "[ch12][ex12.3]") {
     GIVEN("a film from 1 to 8000 and the same film 16 times brighter") {
         std::vector<double> values;
         for (int i = 0; i < 40; ++i) values.push_back(std::pow(10.0, i / 10.0));
@@ -228,7 +228,7 @@ SCENARIO("exposure alone multiplies the film by 2^EV, then clips", "[ch12]") {
 // ---- sRGB -----------------------------------------------------------------------------------
 
 // [ch12-srgb]
-SCENARIO("sRGB encoding follows the standard's two pieces, joined at 0.0031308", "[ch12]") {
+SCENARIO("sRGB encoding follows the standard's two pieces, joined at 0.0031308", "[ch12][ex12.4]") {
     THEN("black and white stay, and linear 0.5 becomes 0.7354") {
         // Source: IEC 61966-2-1: 1.055 · 0.5^(1/2.4) − 0.055 = 0.735356983.
         CHECK(rb::srgbEncode(0.0) == 0.0);
@@ -260,7 +260,7 @@ SCENARIO("sRGB encoding follows the standard's two pieces, joined at 0.0031308",
 
 // [ch12-local-flat]
 SCENARIO("on a flat image the local operator chooses the largest scale and equals L / (1 + L)",
-         "[ch12]") {
+         "[ch12][ex12.3]") {
     GIVEN("a 40 × 30 image of constant scaled luminance L = 3") {
         const std::vector<double> L(40 * 30, 3.0);
         rb::LocalOperatorSettings s;
@@ -282,7 +282,7 @@ SCENARIO("on a flat image the local operator chooses the largest scale and equal
 // [ch12-local-flat]
 
 // [ch12-local-edge]
-SCENARIO("the local operator stops growing a pixel's neighbourhood at an edge", "[ch12]") {
+SCENARIO("the local operator stops growing a pixel's neighbourhood at an edge", "[ch12][ex12.3]") {
     GIVEN("a 128 × 8 image, scaled luminance 0.05 left of x = 64 and 20 right of it") {
         const int w = 128, h = 8;
         std::vector<double> L(w * h);
@@ -312,7 +312,7 @@ SCENARIO("the local operator stops growing a pixel's neighbourhood at an edge", 
 
 // [ch12-local-detail]
 SCENARIO("the local operator keeps detail in a bright region that the global one flattens",
-         "[ch12]") {
+         "[ch12][ex12.3]") {
     GIVEN(
         "a film that is dim (0.02) on the left and bright (200) on the right, with stripes "
         "of ±20% in both halves") {
@@ -398,7 +398,7 @@ SCENARIO("the .hdr file holds the film's radiance to RGBE precision", "[ch12]") 
 // ---- Stability ------------------------------------------------------------------------------
 
 // [ch12-stability]
-SCENARIO("a black film tone maps to black, with no NaN", "[ch12][stability]") {
+SCENARIO("a black film tone maps to black, with no NaN", "[ch12][stability][ex12.4]") {
     for (const auto op :
          {rb::ToneOperator::None, rb::ToneOperator::Global, rb::ToneOperator::Local}) {
         GIVEN(std::string("a 16 × 12 black film and the ") +
@@ -415,7 +415,7 @@ SCENARIO("a black film tone maps to black, with no NaN", "[ch12][stability]") {
     }
 }
 
-SCENARIO("one bright pixel in a black film does not break the key", "[ch12][stability]") {
+SCENARIO("one bright pixel in a black film does not break the key", "[ch12][stability][ex12.3]") {
     for (const double bright : {1.0, 1e6, static_cast<double>(FLT_MAX)}) {
         for (const auto op : {rb::ToneOperator::Global, rb::ToneOperator::Local}) {
             GIVEN("a 16 × 12 black film with one pixel of " + std::to_string(bright) + ", " +
@@ -438,7 +438,7 @@ SCENARIO("one bright pixel in a black film does not break the key", "[ch12][stab
 }
 
 SCENARIO("NaN, infinite and negative pixels in the film come out black, the rest unharmed",
-         "[ch12][stability]") {
+         "[ch12][stability][ex12.3]") {
     for (const auto op :
          {rb::ToneOperator::None, rb::ToneOperator::Global, rb::ToneOperator::Local}) {
         GIVEN(std::string("a grey film with three broken pixels, ") +
@@ -460,7 +460,7 @@ SCENARIO("NaN, infinite and negative pixels in the film come out black, the rest
     }
 }
 
-SCENARIO("a one-pixel film and extreme keys stay displayable", "[ch12][stability]") {
+SCENARIO("a one-pixel film and extreme keys stay displayable", "[ch12][stability][ex12.3]") {
     for (const double key : {1e-6, 0.18, 100.0}) {
         for (const auto op : {rb::ToneOperator::Global, rb::ToneOperator::Local}) {
             GIVEN("key " + std::to_string(key) + ", " +
@@ -564,7 +564,7 @@ SCENARIO("the tone map is asked for by the scene or the command line, and only t
 // [ch12-settings]
 
 // [ch12-costs-nothing]
-SCENARIO("a scene that asks for no tone map is written exactly as in a chapter-8 build", "[ch12]") {
+SCENARIO("a scene that asks for no tone map is written exactly as in a chapter-8 build", "[ch12][ex12.4]") {
     GIVEN("the ball scene in a chapter-8 build and in a chapter-12 build with everything on") {
         const auto eight = rbtest::worldFromLua(kBall, rbtest::chapters(8));
         const auto twelve = world(kBall);

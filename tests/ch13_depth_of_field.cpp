@@ -169,7 +169,7 @@ const rb::ThinLens* installed(const rb::World& w) {
 
 // [ch13-focal-plane]
 SCENARIO("every lens sample through one image position meets the others on the focal plane",
-         "[ch13]") {
+         "[ch13][ex13.1][ex13.2][ex13.3]") {
     GIVEN("a tilted camera and thin lenses focused at 7 units, a disk and a square") {
         const rb::PinholeCamera camera = tiltedCamera();
         WHEN("64 stratified lens samples go through each of several image positions") {
@@ -208,7 +208,7 @@ SCENARIO("every lens sample through one image position meets the others on the f
 // [ch13-focal-plane]
 
 // [ch13-blur-circle]
-SCENARIO("the rays through one image position spread over the thin-lens blur circle", "[ch13]") {
+SCENARIO("the rays through one image position spread over the thin-lens blur circle", "[ch13][ex13.1][ex13.2][ex13.3]") {
     GIVEN("a lens of aperture A = 0.5 focused at S1 = 8, and points at S2 = 3, 5, 12, 40") {
         const rb::PinholeCamera camera = tiltedCamera();
         const double A = 0.5, S1 = 8.0;
@@ -268,7 +268,7 @@ SCENARIO("the rays through one image position spread over the thin-lens blur cir
 // [ch13-blur-circle]
 
 // [ch13-pinhole]
-SCENARIO("a lens of aperture 0 is the pinhole camera, bit for bit", "[ch13]") {
+SCENARIO("a lens of aperture 0 is the pinhole camera, bit for bit", "[ch13][ex13.1][ex13.2][ex13.3]") {
     GIVEN("a tilted camera and a lens of aperture 0 focused anywhere") {
         const rb::PinholeCamera camera = tiltedCamera();
         const rb::ThinLens thin = lens(0.0, 3.7, 16);
@@ -312,7 +312,7 @@ SCENARIO("a lens of aperture 0 is the pinhole camera, bit for bit", "[ch13]") {
 // [ch13-pinhole]
 
 // [ch13-chi-square]
-SCENARIO("the lens samples are uniform over the aperture", "[ch13]") {
+SCENARIO("the lens samples are uniform over the aperture", "[ch13][ex13.1][ex13.3]") {
     GIVEN("the concentric map of the unit square onto the disk") {
         rbtest::Rng rng(seed());
         WHEN("it maps 64000 independent uniform points") {
@@ -370,7 +370,7 @@ SCENARIO("the lens samples are uniform over the aperture", "[ch13]") {
 // [ch13-chi-square]
 
 // [ch13-strata]
-SCENARIO("each of a pixel's rays gets a lens stratum of its own", "[ch13]") {
+SCENARIO("each of a pixel's rays gets a lens stratum of its own", "[ch13][ex13.3]") {
     GIVEN("pixels with 1, 4, 7, 12, 16, 64 and 100 rays") {
         WHEN("20 pixels of each draw their rays' lens samples") {
             THEN("each ray has a cell of its own, in an order shuffled per pixel") {
@@ -422,7 +422,7 @@ SCENARIO("each of a pixel's rays gets a lens stratum of its own", "[ch13]") {
 // [ch13-strata]
 
 // [ch13-stratified-error]
-SCENARIO("stratified lens samples blur an edge with less error than independent ones", "[ch13]") {
+SCENARIO("stratified lens samples blur an edge with less error than independent ones", "[ch13][ex13.1][ex13.3]") {
     GIVEN("an edge that covers the part x > 0.3 of the unit lens disk, seen from 2000 pixels") {
         // Source: the disk's area beyond x = a is acos(a) − a·√(1 − a²); over π it is the
         // exact fraction of the lens that sees the bright side.
@@ -458,7 +458,7 @@ SCENARIO("stratified lens samples blur an edge with less error than independent 
 
 // [ch13-rays-per-pixel]
 SCENARIO("lens and pixel samples share rays: a pixel traces the larger count, not the product",
-         "[ch13]") {
+         "[ch13][ex13.1][ex13.2][ex13.3]") {
     const std::string lua = kBalls + kBallsRender + ")";
     const auto camerasPerPixel = [](const rb::World& w) {
         rb::RayCounters counters;
@@ -487,7 +487,7 @@ SCENARIO("lens and pixel samples share rays: a pixel traces the larger count, no
 }
 // [ch13-rays-per-pixel]
 
-SCENARIO("depth-of-field images are the same for any thread count", "[ch13]") {
+SCENARIO("depth-of-field images are the same for any thread count", "[ch13][ex13.1][ex13.2][ex13.3]") {
     GIVEN("the three-ball scene with a lens and jittered antialiasing") {
         const auto w = world(
             "gr.lens{aperture = 0.4, samples = 9}\n"
@@ -619,7 +619,7 @@ SCENARIO("the lens is set by the command line, gr.lens, gr.option or seed 001's 
 // [ch13-settings]
 
 // [ch13-stability]
-SCENARIO("extreme lenses give finite rays and images", "[ch13][stability]") {
+SCENARIO("extreme lenses give finite rays and images", "[ch13][stability][ex13.1][ex13.2][ex13.3]") {
     GIVEN(
         "lenses from a pinhole-thin aperture to one far wider than the scene, focused from "
         "1e-6 to 1e8 units") {

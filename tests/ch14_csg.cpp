@@ -88,7 +88,7 @@ CrossingList worldCrossings(const rb::Instance& instance, const Ray& ray) {
 }  // namespace
 
 // [ch14-interval-tests]
-SCENARIO("the interval algebra: union, intersection and difference of [1,4] and [2,6]", "[ch14]") {
+SCENARIO("the interval algebra: union, intersection and difference of [1,4] and [2,6]", "[ch14][ex14.2][ex14.3]") {
     GIVEN("A = [1, 4] and B = [2, 6] along a line") {
         const CrossingList a = intervals({{1, 4}}, &kMatA), b = intervals({{2, 6}}, &kMatB);
         // Source: hand computation on the number line.
@@ -143,7 +143,7 @@ SCENARIO("the interval algebra: union, intersection and difference of [1,4] and 
 }
 // [ch14-interval-tests]
 
-SCENARIO("the membership rule of each operation is its Boolean", "[ch14]") {
+SCENARIO("the membership rule of each operation is its Boolean", "[ch14][ex14.1]") {
     // Source: the definitions A ∪ B, A ∩ B, A − B = A ∩ complement(B).
     for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b) {
@@ -153,7 +153,7 @@ SCENARIO("the membership rule of each operation is its Boolean", "[ch14]") {
         }
 }
 
-SCENARIO("a hollow shell, a difference of two transformed spheres, has four crossings", "[ch14]") {
+SCENARIO("a hollow shell, a difference of two transformed spheres, has four crossings", "[ch14][ex14.2][ex14.4]") {
     GIVEN("gr.difference of a sphere of radius 2 and one of radius 1, both centred at (1, 0, 0)") {
         auto world = csgWorld(R"(
             local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
@@ -260,7 +260,7 @@ std::pair<std::shared_ptr<Solid>, rb::CsgLeaf> randomTree(
 
 // [ch14-membership-test]
 SCENARIO("crossings agree with point membership on random lines through random CSG trees",
-         "[ch14]") {
+         "[ch14][ex14.2][ex14.4]") {
     rbtest::Rng rng(rbtest::seedFromEnv("RB_CH14_SEED"));
     int checkedPoints = 0, checkedNormals = 0, nonEmpty = 0;
     for (int tree = 0; tree < 40; ++tree) {
@@ -317,7 +317,7 @@ SCENARIO("crossings agree with point membership on random lines through random C
 }
 // [ch14-membership-test]
 
-SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes", "[ch14]") {
+SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes", "[ch14][ex14.2][ex14.4]") {
     GIVEN("a group of two unit cubes side by side, minus a nested CSG node") {
         // Operand A: cubes [0,1]³ and [1,2]×[0,1]² in a group moved by (−1, 0, 0).
         // Operand B: (sphere r=0.5 at (0.5, 0.5, 0.5)) ∪ (sphere r=0.5 at (−0.5, 0.5, 0.5)),
@@ -382,7 +382,7 @@ SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes", 
 }
 
 SCENARIO("each operand keeps its own material, and inherits the node's when it has none",
-         "[ch14]") {
+         "[ch14][ex14.2][ex14.4]") {
     auto world = csgWorld(R"(
         local red = gr.material({1, 0, 0}, {0, 0, 0}, 1)
         local blue = gr.material({0, 0, 1}, {0, 0, 0}, 1)
@@ -411,7 +411,7 @@ SCENARIO("each operand keeps its own material, and inherits the node's when it h
 }
 
 // [ch14-lens-test]
-SCENARIO("a lens made as the intersection of two spheres focuses like a thick lens", "[ch14]") {
+SCENARIO("a lens made as the intersection of two spheres focuses like a thick lens", "[ch14][ex14.2][ex14.4]") {
     GIVEN("two unit spheres centred at z = ±0.8 intersected, of glass n = 1.5") {
         // The lens is biconvex with R₁ = 1, R₂ = −1 and thickness d = 2·(1 − 0.8) = 0.4.
         auto world = csgWorld(R"(
@@ -455,7 +455,7 @@ SCENARIO("a lens made as the intersection of two spheres focuses like a thick le
 // [ch14-lens-test]
 
 SCENARIO("a hollow glass shell enters and leaves the medium stack at each of its surfaces",
-         "[ch14]") {
+         "[ch14][ex14.2][ex14.4]") {
     auto world = csgWorld(R"(
         local glass = gr.material{kd = {0, 0, 0}, transparency = 1, ior = 1.5}
         local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
@@ -484,7 +484,7 @@ SCENARIO("a hollow glass shell enters and leaves the medium stack at each of its
     CHECK(media.size == 0);
 }
 
-SCENARIO("shadows see the result as one solid", "[ch14]") {
+SCENARIO("shadows see the result as one solid", "[ch14][ex14.2][ex14.4]") {
     auto world = csgWorld(R"(
         local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
         local shell = gr.difference(outer, gr.sphere('inner'))
@@ -508,7 +508,7 @@ SCENARIO("shadows see the result as one solid", "[ch14]") {
     }
 }
 
-SCENARIO("a ray that starts inside an operand finds the result's surface", "[ch14][stability]") {
+SCENARIO("a ray that starts inside an operand finds the result's surface", "[ch14][stability][ex14.2][ex14.4]") {
     auto world = csgWorld(R"(
         local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
         local shell = gr.difference(outer, gr.sphere('inner'))
@@ -540,7 +540,7 @@ SCENARIO("a ray that starts inside an operand finds the result's surface", "[ch1
 
 // [ch14-coplanar-test]
 SCENARIO("coplanar faces make no surface inside the result, under any rotation",
-         "[ch14][stability]") {
+         "[ch14][stability][ex14.2][ex14.3]") {
     rbtest::Rng rng(rbtest::seedFromEnv("RB_CH14_SEED") + 1);
     int spurious = 0, lines = 0, flush = 0;
     for (int trial = 0; trial < 200; ++trial) {

@@ -79,7 +79,7 @@ rb::Mat4 randomTransform(rbtest::Rng& rng) {
 }  // namespace
 
 // [cylinder-closed-form]
-SCENARIO("a ray meets the cylinder's side and caps where the closed form puts them", "[ch15]") {
+SCENARIO("a ray meets the cylinder's side and caps where the closed form puts them", "[ch15][ex15.1][ex15.3]") {
     GIVEN("the capped unit cylinder (radius 1, y from −1 to 1)") {
         const Cylinder cylinder;
         WHEN("a ray from (0, 0.3, 5) travels along −z") {
@@ -134,7 +134,7 @@ SCENARIO("a ray meets the cylinder's side and caps where the closed form puts th
 // [cylinder-closed-form]
 
 // [cone-closed-form]
-SCENARIO("a ray meets the cone and the frustum where the closed form puts them", "[ch15]") {
+SCENARIO("a ray meets the cone and the frustum where the closed form puts them", "[ch15][ex15.2][ex15.4]") {
     GIVEN("the capped unit cone: radius 1 at y = −1, apex at y = 1, so r(y) = (1 − y)/2") {
         const Cone cone;
         WHEN("a ray from (5, y₀, 0) travels along −x, for several heights y₀") {
@@ -186,7 +186,7 @@ SCENARIO("a ray meets the cone and the frustum where the closed form puts them",
 }
 // [cone-closed-form]
 
-SCENARIO("on random rays every hit lies on the surface with the gradient as its normal", "[ch15]") {
+SCENARIO("on random rays every hit lies on the surface with the gradient as its normal", "[ch15][ex15.1][ex15.2][ex15.4]") {
     rbtest::Rng rng(seed());
     const Cylinder cylinder, tube(false);
     const Cone cone, openCone(0.0, false), frustum(0.35), openFrustum(0.35, false);
@@ -231,7 +231,7 @@ SCENARIO("on random rays every hit lies on the surface with the gradient as its 
 }
 
 SCENARIO("a solid's crossings are an entry with the normal against the ray and an exit with it",
-         "[ch15]") {
+         "[ch15][ex15.1][ex15.2][ex15.4]") {
     rbtest::Rng rng(seed() + 1);
     const Cylinder cylinder;
     const Cone frustum(0.5);
@@ -258,7 +258,7 @@ SCENARIO("a solid's crossings are an entry with the normal against the ray and a
 }
 
 // [seam-watertight]
-SCENARIO("no ray slips between a cap and the side", "[ch15][stability]") {
+SCENARIO("no ray slips between a cap and the side", "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
     rbtest::Rng rng(seed() + 2);
     const Cylinder cylinder;
     const Cone frustum(0.6);
@@ -304,7 +304,7 @@ SCENARIO("no ray slips between a cap and the side", "[ch15][stability]") {
 // [seam-watertight]
 
 // [apex]
-SCENARIO("the cone's apex gives a hit with a finite unit normal, never NaN", "[ch15][stability]") {
+SCENARIO("the cone's apex gives a hit with a finite unit normal, never NaN", "[ch15][stability][ex15.2][ex15.4]") {
     rbtest::Rng rng(seed() + 3);
     const Cone cone, openCone(0.0, false);
     GIVEN("rays aimed exactly at the apex (0, 1, 0) from every direction") {
@@ -349,7 +349,7 @@ SCENARIO("the cone's apex gives a hit with a finite unit normal, never NaN", "[c
 }
 // [apex]
 
-SCENARIO("rays along the axis meet the caps, and miss an open tube", "[ch15][stability]") {
+SCENARIO("rays along the axis meet the caps, and miss an open tube", "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
     const Cylinder cylinder, tube(false);
     const Cone cone, openCone(0.0, false), frustum(0.5, true);
     WHEN("a ray runs down the axis from above") {
@@ -383,7 +383,7 @@ SCENARIO("rays along the axis meet the caps, and miss an open tube", "[ch15][sta
 }
 
 SCENARIO("grazing rays and rays parallel to the cone's slope give exact or no hits",
-         "[ch15][stability]") {
+         "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
     const Cylinder cylinder, tube(false);
     const Cone cone;
     WHEN("a ray runs parallel to a line on the cone (A = 0: the quadratic is linear)") {
@@ -434,7 +434,7 @@ SCENARIO("grazing rays and rays parallel to the cone's slope give exact or no hi
 }
 
 SCENARIO("rays from far away find the surface to the accuracy of their origin",
-         "[ch15][stability]") {
+         "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
     // The cancellation-free discriminant keeps the hit on the surface when |o| is large: the
     // textbook h² − a·c would lose about |o|²·ε = 1e-4 at |o| = 1e6 before the square root.
     const Cylinder cylinder;
@@ -455,7 +455,7 @@ SCENARIO("rays from far away find the surface to the accuracy of their origin",
 }
 
 SCENARIO("rays spawned from a cylinder or cone never hit it again at once, at every scale",
-         "[ch15][stability]") {
+         "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
     rbtest::Rng rng(seed() + 4);
     const Cylinder cylinder;
     const Cone cone(0.3);
@@ -479,7 +479,7 @@ SCENARIO("rays spawned from a cylinder or cone never hit it again at once, at ev
 }
 
 // [caps-refract]
-SCENARIO("light passes through a glass cylinder's caps as through a glass slab", "[ch15]") {
+SCENARIO("light passes through a glass cylinder's caps as through a glass slab", "[ch15][ex15.1][ex15.3]") {
     // Seed 001 saw the caps of its glass cylinders black. Through two parallel caps a ray
     // must see what it sees through a glass box of the same thickness: the same two planes,
     // the same normals, the same Fresnel shares.
@@ -604,7 +604,7 @@ SCENARIO("with quadrics switched off, a scene renders as if the chapter were not
 }
 
 SCENARIO("degenerate rays and glass quadrics seen from everywhere give no NaN",
-         "[ch15][stability]") {
+         "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
     const Cylinder cylinder;
     const Cone cone;
     WHEN("a ray has a zero or NaN direction") {
