@@ -2,6 +2,7 @@
 /// Shape: the extension point for geometry. A shape lives in its own object space.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "core/aabb.h"
@@ -19,6 +20,15 @@ class Shape {
     virtual bool occluded(const Ray& ray, double tMax) const {
         ObjectHit unused;
         return intersect(ray, tMax, unused);
+    }
+    /// Every crossing of the ray's whole line (any t, also t ≤ 0) as object-space hits sorted
+    /// by t, for a shape a line crosses at most twice; returns how many, or −1 when the shape
+    /// does not list them. Chapter 14's CSG lists an operand's crossings with it (chapter 15's
+    /// cylinders and cones) and marches through other shapes with intersect().
+    virtual int allHits(const Ray& ray, std::array<ObjectHit, 2>& out) const {
+        (void)ray;
+        (void)out;
+        return -1;
     }
     /// Object-space bounds.
     virtual AABB bounds() const = 0;

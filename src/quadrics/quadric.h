@@ -73,7 +73,7 @@ class Quadric : public Shape {
     /// Every crossing as an object-space hit (t, outward normal, uv, part as primitive),
     /// sorted by t, t ≤ 0 included; returns how many (0, 1 or 2). This is what CSG needs: a
     /// capped shape gives the interval [out[0].t, out[1].t] where the line is inside it.
-    int allHits(const Ray& ray, std::array<ObjectHit, 2>& out) const;
+    int allHits(const Ray& ray, std::array<ObjectHit, 2>& out) const override;
 
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
