@@ -30,6 +30,15 @@ class Shape {
         (void)out;
         return -1;
     }
+    /// The shape's own surface coordinates at object-space point p on part `primitive` (the
+    /// uv its hits carry), with the derivatives dp/du and dp/dv; false when it has none of its
+    /// own. Chapter 10's 'surface' mapping reads them for shapes it does not know (chapter 15's
+    /// cylinders and cones); the core's shapes and meshes it maps itself.
+    virtual bool surfaceCoordinates(const Vec3& p, std::uint32_t primitive, Vec2& uv, Vec3& dpdu,
+                                    Vec3& dpdv) const {
+        (void)p, (void)primitive, (void)uv, (void)dpdu, (void)dpdv;
+        return false;
+    }
     /// Object-space bounds.
     virtual AABB bounds() const = 0;
     /// Append the materials the shape carries itself (chapter 14's CSG operands); most

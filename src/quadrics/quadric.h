@@ -79,6 +79,11 @@ class Quadric : public Shape {
     bool occluded(const Ray& ray, double tMax) const override;
     AABB bounds() const override { return AABB{Vec3(-1.0), Vec3(1.0)}; }
     const char* feature() const override { return "quadrics"; }
+    /// quadricUv at p on `part`, with dp/du and dp/dv: textures wrap round the side.
+    bool surfaceCoordinates(const Vec3& p, std::uint32_t part, Vec2& uv, Vec3& dpdu,
+                            Vec3& dpdv) const override;
+    /// dr/dy of the side's radius r(y): 0 for a cylinder.
+    virtual double radiusSlope() const { return 0.0; }
 
   protected:
     explicit Quadric(bool capped) : capped_(capped) {}
