@@ -90,7 +90,7 @@ class SceneWriter {
     /// random transforms and a material.
     std::string object(const std::string& name, int depth = 0) {
         std::ostringstream s;
-        if (chapter_ >= 14 && depth < 3 && rng_.uniform() < (depth == 0 ? 0.3 : 0.25)) {
+        if (chapter_ >= 14 && depth < 2 && rng_.uniform() < (depth == 0 ? 0.3 : 0.25)) {
             // op(A, B): any objects, themselves CSG trees at times; the operands are not added
             // to the graph, and may or may not carry materials of their own.
             static const char* const kOps[] = {"gr.union", "gr.intersection", "gr.difference"};
@@ -292,7 +292,9 @@ class SceneWriter {
     /// in milliseconds.
     std::string options() {
         std::ostringstream s;
-        if (chapter_ >= 4) s << "gr.option('max_depth', " << count(6) << ")\n";
+        // From chapter 9 on, at most 4 bounces: glossy lobes branch at every one, and the
+        // scenes of chapters 4 to 8 already reach depth 6.
+        if (chapter_ >= 4) s << "gr.option('max_depth', " << count(chapter_ >= 9 ? 4 : 6) << ")\n";
         if (chapter_ >= 7) {
             s << "gr.option('glossy_samples', " << count(4) << ")\n";
             s << "gr.option('glossy_sampler', " << count(1) << ")\n";
