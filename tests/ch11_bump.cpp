@@ -41,6 +41,14 @@ rb::FeatureSet withBump() {
     return rbtest::chapters(11);
 }
 
+/// How many of the pipeline's shading-normal stages are chapter 11's bumps.
+size_t bumpStages(const rb::World& world) {
+    size_t n = 0;
+    for (const auto& stage : world.pipeline.normals)
+        if (dynamic_cast<const rb::BumpNormals*>(stage.get())) ++n;
+    return n;
+}
+
 /// The angle between two unit vectors, computed stably (atan2 of |a × b| and a · b).
 double angleBetween(const Vec3& a, const Vec3& b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
@@ -215,7 +223,7 @@ SCENARIO("a zero bump leaves every normal unchanged", "[ch11][ex11.1][ex11.2][ex
             withBump());
         const auto unbumped = rbtest::worldFromLua(plain + body, withBump());
         THEN("the images are bit-identical") {
-            CHECK(bumped->pipeline.perturbNormals);
+            CHECK(bumpStages(*bumped) == 1);
             CHECK(rbtest::bitIdentical(rbtest::renderSmall(*bumped, 32, 24),
                                        rbtest::renderSmall(*unbumped, 32, 24)));
         }
@@ -539,7 +547,7 @@ SCENARIO("without bumps, or with the feature off, the chapter changes nothing", 
         const auto eleven = rbtest::worldFromLua(plain + body, withBump());
         const auto eight = rbtest::worldFromLua(plain + body, rbtest::chapters(8));
         THEN("the chapter installs nothing, and the image is the chapter-8 build's, bit for bit") {
-            CHECK_FALSE(eleven->pipeline.perturbNormals);
+            CHECK(bumpStages(*eleven) == 0);
             CHECK(rbtest::bitIdentical(rbtest::renderSmall(*eleven, 32, 24),
                                        rbtest::renderSmall(*eight, 32, 24)));
         }
@@ -549,7 +557,7 @@ SCENARIO("without bumps, or with the feature off, the chapter changes nothing", 
         const auto off = rbtest::worldFromLua(rippled + body, rbtest::chapters(11, "all,-bump"));
         const auto none = rbtest::worldFromLua(plain + body, withBump());
         THEN("--features=all,-bump renders it as if it had no bump; with bumps it differs") {
-            CHECK_FALSE(off->pipeline.perturbNormals);
+            CHECK(bumpStages(*off) == 0);
             CHECK(rbtest::bitIdentical(rbtest::renderSmall(*off, 32, 24),
                                        rbtest::renderSmall(*none, 32, 24)));
             CHECK_FALSE(rbtest::bitIdentical(rbtest::renderSmall(*on, 32, 24),
@@ -743,3 +751,40 @@ SCENARIO("a height map steep enough to flip the normal is held on the viewer's s
     }
 }
 // [ch11-height-map-stability]
+
+// [ch11-stage]
+SCENARIO("a bump is a shading-normal stage that runs after chapter 9's smooth normals", "[ch11]") {
+    GIVEN("the icosphere as a rippled smooth mesh") {
+        const std::string asset = std::string(RB_SOURCE_DIR) + "/scenes/assets/icosphere80.obj";
+        auto scene = [&](const std::string& call, const std::string& bump) {
+            return "local m = gr.material({0.7, 0.6, 0.5}, {0.5, 0.5, 0.5}, 25)\n" + bump +
+                   "root = gr.node('root')\nlocal s = " + call + "('s', '" + asset +
+                   "')\ns:set_material(m)\nroot:add_child(s)\n"
+                   "gr.render(root, 'out.png', 40, 40, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 40,"
+                   " {0.1, 0.1, 0.1}, {gr.light({-5, 2, 1}, {1, 1, 1}, {1, 0, 0})})\n";
+        };
+        const std::string ripples =
+            "m:set_bump{pattern = 'ripples', strength = 0.01, wavelength = 0.3}\n";
+        const auto smoothBumped =
+            rbtest::worldFromLua(scene("gr.smooth_mesh", ripples), withBump());
+        THEN("the pipeline has one list of normal stages: the smooth normals, then the bump") {
+            REQUIRE(smoothBumped->pipeline.normals.size() == 2);
+            CHECK(dynamic_cast<const rb::BumpNormals*>(smoothBumped->pipeline.normals[0].get()) ==
+                  nullptr);
+            CHECK(dynamic_cast<const rb::BumpNormals*>(smoothBumped->pipeline.normals[1].get()) !=
+                  nullptr);
+        }
+        THEN(
+            "the bump tilts the smooth normal: the image differs from the bumped faceted mesh "
+            "and from the unbumped smooth mesh") {
+            const rb::Image bumped = rbtest::renderSmall(*smoothBumped, 40, 40);
+            const rb::Image facetedBumped = rbtest::renderSmall(
+                *rbtest::worldFromLua(scene("gr.mesh", ripples), withBump()), 40, 40);
+            const rb::Image smooth = rbtest::renderSmall(
+                *rbtest::worldFromLua(scene("gr.smooth_mesh", ""), withBump()), 40, 40);
+            CHECK_FALSE(rbtest::bitIdentical(bumped, facetedBumped));
+            CHECK_FALSE(rbtest::bitIdentical(bumped, smooth));
+        }
+    }
+}
+// [ch11-stage]

@@ -9,6 +9,9 @@
 /// the solids exactly through points of their rims (in object space and under random
 /// transforms: every one must hit), and at the places where quadrics are known to fail: the apex
 /// (no NaN), rays along the axis, rays parallel to the cone's slope, grazing and far-away rays.
+/// Textures (chapter 10) wrap round them by their own (u, v), with exact tangents dp/du, dp/dv.
+/// As CSG operands (chapter 14) they give their exact crossings, and with the chapter switched
+/// off they are left out of CSG nodes as they are left out of the scene.
 /// Refraction through the caps is checked end to end: looking through the caps of a glass cylinder
 /// is looking through a glass slab of the same thickness (seed 001 saw black there). The random
 /// rays come from a fixed seed (1; RB_CH15_SEED re-runs them on other streams; checked for seeds 1
@@ -22,9 +25,11 @@
 #include <vector>
 
 #include "core/error.h"
+#include "csg/csg.h"
 #include "quadrics/cone.h"
 #include "quadrics/cylinder.h"
 #include "test_helpers.h"
+#include "texture/uv_mapping.h"
 
 using Catch::Contains;
 using rb::Cone;
@@ -665,3 +670,159 @@ SCENARIO("seed 001's calls mark a scene as written for the pre-2015 framework", 
             REQUIRE(eraOf(call).era == rb::Era::Modern);
     }
 }
+
+// [ch15-csg-operand]
+SCENARIO("a cylinder or cone operand of a CSG node gives its exact crossings, not marched ones",
+         "[ch15]") {
+    GIVEN("capped, open and frustum quadrics as CSG leaves under random transforms") {
+        const Cylinder capped, tube(false);
+        const Cone cone, frustum(0.4), openFrustum(0.3, false);
+        rbtest::Rng rng(seed());
+        WHEN("random lines through their bounds are listed by the leaf and by allHits") {
+            THEN("the leaf's crossings are allHits' own t, bit for bit, entering first") {
+                int crossingsSeen = 0;
+                for (const Quadric* shape :
+                     std::vector<const Quadric*>{&capped, &tube, &cone, &frustum, &openFrustum})
+                    for (int k = 0; k < 400; ++k) {
+                        rb::Instance instance;
+                        instance.shape = shape;
+                        instance.setTransform(randomTransform(rng));
+                        const rb::CsgLeaf leaf = rb::CsgLeaf::from(instance);
+                        // A line through a random point of the (world) bounds.
+                        const rb::AABB& b = instance.worldBounds;
+                        const Vec3 target(rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y),
+                                          rng.uniform(b.lo.z, b.hi.z));
+                        const Vec3 d = rng.unitVector();
+                        const Ray line{target - 20.0 * d, d};
+                        rb::CrossingList listed;
+                        leaf.crossings(line, listed);
+                        const Ray local{rb::transformPoint(instance.worldToObject, line.o),
+                                        rb::transformVector(instance.worldToObject, line.d)};
+                        std::array<ObjectHit, 2> hits;
+                        const int n = shape->allHits(local, hits);
+                        // A solid gives 0 or 2; an open surface crossed once gives none.
+                        const int expected = n == 2 ? 2 : 0;
+                        CAPTURE(k, n, listed.size());
+                        REQUIRE(static_cast<int>(listed.size()) == expected);
+                        for (int i = 0; i < expected; ++i) {
+                            REQUIRE(listed[i].hit.t == hits[i].t);
+                            REQUIRE(listed[i].entering == (i == 0));
+                            // Normals point out of the solid: against the line on entry.
+                            REQUIRE((glm::dot(listed[i].hit.n, line.d) < 0.0) == (i == 0));
+                        }
+                        crossingsSeen += expected;
+                    }
+                CHECK(crossingsSeen > 1000);
+            }
+        }
+    }
+}
+// [ch15-csg-operand]
+
+// [ch15-csg-off]
+SCENARIO("with quadrics switched off, a quadric operand of a CSG node is left out, with a warning",
+         "[ch15]") {
+    GIVEN("a sphere minus a cylinder, and the same sphere minus an empty node") {
+        auto scene = [](const std::string& b) {
+            return "root = gr.node('root')\n"
+                   "local s = gr.sphere('s')\n"
+                   "local b = " +
+                   b +
+                   "\nb:scale(0.8, 2, 0.8)\n"
+                   "root:add_child(gr.difference(s, b))\n" +
+                   rbtest::renderLine();
+        };
+        const auto off =
+            rbtest::worldFromLua(scene("gr.cylinder('c')"), rbtest::chapters(15, "all,-quadrics"));
+        const auto empty =
+            rbtest::worldFromLua(scene("gr.node('c')"), rbtest::chapters(15, "all,-quadrics"));
+        const auto on = rbtest::worldFromLua(scene("gr.cylinder('c')"), rbtest::chapters(15));
+        THEN("the image is the sphere minus nothing, and rt warns as for a top-level cylinder") {
+            REQUIRE(off->warnings.size() == 1);
+            REQUIRE_THAT(off->warnings[0], Contains("1 shape of the 'quadrics' feature not drawn"));
+            REQUIRE(empty->warnings.empty());
+            REQUIRE(rbtest::bitIdentical(rbtest::renderSmall(*off), rbtest::renderSmall(*empty)));
+        }
+        THEN("with the chapter on, the cylinder is cut out of the sphere") {
+            REQUIRE(on->warnings.empty());
+            REQUIRE_FALSE(
+                rbtest::bitIdentical(rbtest::renderSmall(*on), rbtest::renderSmall(*empty)));
+        }
+    }
+}
+// [ch15-csg-off]
+
+// [ch15-uv]
+SCENARIO("a texture wraps round a cylinder or cone by the shape's own (u, v)", "[ch15]") {
+    GIVEN("capped cylinders, cones and frustums under random transforms, hit by random rays") {
+        const Cylinder cylinder;
+        const Cone cone, frustum(0.4);
+        rbtest::Rng rng(seed());
+        THEN(
+            "chapter 10's 'surface' mapping gives the hit's (u, v): angle and height on the "
+            "side, the disk on the caps") {
+            int sides = 0, caps = 0;
+            for (const Quadric* shape : std::vector<const Quadric*>{&cylinder, &cone, &frustum})
+                for (int k = 0; k < 500; ++k) {
+                    rb::Instance instance;
+                    instance.shape = shape;
+                    instance.setTransform(randomTransform(rng));
+                    const rb::AABB& b = instance.worldBounds;
+                    const Vec3 target(rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y),
+                                      rng.uniform(b.lo.z, b.hi.z));
+                    const Vec3 d = rng.unitVector();
+                    const Ray ray{target - 30.0 * d, d};
+                    ObjectHit oh;
+                    if (!instance.intersect(ray, kInf, oh)) continue;
+                    const rb::Hit hit = instance.toWorld(ray, oh);
+                    const Vec3 p = rb::transformPoint(instance.worldToObject, hit.p);
+                    const auto part = static_cast<QuadricPart>(hit.primitive);
+                    // Source: chapter 15's parameterisation, u = atan2(x, z)/2π, v = (y + 1)/2
+                    // on the side; u = (x + 1)/2, v = (z + 1)/2 on a cap.
+                    const Vec2 expected =
+                        part == QuadricPart::Side
+                            ? Vec2(std::atan2(p.x, p.z) / (2 * glm::pi<double>()) +
+                                       (p.x < 0 ? 1.0 : 0.0),
+                                   0.5 * (p.y + 1.0))
+                            : Vec2(0.5 * (p.x + 1.0), 0.5 * (p.z + 1.0));
+                    const rb::SurfaceUV s = rb::surfaceUV(hit);
+                    CAPTURE(k, p.x, p.y, p.z, s.uv.x, s.uv.y, expected.x, expected.y);
+                    REQUIRE(std::abs(s.uv.x - expected.x) < 1e-9);
+                    REQUIRE(std::abs(s.uv.y - expected.y) < 1e-9);
+                    // The world tangents lie in the surface: across the world normal.
+                    const Vec3 n = glm::normalize(hit.ng);
+                    REQUIRE(std::abs(cosAngle(s.dpdu, n)) < 1e-6);
+                    REQUIRE(std::abs(cosAngle(s.dpdv, n)) < 1e-6);
+                    ++(part == QuadricPart::Side ? sides : caps);
+                }
+            CHECK(sides > 300);
+            CHECK(caps > 100);
+        }
+        THEN("dp/du and dp/dv are the derivatives of the surface point along u and v") {
+            // The point at (u, v) on the side of a shape with radius r(y): Source: inverting
+            // u = atan2(x, z)/2π, v = (y + 1)/2 gives p = (r sin 2πu, 2v − 1, r cos 2πu).
+            const double h = 1e-6;
+            for (const double r1 : {1.0, 0.0, 0.4}) {
+                const Cone asCone(r1);
+                const Quadric& shape = r1 == 1.0 ? static_cast<const Quadric&>(cylinder) : asCone;
+                auto at = [&](double u, double v) {
+                    const double y = 2 * v - 1, r = coneRadius(r1, y);
+                    const double phi = 2 * glm::pi<double>() * u;
+                    return Vec3(r * std::sin(phi), y, r * std::cos(phi));
+                };
+                for (int k = 0; k < 200; ++k) {
+                    const double u = rng.uniform(0.05, 0.95), v = rng.uniform(0.05, 0.9);
+                    Vec2 uv;
+                    Vec3 dpdu, dpdv;
+                    REQUIRE(shape.surfaceCoordinates(at(u, v), 0, uv, dpdu, dpdv));
+                    const Vec3 du = (at(u + h, v) - at(u - h, v)) / (2 * h);
+                    const Vec3 dv = (at(u, v + h) - at(u, v - h)) / (2 * h);
+                    CAPTURE(r1, u, v);
+                    REQUIRE(glm::length(dpdu - du) < 1e-6 * glm::length(du) + 1e-9);
+                    REQUIRE(glm::length(dpdv - dv) < 1e-6 * glm::length(dv));
+                }
+            }
+        }
+    }
+}
+// [ch15-uv]

@@ -10,6 +10,11 @@
 ///      and nothing in the range of legal scenes may produce NaN or Inf), and
 ///   2. the same bits with one thread and with two (the random stream depends on the pixel and
 ///      the sample, never on the thread).
+/// From chapter 9 on the scenes also draw smooth meshes, textures (checkers and a small image,
+/// in every mapping), bumps (every pattern, strengths up to ones that would flip the normal),
+/// tone maps (the clamped, global and local operators: checked after the post-process too,
+/// which must give finite pixels in [0, 1]), lenses, CSG trees over every shape kind (nested,
+/// transformed, with materials of their own) and open, capped and frustum cylinders and cones.
 /// The scenes are seeded (RB_PROPERTY_SEED changes the seed), so a failure names a scene that
 /// can be rerun: the test prints its Lua text.
 #include <catch2/catch.hpp>
@@ -17,11 +22,19 @@
 #include <sstream>
 #include <string>
 
+#include "core/post_process.h"
 #include "test_helpers.h"
 
 namespace {
 
 using rbtest::Rng;
+
+/// True when no channel of the image exceeds 1 (a display image).
+bool allAtMostOne(const rb::Image& image) {
+    for (float c : image.data())
+        if (!(c <= 1.0f)) return false;
+    return true;
+}
 
 /// Lua text for random values, drawn from an Rng.
 class SceneWriter {
@@ -42,9 +55,7 @@ class SceneWriter {
             const int objects = 1 + count(3);
             for (int k = 0; k < objects; ++k) {
                 const std::string name = "o" + std::to_string(g) + "_" + std::to_string(k);
-                lua << "local " << name << " = " << shape(name) << "\n";
-                lua << transforms(name);
-                lua << name << ":set_material(" << material() << ")\n";
+                lua << object(name);
                 lua << "g" << g << ":add_child(" << name << ")\n";
             }
         }
@@ -75,11 +86,31 @@ class SceneWriter {
         return triple({rng_.uniform(lo, hi), rng_.uniform(lo, hi), rng_.uniform(lo, hi)});
     }
 
-    /// A shape of chapters 1 to 3: sphere, cube, nh_sphere, nh_box, and from 3 a mesh.
+    /// Lua that makes node `name`: a shape, or from chapter 14 sometimes a CSG tree, with
+    /// random transforms and a material.
+    std::string object(const std::string& name, int depth = 0) {
+        std::ostringstream s;
+        if (chapter_ >= 14 && depth < 2 && rng_.uniform() < (depth == 0 ? 0.3 : 0.25)) {
+            // op(A, B): any objects, themselves CSG trees at times; the operands are not added
+            // to the graph, and may or may not carry materials of their own.
+            static const char* const kOps[] = {"gr.union", "gr.intersection", "gr.difference"};
+            const std::string a = name + "a", b = name + "b";
+            s << object(a, depth + 1) << object(b, depth + 1);
+            s << "local " << name << " = " << kOps[choose(3)] << "(" << a << ", " << b << ")\n";
+        } else {
+            s << "local " << name << " = " << shape(name) << "\n";
+        }
+        s << transforms(name);
+        if (depth == 0 || rng_.uniform() < 0.7) s << material(name);
+        return s.str();
+    }
+
+    /// A shape: sphere, cube, nh_sphere, nh_box, from chapter 3 a mesh, from 9 a smooth mesh,
+    /// from 15 a cylinder or cone (capped or open, pointed or a frustum).
     std::string shape(const std::string& name) {
         std::ostringstream s;
         s.precision(17);
-        const int kinds = chapter_ >= 3 ? 5 : 4;
+        const int kinds = chapter_ >= 15 ? 8 : chapter_ >= 9 ? 6 : chapter_ >= 3 ? 5 : 4;
         switch (choose(kinds)) {
             case 0:
                 s << "gr.sphere('" << name << "')";
@@ -95,9 +126,29 @@ class SceneWriter {
                 s << "gr.nh_box('" << name << "', " << triple(direction() * rng_.uniform(0, 2))
                   << ", " << rng_.uniform(0.01, 2.0) << ")";
                 break;
-            default:
+            case 4:
                 s << "gr.mesh('" << name << "', '" << RB_SOURCE_DIR << "/scenes/a4/"
                   << (rng_.uniform() < 0.5 ? "dodeca.obj" : "cubeSq.obj") << "')";
+                break;
+            case 5: {
+                static const char* const kMeshes[] = {"a4/dodeca.obj", "a4/cubeSq.obj",
+                                                      "assets/icosphere80.obj"};
+                s << "gr.smooth_mesh('" << name << "', '" << RB_SOURCE_DIR << "/scenes/"
+                  << kMeshes[choose(3)] << "', {normals = '"
+                  << (rng_.uniform() < 0.5 ? "file" : "computed")
+                  << "', crease = " << rng_.uniform(0, 180)
+                  << ", terminator = " << (rng_.uniform() < 0.5 ? "true" : "false") << "})";
+                break;
+            }
+            case 6:
+                s << "gr.cylinder{name = '" << name
+                  << "', open = " << (rng_.uniform() < 0.5 ? "true" : "false") << "}";
+                break;
+            default:
+                s << "gr.cone{name = '" << name
+                  << "', open = " << (rng_.uniform() < 0.5 ? "true" : "false");
+                if (rng_.uniform() < 0.5) s << ", top_radius = " << rng_.uniform(0.001, 1.0);
+                s << "}";
         }
         return s.str();
     }
@@ -131,17 +182,73 @@ class SceneWriter {
         return s.str();
     }
 
-    /// A material with the fields of chapters 1..chapter_, each in its legal range.
-    std::string material() {
+    /// Lua that gives node `node` a material with the fields of chapters 1..chapter_, each in
+    /// its legal range, and from chapters 10 and 11 textures and bumps.
+    std::string material(const std::string& node) {
         std::ostringstream s;
         s.precision(17);
-        s << "gr.material{kd = " << colour(0, 1) << ", ks = " << colour(0, 1)
+        const std::string m = node + "m";
+        s << "local " << m << " = gr.material{kd = " << colour(0, 1) << ", ks = " << colour(0, 1)
           << ", shininess = " << rng_.uniform(0.5, 500.0);
         if (chapter_ >= 4 && rng_.uniform() < 0.5) s << ", reflect = " << rng_.uniform(0, 1);
         if (chapter_ >= 5 && rng_.uniform() < 0.5)
             s << ", transparency = " << rng_.uniform(0, 1) << ", ior = " << rng_.uniform(0.2, 4.0)
               << ", schlick = " << (rng_.uniform() < 0.5 ? "true" : "false");
         if (chapter_ >= 7 && rng_.uniform() < 0.5) s << ", glossiness = " << rng_.uniform(0, 2);
+        s << "}\n";
+        if (chapter_ >= 10 && rng_.uniform() < 0.5)
+            s << m << ":set_texture(" << (rng_.uniform() < 0.5 ? "'kd', " : "'ks', ") << texture()
+              << ")\n";
+        if (chapter_ >= 11 && rng_.uniform() < 0.5) s << m << ":set_bump" << bump() << "\n";
+        s << node << ":set_material(" << m << ")\n";
+        return s.str();
+    }
+
+    /// A texture (chapter 10): a checker or the small globe image, in any mapping, scaled and
+    /// offset, wrapped or clamped, filtered or not.
+    std::string texture() {
+        std::ostringstream s;
+        s.precision(17);
+        static const char* const kMappings[] = {"surface", "planar", "spherical", "cylindrical"};
+        s << "gr.texture{";
+        if (rng_.uniform() < 0.5)
+            s << "checker = {" << colour(0, 1) << ", " << colour(0, 1) << "}";
+        else
+            s << "image = '" << RB_SOURCE_DIR << "/scenes/assets/textures/globe.png', wrap = '"
+              << (rng_.uniform() < 0.5 ? "repeat" : "clamp") << "', filter = '"
+              << (rng_.uniform() < 0.5 ? "bilinear" : "nearest") << "'";
+        auto nonZero = [&] { return (rng_.uniform() < 0.2 ? -1 : 1) * rng_.uniform(0.05, 20); };
+        s << ", mapping = '" << kMappings[choose(4)] << "', scale = {" << nonZero() << ", "
+          << nonZero() << "}, offset = {" << rng_.uniform(-5, 5) << ", " << rng_.uniform(-5, 5)
+          << "}}";
+        return s.str();
+    }
+
+    /// A bump (chapter 11) of every pattern, with strengths from none to far past flipping.
+    std::string bump() {
+        std::ostringstream s;
+        s.precision(17);
+        const double strength =
+            (rng_.uniform() < 0.5 ? -1 : 1) *
+            (rng_.uniform() < 0.2 ? rng_.uniform(0, 1000) : rng_.uniform(0, 0.2));
+        s << "{strength = " << strength << ", ";
+        switch (choose(4)) {
+            case 0:
+                s << "pattern = 'ripples', wavelength = " << rng_.uniform(0.01, 2)
+                  << ", centre = " << triple(direction() * rng_.uniform(0, 2));
+                break;
+            case 1:
+                s << "pattern = 'noise', scale = " << rng_.uniform(0.01, 2)
+                  << ", octaves = " << 1 + count(7) << ", seed = " << count(100);
+                break;
+            case 2:
+                s << "pattern = 'ramp', slope = " << triple(direction() * rng_.uniform(0, 3));
+                break;
+            default:
+                s << "pattern = 'image', file = '" << RB_SOURCE_DIR
+                  << "/scenes/assets/tiles-height.png', mapping = '"
+                  << (rng_.uniform() < 0.5 ? "surface" : "planar") << "'";
+        }
         s << "}";
         return s.str();
     }
@@ -185,7 +292,9 @@ class SceneWriter {
     /// in milliseconds.
     std::string options() {
         std::ostringstream s;
-        if (chapter_ >= 4) s << "gr.option('max_depth', " << count(6) << ")\n";
+        // From chapter 9 on, at most 4 bounces: glossy lobes branch at every one, and the
+        // scenes of chapters 4 to 8 already reach depth 6.
+        if (chapter_ >= 4) s << "gr.option('max_depth', " << count(chapter_ >= 9 ? 4 : 6) << ")\n";
         if (chapter_ >= 7) {
             s << "gr.option('glossy_samples', " << count(4) << ")\n";
             s << "gr.option('glossy_sampler', " << count(1) << ")\n";
@@ -199,6 +308,17 @@ class SceneWriter {
             s << "gr.antialias{sampler = '" << sampler << "', samples = " << n * n
               << ", threshold = " << rng_.uniform(0.0, 0.5) << ", depth = " << count(3) << "}\n";
         }
+        if (chapter_ >= 12 && rng_.uniform() < 0.6) {
+            // A tone map: the course's clamp, Reinhard's global curve or his local operator.
+            static const char* const kOperators[] = {"none", "global", "local"};
+            s << "gr.tone_map{operator = '" << kOperators[choose(3)]
+              << "', key = " << rng_.uniform(0.01, 1.0) << ", exposure = " << rng_.uniform(-5, 5)
+              << ", srgb = " << (rng_.uniform() < 0.5 ? "true" : "false") << "}\n";
+        }
+        if (chapter_ >= 13 && rng_.uniform() < 0.6)
+            s << "gr.lens{aperture = " << rng_.uniform(0, 1)
+              << ", focus = " << rng_.uniform(0.5, 20) << ", samples = " << 1 + count(3)
+              << ", shape = '" << (rng_.uniform() < 0.5 ? "disk" : "square") << "'}\n";
         return s.str();
     }
 
@@ -220,7 +340,7 @@ SCENARIO(
     GIVEN(std::to_string(kScenesPerChapter) + " random scenes of each chapter, 96 x 64 pixels") {
         WHEN("each is rendered by its chapter, 2 samples a pixel, on one thread and on two") {
             THEN("every pixel is finite and non-negative, and the two images are one") {
-                int scenesWithBothThreads = 0, scenesRendered = 0;
+                int scenesWithBothThreads = 0, scenesRendered = 0, toneMapped = 0;
                 for (int chapter = 1; chapter <= rb::newestChapter(); ++chapter) {
                     const rb::FeatureSet features = rbtest::chapters(chapter);
                     for (int i = 0; i < kScenesPerChapter; ++i) {
@@ -237,6 +357,16 @@ SCENARIO(
                         const rb::Image b = rbtest::renderWorld(*world, two);
                         REQUIRE(rbtest::allFiniteNonNegative(a));
                         REQUIRE(rbtest::bitIdentical(a, b));
+                        if (world->pipeline.postProcess) {
+                            // The tone map (chapter 12) turns the film into display values.
+                            rb::Image displayA = a, displayB = b;
+                            world->pipeline.postProcess->apply(displayA);
+                            world->pipeline.postProcess->apply(displayB);
+                            REQUIRE(rbtest::allFiniteNonNegative(displayA));
+                            REQUIRE(allAtMostOne(displayA));
+                            REQUIRE(rbtest::bitIdentical(displayA, displayB));
+                            ++toneMapped;
+                        }
                         ++scenesRendered;
                         const std::set<int> workers(tileThreads.begin(), tileThreads.end());
                         if (workers.size() == 2) ++scenesWithBothThreads;
@@ -249,6 +379,8 @@ SCENARIO(
                 INFO(scenesWithBothThreads << " of " << scenesRendered
                                            << " scenes had tiles on both threads");
                 CHECK(scenesWithBothThreads >= 40);
+                // Chapters 12 to 15 each draw a tone map for about half their scenes.
+                CHECK(toneMapped >= 40);
             }
         }
     }

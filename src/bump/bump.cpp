@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/instance.h"
-#include "core/integrator.h"
+#include "core/material.h"
 #include "core/render_context.h"
 
 namespace rb {
@@ -102,11 +102,21 @@ void Bump::perturb(const Ray& ray, Hit& hit) const {
 }
 // [bump-perturb]
 
+// [bump-normals]
+void BumpNormals::apply(const Ray& ray, Hit& hit) const {
+    if (hit.material && hit.material->bump) hit.material->bump->perturb(ray, hit);
+}
+// [bump-normals]
+
 // [install-bump]
 void installBump(Pipeline& pipeline, Scene&, const RenderContext& context) {
-    // Only a scene with a bumped material pays for the lookup on every hit.
+    // Only a scene with a bumped material pays for the lookup on every hit. Features install
+    // in chapter order, so this stage runs after chapter 9's and tilts the smooth normal.
     for (const Instance& i : context.instances)
-        if (i.material && i.material->bump) pipeline.perturbNormals = true;
+        if (i.material && i.material->bump) {
+            pipeline.normals.push_back(std::make_shared<BumpNormals>());
+            return;
+        }
 }
 // [install-bump]
 

@@ -9,6 +9,7 @@
 
 #include "bump/height_field.h"
 #include "core/feature.h"
+#include "core/integrator.h"
 #include "core/normal_perturbation.h"
 
 namespace rb {
@@ -68,8 +69,17 @@ class Bump final : public NormalPerturbation {
     double step_;
 };
 
-/// Plug chapter 11 into one render: apply bumps when some material of the scene has one;
-/// a scene without bumps keeps the core's path untouched.
+/// Chapter 11's shading-normal stage: a hit whose material carries a bump has its shading
+/// normal tilted by it. Installed after chapter 9's smooth normals, so the bump tilts the
+/// interpolated normal of a smooth mesh.
+class BumpNormals final : public ShadingNormal {
+  public:
+    /// Apply the bump of hit.material, if it has one.
+    void apply(const Ray& ray, Hit& hit) const override;
+};
+
+/// Plug chapter 11 into one render: a BumpNormals stage when some material of the scene has
+/// a bump; a scene without bumps keeps the core's path untouched.
 void installBump(Pipeline& pipeline, Scene& scene, const RenderContext& context);
 
 /// Chapter 11's Lua calls: material:set_bump{...} and seed 002's material:set_bump_map(file).

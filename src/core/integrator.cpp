@@ -10,10 +10,8 @@ Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters
     Hit hit;
     if (!scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit))
         return scene_.background;
+    // Smooth normals (chapter 9), then bumps (chapter 11), before anything shades.
     for (const auto& normal : pipeline_.normals) normal->apply(ray, hit);
-    // A bumped material tilts the shading normal before anything shades with it (chapter 11).
-    if (pipeline_.perturbNormals && hit.material && hit.material->bump)
-        hit.material->bump->perturb(ray, hit);
     // Local shading, then each chapter's secondary term.
     const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight};
     Colour colour;

@@ -77,7 +77,8 @@ class LobeSampler {
 };
 
 /// Changes a hit's shading normal (and where its shadow rays start) before it is shaded: the
-/// extension point of chapter 9's smooth meshes. The geometric normal ng stays as it is.
+/// extension point of chapter 9's smooth meshes and chapter 11's bumps, run in chapter order.
+/// The geometric normal ng stays as it is.
 class ShadingNormal {
   public:
     virtual ~ShadingNormal() = default;
@@ -96,16 +97,14 @@ struct Pipeline {
     AggregateBuilder buildAggregate = nullptr;              ///< Acceleration (chapter 1, then 3).
     std::vector<std::shared_ptr<const ShadingTerm>> terms;  ///< Secondary terms, in order.
     std::shared_ptr<const LobeSampler> lobe;                ///< Glossy lobes (chapter 7), or null.
-    /// Shading-normal changes, in chapter order (chapter 9's smooth meshes); empty by default.
+    /// Shading-normal changes, in chapter order (chapter 9's smooth meshes, then chapter 11's
+    /// bumps); empty by default.
     std::vector<std::shared_ptr<const ShadingNormal>> normals;
     /// Where a pixel's camera rays go (chapter 8's supersampling), or null: the core's one
     /// ray through each pixel centre (or --spp random positions).
     std::shared_ptr<const PixelSampler> pixelSampler;
     /// Textured material colours (chapter 10), or null: the materials' own colours.
     TextureLookup textureLookup = nullptr;
-    /// Chapter 11: apply the bump a hit's material carries to its shading normal. Set only
-    /// when the feature is on and some material has a bump, so other scenes skip the lookup.
-    bool perturbNormals = false;
     /// What happens to the film after the render (chapter 12's tone map), or null: the film is
     /// written as it is, each channel clamped to [0, 1] as the CS488 framework does.
     std::shared_ptr<const PostProcess> postProcess;

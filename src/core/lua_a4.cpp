@@ -346,7 +346,8 @@ int grRender(lua_State* L) {
     job.lights = checkLights(L, 10);
     // Seed 001's extra arguments; their chapters (adaptive AA, soft shadows, glossy, DOF)
     // read them.
-    if (lua_gettop(L) >= 11) noteEraSign(L, Era::Legacy, "seed 001's gr.render with 11-14 arguments");
+    if (lua_gettop(L) >= 11)
+        noteEraSign(L, Era::Legacy, "seed 001's gr.render with 11-14 arguments");
     if (lua_gettop(L) >= 11) job.options["aa"] = checkNumber(L, 11, "gr.render", "aa");
     if (lua_gettop(L) >= 12) job.options["ss"] = checkNumber(L, 12, "gr.render", "ss");
     if (lua_gettop(L) >= 13) job.options["dist"] = checkNumber(L, 13, "gr.render", "dist");
@@ -363,7 +364,8 @@ int grRender(lua_State* L) {
     auto frozen = snapshot(root, copies);
     r.snapshot = frozen;
     r.fallback = sceneBuilder(L).defaultMaterial;
-    r.instances = flatten(*frozen, r.fallback.get(), &r.builtShapes, sceneBuilder(L).featuresOn);
+    r.instances = flatten(*frozen, r.fallback.get(), &r.builtShapes, sceneBuilder(L).featuresOn,
+                          &r.leftOutOperands);
     job.root = frozen;
     // Copying and flattening the graph is work done for the script, as are its instances.
     chargeInstructions(L, copies.size() + r.instances.size(), "gr.render");

@@ -5,8 +5,8 @@
 
 #include <lua.hpp>
 #include <map>
-#include <set>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -19,12 +19,12 @@ namespace rb {
 
 /// How to run a scene script.
 struct SceneLoadOptions {
-    EraChoice era = EraChoice::Detect;  ///< --legacy, --modern, or decided from the scene.
-    bool unsafeLua = false;  ///< Allow os and io.
+    EraChoice era = EraChoice::Detect;           ///< --legacy, --modern, or decided from the scene.
+    bool unsafeLua = false;                      ///< Allow os and io.
     long long instructionLimit = 1'000'000'000;  ///< Lua VM instructions before we give up.
     size_t memoryLimit = size_t(2) << 30;        ///< Bytes the script may allocate.
     MemoryBudget memory;  ///< The whole run's budget (--max-memory): meshes are checked against it.
-    std::vector<std::string> assetDirs;          ///< --assets DIR, searched after the scene's folder.
+    std::vector<std::string> assetDirs;  ///< --assets DIR, searched after the scene's folder.
     bool lenient = false;  ///< --lenient: unknown calls and methods are ignored, with a warning.
     std::vector<std::string> dialects;  ///< --dialect FILE.lua: run before the scene.
     /// The script itself, when it is not to be read from the scene path (the fuzz harness);
@@ -39,6 +39,8 @@ struct LoadedRender {
     std::vector<Instance> instances;                        ///< Flattened from the snapshot.
     std::shared_ptr<const Material> fallback;               ///< For instances without a material.
     std::vector<std::shared_ptr<const Shape>> builtShapes;  ///< Made while flattening (CSG).
+    /// Compound operands left out because their feature is off, by feature.
+    std::map<std::string, size_t> leftOutOperands;
 };
 
 /// Where the time of loading a scene went (for --stats).

@@ -87,6 +87,7 @@ namespace {
 struct CompoundContext {
     std::vector<std::shared_ptr<const Shape>>* built;
     const std::set<std::string>& featuresOn;
+    std::map<std::string, size_t>* leftOut;  ///< Operands left out, by feature, or null.
 };
 
 // [flatten]
@@ -99,8 +100,17 @@ void flattenNode(const SceneNode& node, const Mat4& parentToWorld, const Materia
     std::shared_ptr<const Shape> compoundShape;
     if (node.compound && compounds.built && compounds.featuresOn.count(node.compound->feature())) {
         std::vector<std::vector<Instance>> operands(node.children.size());
-        for (size_t k = 0; k < node.children.size(); ++k)
+        for (size_t k = 0; k < node.children.size(); ++k) {
             flattenNode(*node.children[k], Mat4(1.0), material, compounds, operands[k]);
+            // An operand whose shape's chapter is switched off is left out, as it would be
+            // outside the compound (a cylinder under --features=all,-quadrics).
+            std::erase_if(operands[k], [&](const Instance& i) {
+                const char* feature = i.shape->feature();
+                if (!feature || compounds.featuresOn.count(feature)) return false;
+                if (compounds.leftOut) ++(*compounds.leftOut)[feature];
+                return true;
+            });
+        }
         compoundShape = node.compound->build(operands);
         compounds.built->push_back(compoundShape);
     }
@@ -125,7 +135,8 @@ void flattenNode(const SceneNode& node, const Mat4& parentToWorld, const Materia
 
 std::vector<Instance> flatten(const SceneNode& root, const Material* fallback,
                               std::vector<std::shared_ptr<const Shape>>* built,
-                              const std::set<std::string>& featuresOn) {
+                              const std::set<std::string>& featuresOn,
+                              std::map<std::string, size_t>* leftOut) {
     std::vector<Instance> instances;
     // Both walks below recurse once per level.
     checkGraphDepth(root);
@@ -140,7 +151,7 @@ std::vector<Instance> flatten(const SceneNode& root, const Material* fallback,
                          " node paths, more than the limit of " + std::to_string(kMaxInstances) +
                          " (a DAG that doubles at every level?)");
     }
-    flattenNode(root, Mat4(1.0), fallback, CompoundContext{built, featuresOn}, instances);
+    flattenNode(root, Mat4(1.0), fallback, CompoundContext{built, featuresOn, leftOut}, instances);
     return instances;
 }
 

@@ -74,10 +74,12 @@ inline constexpr size_t kMaxInstances = 2'000'000;
 /// all it gets `fallback`. Throws InputError on a singular transform or too many instances.
 /// A compound node whose feature is in `featuresOn` becomes one instance of the shape its
 /// children make, kept alive in `built`; without `built`, or with the feature off, it is a
-/// plain group.
+/// plain group. An operand of a built compound whose shape's feature is not in `featuresOn` is
+/// left out of it, and counted by feature in `leftOut` (when given).
 std::vector<Instance> flatten(const SceneNode& root, const Material* fallback,
                               std::vector<std::shared_ptr<const Shape>>* built = nullptr,
-                              const std::set<std::string>& featuresOn = {});
+                              const std::set<std::string>& featuresOn = {},
+                              std::map<std::string, size_t>* leftOut = nullptr);
 
 /// One gr.render call: everything needed to render one image.
 struct RenderJob {

@@ -2,6 +2,7 @@
 /// Shape: the extension point for geometry. A shape lives in its own object space.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "core/aabb.h"
@@ -21,6 +22,24 @@ class Shape {
     virtual bool occluded(const Ray& ray, double tMax) const {
         ObjectHit unused;
         return intersect(ray, tMax, unused);
+    }
+    /// Every crossing of the ray's whole line (any t, also t ≤ 0) as object-space hits sorted
+    /// by t, for a shape a line crosses at most twice; returns how many, or −1 when the shape
+    /// does not list them. Chapter 14's CSG lists an operand's crossings with it (chapter 15's
+    /// cylinders and cones) and marches through other shapes with intersect().
+    virtual int allHits(const Ray& ray, std::array<ObjectHit, 2>& out) const {
+        (void)ray;
+        (void)out;
+        return -1;
+    }
+    /// The shape's own surface coordinates at object-space point p on part `primitive` (the
+    /// uv its hits carry), with the derivatives dp/du and dp/dv; false when it has none of its
+    /// own. Chapter 10's 'surface' mapping reads them for shapes it does not know (chapter 15's
+    /// cylinders and cones); the core's shapes and meshes it maps itself.
+    virtual bool surfaceCoordinates(const Vec3& p, std::uint32_t primitive, Vec2& uv, Vec3& dpdu,
+                                    Vec3& dpdv) const {
+        (void)p, (void)primitive, (void)uv, (void)dpdu, (void)dpdv;
+        return false;
     }
     /// Object-space bounds.
     virtual AABB bounds() const = 0;

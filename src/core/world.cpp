@@ -25,7 +25,8 @@ std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& feature
     auto minWeight = job.options.find("min_weight");
     if (minWeight != job.options.end()) scene.minWeight = minWeight->second;
     // A shape whose chapter is switched off is not drawn, as if the chapter were not written.
-    std::map<std::string, size_t> hidden;
+    // CSG operands of such a shape were left out while flattening; they count the same.
+    std::map<std::string, size_t> hidden = world->source.leftOutOperands;
     std::erase_if(scene.instances, [&](const Instance& i) {
         const char* feature = i.shape->feature();
         if (!feature || features.enabled(feature)) return false;

@@ -162,6 +162,19 @@ constexpr int kMaxMarchedCrossings = 1024;
 
 }  // namespace
 
+void listedCrossings(const Ray& ray, const std::array<ObjectHit, 2>& hits, int n,
+                     CrossingList& out) {
+    bool inside = false;
+    for (int k = 0; k < n; ++k) {
+        // As in marching: parity says in or out, and the normal points out of the solid.
+        inside = !inside;
+        Crossing x{hits[k], inside};
+        if ((glm::dot(x.hit.n, ray.d) < 0.0) != inside) x.hit.n = -x.hit.n;
+        out.push(x);
+    }
+    if (inside) out.pop();
+}
+
 void marchedCrossings(const Shape& shape, const Ray& ray, CrossingList& out) {
     if (isDegenerateDirection(ray.d)) return;
     // Start just before the line enters the shape's bounds, where it is surely outside.
@@ -207,7 +220,7 @@ CsgLeaf CsgLeaf::from(const Instance& instance) {
     else if (dynamic_cast<const CsgShape*>(leaf.shape))
         leaf.kind = Kind::Csg;
     else
-        leaf.kind = Kind::Marched;
+        leaf.kind = Kind::Other;
     return leaf;
 }
 
@@ -229,9 +242,17 @@ void CsgLeaf::crossings(const Ray& ray, CrossingList& out) const {
         case Kind::Csg:
             static_cast<const CsgShape*>(shape)->crossings(local, out);
             break;
-        case Kind::Marched:
-            marchedCrossings(*shape, local, out);
+        case Kind::Other: {
+            // A shape that lists its crossings (a cylinder or cone) is asked once; any other
+            // is marched through with its closest hit.
+            std::array<ObjectHit, 2> hits;
+            const int n = isDegenerateDirection(local.d) ? 0 : shape->allHits(local, hits);
+            if (n >= 0)
+                listedCrossings(local, hits, n, out);
+            else
+                marchedCrossings(*shape, local, out);
             break;
+        }
         case Kind::Empty:
             break;
     }

@@ -35,6 +35,11 @@ void combineCrossings(CsgOp op, const CrossingList& a, const CrossingList& b, Cr
 void sphereCrossings(const Ray& ray, CrossingList& out);
 /// Every crossing of the whole line with the unit cube [0,1]³.
 void boxCrossings(const Ray& ray, CrossingList& out);
+/// The crossings of a shape that lists its own (Shape::allHits, n of them in `hits`, sorted):
+/// they alternate entering, leaving; an unpaired last one (an open surface grazed) is dropped,
+/// and normals are turned to point out of the solid, as marchedCrossings does.
+void listedCrossings(const Ray& ray, const std::array<ObjectHit, 2>& hits, int n,
+                     CrossingList& out);
 /// Every crossing of the whole line with any closed shape, found by asking it for its
 /// closest hit again and again from just past the previous one (meshes, later chapters'
 /// shapes). Crossings alternate entering, leaving from outside the shape's bounds; normals
@@ -43,8 +48,9 @@ void marchedCrossings(const Shape& shape, const Ray& ray, CrossingList& out);
 
 /// One operand of a CSG node: a closed shape placed in the node's space, with its material.
 struct CsgLeaf {
-    /// How the leaf lists its crossings: exactly for the shapes it knows, else by marching.
-    enum class Kind { Empty, Sphere, Box, Csg, Marched };
+    /// How the leaf lists its crossings: exactly for the shapes it knows, else with the
+    /// shape's own Shape::allHits (cylinders, cones), else by marching.
+    enum class Kind { Empty, Sphere, Box, Csg, Other };
     Kind kind = Kind::Empty;  ///< Empty: an operand with no shape at all.
     const Shape* shape = nullptr;
     const Material* material = nullptr;  ///< Null: the CSG node's own.

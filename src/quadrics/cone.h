@@ -33,6 +33,7 @@ class Cone final : public Quadric {
         : Quadric(capped), topRadius_(topRadius), profile_(topRadius) {}
     int crossings(const Ray& ray, std::array<QuadricCrossing, 2>& out) const override;
     Vec3 normal(const Vec3& p, QuadricPart part) const override;
+    double radiusSlope() const override { return profile_.b; }
     /// The radius at y = +1 (0: a pointed cone).
     double topRadius() const { return topRadius_; }
 

@@ -87,6 +87,25 @@ Vec2 quadricUv(const Vec3& p, QuadricPart part) {
     return {u, 0.5 * (p.y + 1.0)};
 }
 
+bool Quadric::surfaceCoordinates(const Vec3& p, std::uint32_t part, Vec2& uv, Vec3& dpdu,
+                                 Vec3& dpdv) const {
+    uv = quadricUv(p, static_cast<QuadricPart>(part));
+    if (static_cast<QuadricPart>(part) != QuadricPart::Side) {
+        // The cap's disk: u = (x + 1)/2, v = (z + 1)/2.
+        dpdu = Vec3(2.0, 0.0, 0.0);
+        dpdv = Vec3(0.0, 0.0, 2.0);
+        return true;
+    }
+    // p = (r(y) sin φ, y, r(y) cos φ) with φ = 2πu and y = 2v − 1: dp/dφ = (z, 0, −x), and
+    // dp/dy = (r'·sin φ, 1, r'·cos φ), where sin φ = x/r (0 at a cone's apex).
+    constexpr double twoPi = 2.0 * glm::pi<double>();
+    dpdu = twoPi * Vec3(p.z, 0.0, -p.x);
+    const double r = std::sqrt(p.x * p.x + p.z * p.z);
+    const double slope = radiusSlope();
+    dpdv = r > 0.0 ? 2.0 * Vec3(slope * p.x / r, 1.0, slope * p.z / r) : Vec3(0.0, 2.0, 0.0);
+    return true;
+}
+
 ObjectHit Quadric::hitAt(const Ray& ray, const QuadricCrossing& c) const {
     ObjectHit hit;
     hit.t = c.t;

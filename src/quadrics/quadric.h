@@ -73,12 +73,17 @@ class Quadric : public Shape {
     /// Every crossing as an object-space hit (t, outward normal, uv, part as primitive),
     /// sorted by t, t ≤ 0 included; returns how many (0, 1 or 2). This is what CSG needs: a
     /// capped shape gives the interval [out[0].t, out[1].t] where the line is inside it.
-    int allHits(const Ray& ray, std::array<ObjectHit, 2>& out) const;
+    int allHits(const Ray& ray, std::array<ObjectHit, 2>& out) const override;
 
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
     AABB bounds() const override { return AABB{Vec3(-1.0), Vec3(1.0)}; }
     const char* feature() const override { return "quadrics"; }
+    /// quadricUv at p on `part`, with dp/du and dp/dv: textures wrap round the side.
+    bool surfaceCoordinates(const Vec3& p, std::uint32_t part, Vec2& uv, Vec3& dpdu,
+                            Vec3& dpdv) const override;
+    /// dr/dy of the side's radius r(y): 0 for a cylinder.
+    virtual double radiusSlope() const { return 0.0; }
 
   protected:
     explicit Quadric(bool capped) : capped_(capped) {}

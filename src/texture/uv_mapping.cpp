@@ -111,7 +111,8 @@ SurfaceUV surfaceUV(const Hit& hit, UVMapping mapping) {
     } else if (const auto* smooth = dynamic_cast<const SmoothMesh*>(shape)) {
         // Chapter 9's smooth mesh wraps a Mesh: the same triangles, the same `vt`.
         s = meshUV(smooth->mesh(), hit.primitive, hit.uv, p);
-    } else {
+    } else if (!shape->surfaceCoordinates(p, hit.primitive, s.uv, s.dpdu, s.dpdv)) {
+        // A shape with no coordinates of its own (a CSG node) is projected.
         s = planarUV(p);
     }
     // Tangent vectors transform with the object's linear part.

@@ -48,8 +48,9 @@ SurfaceUV cylindricalUV(const Vec3& p);
 SurfaceUV meshUV(const Mesh& mesh, std::uint32_t triangle, const Vec2& barycentric, const Vec3& p);
 
 /// The (u, v) of a world-space hit under `mapping`, with dp/du and dp/dv in world space. A hit's
-/// own uv (the barycentrics on a mesh) is left as the intersection stored it; a shape kind
-/// with no parameterisation of its own falls back to the planar projection.
+/// own uv (the barycentrics on a mesh) is left as the intersection stored it. A later chapter's
+/// shape maps itself (Shape::surfaceCoordinates: a cylinder's or cone's angle and height); a
+/// shape with no parameterisation of its own (a CSG node) falls back to the planar projection.
 SurfaceUV surfaceUV(const Hit& hit, UVMapping mapping = UVMapping::Surface);
 
 }  // namespace rb
