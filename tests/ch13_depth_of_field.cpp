@@ -61,37 +61,6 @@ Vec3 atDepth(const rb::PinholeCamera& camera, const rb::Ray& ray, double depth) 
     return ray.o + t * ray.d;
 }
 
-/// Q(a, x) = Γ(a, x) / Γ(a), the regularised upper incomplete gamma function.
-/// Source: Numerical Recipes, 3rd ed., §6.2: the series for x < a + 1, Lentz's continued
-/// fraction otherwise.
-double upperGammaQ(double a, double x) {
-    if (x <= 0.0) return 1.0;
-    const double prefix = std::exp(a * std::log(x) - x - std::lgamma(a));
-    if (x < a + 1.0) {
-        double term = 1.0 / a, sum = term;
-        for (int k = 1; k < 100000 && std::abs(term) > 1e-17 * std::abs(sum); ++k) {
-            term *= x / (a + k);
-            sum += term;
-        }
-        return std::max(0.0, 1.0 - prefix * sum);
-    }
-    const double tiny = 1e-300;
-    double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-    for (int i = 1; i < 100000; ++i) {
-        const double an = -i * (i - a);
-        b += 2.0;
-        d = an * d + b;
-        if (std::abs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::abs(c) < tiny) c = tiny;
-        d = 1.0 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1.0) < 1e-16) break;
-    }
-    return prefix * h;
-}
-
 /// The rings and sectors of the disk's equal-area cells.
 constexpr int kRings = 10, kSectors = 16;
 
@@ -119,7 +88,7 @@ double diskChiSquareP(const std::vector<Vec2>& points) {
     REQUIRE(expected >= 5.0);  // no pooling needed at these counts
     double chi2 = 0.0;
     for (double o : observed) chi2 += (o - expected) * (o - expected) / expected;
-    return upperGammaQ(0.5 * (observed.size() - 1), 0.5 * chi2);
+    return rbtest::upperGammaQ(0.5 * (observed.size() - 1), 0.5 * chi2);
 }
 
 /// Šidák's per-test level for the three chi-square tests at family-wise α = 0.01.
@@ -359,7 +328,7 @@ SCENARIO("the lens samples are uniform over the aperture", "[ch13][ex13.1][ex13.
             THEN("a chi-square test accepts the density 1/4") {
                 double chi2 = 0.0;
                 for (double o : observed) chi2 += (o - 250.0) * (o - 250.0) / 250.0;
-                const double p = upperGammaQ(0.5 * 255, 0.5 * chi2);
+                const double p = rbtest::upperGammaQ(0.5 * 255, 0.5 * chi2);
                 INFO("p = " << p);
                 CHECK(inside);
                 CHECK(p > kPerTestAlpha);

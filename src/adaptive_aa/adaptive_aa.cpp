@@ -15,22 +15,6 @@ namespace {
 /// The most rays per pixel the random and grid samplers may take (256 × 256).
 constexpr int kMaxSamples = 65536;
 
-/// `value` as text, for messages ("0.5", "16").
-std::string show(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
-/// A command-line number, or InputError naming `option`.
-double parseNumber(const std::string& option, const std::string& text) {
-    double v = 0.0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-        throw InputError(option + ": expected a number, got '" + text + "'");
-    return v;
-}
-
 /// True when n is a perfect square.
 bool isSquare(int n) {
     const int r = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n))));
@@ -63,7 +47,7 @@ AaSettings aaSettings(const RenderContext& context) {
     } else if (!std::isnan(seedAa)) {
         if (seedAa != 0.0 && seedAa != 1.0)
             throw InputError("gr.render: argument 11 (aa) must be 0 (off) or 1 (on), got " +
-                             show(seedAa));
+                             formatNumber(seedAa));
         if (seedAa == 1.0) s.mode = AaMode::Uniform;
         where = "gr.render's aa";
     }
@@ -71,7 +55,7 @@ AaSettings aaSettings(const RenderContext& context) {
     const std::string spp = context.cliOption("spp");
     s.samples = 4;
     if (!spp.empty())
-        s.samples = static_cast<int>(parseNumber("--spp", spp));
+        s.samples = static_cast<int>(parseNumberOption("--spp", spp));
     else if (!std::isnan(context.sceneOption("aa_samples", absent)))
         s.samples = static_cast<int>(context.sceneOption("aa_samples", 4));
     const std::string sppSource = spp.empty() ? "aa_samples" : "--spp";
@@ -91,16 +75,16 @@ AaSettings aaSettings(const RenderContext& context) {
     // The adaptive sampler's threshold and depth.
     const std::string threshold = context.cliOption("aa-threshold");
     s.adaptive.threshold = threshold.empty() ? context.sceneOption("aa_threshold", 0.1)
-                                             : parseNumber("--aa-threshold", threshold);
+                                             : parseNumberOption("--aa-threshold", threshold);
     if (s.adaptive.threshold < 0.0)
         throw InputError("--aa-threshold: expected a number >= 0, got " +
-                         show(s.adaptive.threshold));
+                         formatNumber(s.adaptive.threshold));
     const std::string depth = context.cliOption("aa-depth");
     const double d =
-        depth.empty() ? context.sceneOption("aa_depth", 3) : parseNumber("--aa-depth", depth);
+        depth.empty() ? context.sceneOption("aa_depth", 3) : parseNumberOption("--aa-depth", depth);
     if (d != std::floor(d) || d < 0 || d > kMaxAdaptiveDepth)
         throw InputError("--aa-depth: expected a whole number from 0 to " +
-                         std::to_string(kMaxAdaptiveDepth) + ", got " + show(d));
+                         std::to_string(kMaxAdaptiveDepth) + ", got " + formatNumber(d));
     s.adaptive.maxDepth = static_cast<int>(d);
     return s;
 }

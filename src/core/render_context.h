@@ -2,10 +2,14 @@
 /// RenderContext: what a feature sees when it plugs itself into one render.
 #pragma once
 
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "core/instance.h"
 #include "core/scene_graph.h"
 
@@ -43,5 +47,21 @@ struct RenderContext {
         return it == job.options.end() ? fallback : it->second;
     }
 };
+
+/// A number as the features' messages print it ("0.5", "16").
+inline std::string formatNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+/// A feature's command-line number (`--option=text`), or InputError naming the option.
+inline double parseNumberOption(const std::string& option, const std::string& text) {
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+        throw InputError(option + ": expected a number, got '" + text + "'");
+    return v;
+}
 
 }  // namespace rb

@@ -14,22 +14,6 @@ namespace rb {
 
 namespace {
 
-/// `value` as text, for messages ("0.5", "16").
-std::string show(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
-/// A command-line number, or InputError naming `option`.
-double parseNumber(const std::string& option, const std::string& text) {
-    double v = 0.0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-        throw InputError(option + ": expected a number, got '" + text + "'");
-    return v;
-}
-
 /// One setting: --cli if given, else the scene option, else seed 001's value (when it has
 /// one: `fromSeed`), else `fallback`. `source` receives where it came from, for messages.
 double pick(const RenderContext& context, const char* cli, const char* scene, bool fromSeed,
@@ -37,7 +21,7 @@ double pick(const RenderContext& context, const char* cli, const char* scene, bo
     const std::string text = context.cliOption(cli);
     if (!text.empty()) {
         source = std::string("--") + cli;
-        return parseNumber(source, text);
+        return parseNumberOption(source, text);
     }
     const double absent = std::nan("");  // scene options are always finite
     const double v = context.sceneOption(scene, absent);
@@ -61,14 +45,14 @@ ThinLensSettings lensSettings(const RenderContext& context) {
         throw InputError(
             "gr.render: dof (in {aperture, focalLength, dof}) must be a whole number "
             "from 0 (off) to 256, got " +
-            show(seedDof));
+            formatNumber(seedDof));
     const bool seed = seedDof > 0.0;
     std::string where;
     s.aperture = pick(context, "dof-aperture", "dof_aperture", seed,
                       context.sceneOption("aperture", 0.0), 0.0, where);
     if (!(s.aperture >= 0.0))
         throw InputError(where + ": the aperture must be 0 (a pinhole) or more, got " +
-                         show(s.aperture));
+                         formatNumber(s.aperture));
     // The focus: seed 000's distance from the eye to the view target, |view| (A4's view is
     // eye-to-target when the scene is written with a target in mind).
     const double viewTarget = glm::length(context.job.camera.view);
@@ -76,12 +60,12 @@ ThinLensSettings lensSettings(const RenderContext& context) {
                            context.sceneOption("focal_length", viewTarget), viewTarget, where);
     if (!(s.focusDistance > 0.0) || !std::isfinite(s.focusDistance))
         throw InputError(where + ": the focus distance must be above 0, got " +
-                         show(s.focusDistance));
+                         formatNumber(s.focusDistance));
     const double samples =
         pick(context, "dof-samples", "dof_samples", seed, seedDof * seedDof, 16.0, where);
     if (samples < 1.0 || samples > kMaxLensSamples || samples != std::floor(samples))
         throw InputError(where + ": expected a whole number of lens samples from 1 to " +
-                         std::to_string(kMaxLensSamples) + ", got " + show(samples));
+                         std::to_string(kMaxLensSamples) + ", got " + formatNumber(samples));
     s.samples = static_cast<int>(samples);
     // The shape: a name on the command line, a number in the scene (0 disk, 1 square).
     const std::string shape = context.cliOption("dof-shape");

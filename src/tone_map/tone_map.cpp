@@ -18,22 +18,6 @@ namespace rb {
 
 namespace {
 
-/// `value` as text, for messages.
-std::string show(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
-/// A command-line number, or InputError naming `option`.
-double parseNumber(const std::string& option, const std::string& text) {
-    double v = 0.0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-        throw InputError(option + ": expected a number, got '" + text + "'");
-    return v;
-}
-
 /// A channel as the tone map reads it: negative and non-finite values are 0.
 double usable(float c) {
     return std::isfinite(c) && c > 0.0f ? static_cast<double>(c) : 0.0;
@@ -60,9 +44,11 @@ ToneMapSettings toneMapSettings(const RenderContext& context) {
     }
     // The key a: --tone-key, else the scene's, else 0.18 (Reinhard's "normal key").
     const std::string key = context.cliOption("tone-key");
-    s.key = key.empty() ? context.sceneOption("tone_key", 0.18) : parseNumber("--tone-key", key);
+    s.key =
+        key.empty() ? context.sceneOption("tone_key", 0.18) : parseNumberOption("--tone-key", key);
     if (!(s.key > 0.0 && s.key <= 100.0))
-        throw InputError("--tone-key: expected a key above 0 and at most 100, got " + show(s.key));
+        throw InputError("--tone-key: expected a key above 0 and at most 100, got " +
+                         formatNumber(s.key));
     // L_white: a number, "max" (0: the image's largest scaled luminance) or "none" (< 0).
     const std::string white = context.cliOption("tone-white");
     if (white == "max")
@@ -70,7 +56,7 @@ ToneMapSettings toneMapSettings(const RenderContext& context) {
     else if (white == "none")
         s.white = -1.0;
     else if (!white.empty()) {
-        s.white = parseNumber("--tone-white", white);
+        s.white = parseNumberOption("--tone-white", white);
         if (s.white <= 0.0)
             throw InputError("--tone-white: expected a positive number, max or none, got '" +
                              white + "'");
@@ -79,9 +65,9 @@ ToneMapSettings toneMapSettings(const RenderContext& context) {
     // Exposure in stops.
     const std::string exposure = context.cliOption("exposure");
     s.exposure = exposure.empty() ? context.sceneOption("exposure", 0.0)
-                                  : parseNumber("--exposure", exposure);
+                                  : parseNumberOption("--exposure", exposure);
     if (std::abs(s.exposure) > 30.0)
-        throw InputError("--exposure: expected -30 to 30 stops, got " + show(s.exposure));
+        throw InputError("--exposure: expected -30 to 30 stops, got " + formatNumber(s.exposure));
     // sRGB: --srgb, else the scene's, else on exactly when an operator was chosen.
     const std::string srgb = context.cliOption("srgb");
     if (srgb == "on")
