@@ -371,7 +371,10 @@ def export(args) -> int:
         sys.exit(f"assignment: chapter {n} is not written; the written chapters are "
                  f"{' '.join(str(c) for c in sorted(chapters))}")
     dest = Path(args.dir).resolve()
-    if dest == root or root in dest.parents and not dest.name.startswith(("assignment", "build")):
+    # Inside the repository only under a folder of its own: assignment-chNN/ or the build
+    # folder (make test's grade test exports into build/grade-test/class/NAME).
+    if dest == root or root in dest.parents and not dest.relative_to(root).parts[0].startswith(
+            ("assignment", "build")):
         sys.exit(f"assignment: refusing to write into {dest}")
     files = [p for p in tracked_files(root) if not left_out(p)
              and (owner(p, chapters) or 0) <= n and shared_test_fits(root, p, chapters, n)]
