@@ -19,6 +19,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <string>
@@ -84,7 +85,8 @@ rb::Mat4 randomTransform(rbtest::Rng& rng) {
 }  // namespace
 
 // [cylinder-closed-form]
-SCENARIO("a ray meets the cylinder's side and caps where the closed form puts them", "[ch15][ex15.1][ex15.3]") {
+SCENARIO("a ray meets the cylinder's side and caps where the closed form puts them",
+         "[ch15][ex15.1][ex15.3]") {
     GIVEN("the capped unit cylinder (radius 1, y from −1 to 1)") {
         const Cylinder cylinder;
         WHEN("a ray from (0, 0.3, 5) travels along −z") {
@@ -139,7 +141,8 @@ SCENARIO("a ray meets the cylinder's side and caps where the closed form puts th
 // [cylinder-closed-form]
 
 // [cone-closed-form]
-SCENARIO("a ray meets the cone and the frustum where the closed form puts them", "[ch15][ex15.2][ex15.4]") {
+SCENARIO("a ray meets the cone and the frustum where the closed form puts them",
+         "[ch15][ex15.2][ex15.4]") {
     GIVEN("the capped unit cone: radius 1 at y = −1, apex at y = 1, so r(y) = (1 − y)/2") {
         const Cone cone;
         WHEN("a ray from (5, y₀, 0) travels along −x, for several heights y₀") {
@@ -191,7 +194,8 @@ SCENARIO("a ray meets the cone and the frustum where the closed form puts them",
 }
 // [cone-closed-form]
 
-SCENARIO("on random rays every hit lies on the surface with the gradient as its normal", "[ch15][ex15.1][ex15.2][ex15.4]") {
+SCENARIO("on random rays every hit lies on the surface with the gradient as its normal",
+         "[ch15][ex15.1][ex15.2][ex15.4]") {
     rbtest::Rng rng(seed());
     const Cylinder cylinder, tube(false);
     const Cone cone, openCone(0.0, false), frustum(0.35), openFrustum(0.35, false);
@@ -309,7 +313,8 @@ SCENARIO("no ray slips between a cap and the side", "[ch15][stability][ex15.1][e
 // [seam-watertight]
 
 // [apex]
-SCENARIO("the cone's apex gives a hit with a finite unit normal, never NaN", "[ch15][stability][ex15.2][ex15.4]") {
+SCENARIO("the cone's apex gives a hit with a finite unit normal, never NaN",
+         "[ch15][stability][ex15.2][ex15.4]") {
     rbtest::Rng rng(seed() + 3);
     const Cone cone, openCone(0.0, false);
     GIVEN("rays aimed exactly at the apex (0, 1, 0) from every direction") {
@@ -354,7 +359,8 @@ SCENARIO("the cone's apex gives a hit with a finite unit normal, never NaN", "[c
 }
 // [apex]
 
-SCENARIO("rays along the axis meet the caps, and miss an open tube", "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
+SCENARIO("rays along the axis meet the caps, and miss an open tube",
+         "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
     const Cylinder cylinder, tube(false);
     const Cone cone, openCone(0.0, false), frustum(0.5, true);
     WHEN("a ray runs down the axis from above") {
@@ -484,7 +490,8 @@ SCENARIO("rays spawned from a cylinder or cone never hit it again at once, at ev
 }
 
 // [caps-refract]
-SCENARIO("light passes through a glass cylinder's caps as through a glass slab", "[ch15][ex15.1][ex15.3]") {
+SCENARIO("light passes through a glass cylinder's caps as through a glass slab",
+         "[ch15][ex15.1][ex15.3]") {
     // Seed 001 saw the caps of its glass cylinders black. Through two parallel caps a ray
     // must see what it sees through a glass box of the same thickness: the same two planes,
     // the same normals, the same Fresnel shares.
@@ -528,11 +535,14 @@ SCENARIO("light passes through a glass cylinder's caps as through a glass slab",
 
 SCENARIO("seed 001's calls and raybook's own make the shapes the page describes", "[ch15]") {
     const rb::FeatureSet features = rbtest::chapters(15);
+    // Each loaded scene owns its shapes, so it is kept for the whole scenario: the pointers
+    // shapeOf returns must not outlive it.
+    std::deque<std::vector<rb::LoadedRender>> loaded;
     auto shapeOf = [&](const std::string& call) -> const Quadric* {
-        const auto renders =
+        const auto& renders = loaded.emplace_back(
             rbtest::loadSceneText("root = gr.node('root')\nlocal s = " + call +
                                       "\nroot:add_child(s)\n" + rbtest::renderLine(),
-                                  features);
+                                  features));
         REQUIRE(renders.at(0).instances.size() == 1);
         return dynamic_cast<const Quadric*>(renders[0].instances[0].shape);
     };
