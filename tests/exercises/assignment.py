@@ -511,7 +511,8 @@ def run_tests(program: Path, names: list[str], cwd: Path) -> list[dict]:
         code, out = run([str(program), catch_escape(name)], TEST_TIMEOUT, cwd=cwd)
         why = ""
         if code != 0:
-            flat = " ".join(out.split())
+            # Catch2 wraps long messages after a hyphen ("ch10-" / "mesh"): rejoin those words.
+            flat = " ".join(re.sub(r"(?<=\w)-\n\s*(?=\w)", "-", out).split())
             stub = re.search(r"exercise \S+ \(.*?\) is not written yet: .*?replace this stub", flat)
             failed = re.search(r"(\S+:\d+: FAILED:.*?)(?: -{20}| ={20}|$)", flat)
             why = (stub.group(0) if stub else f"timed out after {TEST_TIMEOUT} s" if code == 124
