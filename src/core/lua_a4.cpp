@@ -154,15 +154,7 @@ int grOption(lua_State* L) {
                              " (" + title + "), which this build does not have");
         throw InputError("gr.option: unknown option '" + name + "'");
     }
-    const auto& spec = builder.optionNames.at(name);
-    const double value = checkNumber(L, 2, "gr.option", "value");
-    if (value < spec.min || value > spec.max || (spec.integer && value != std::floor(value))) {
-        char range[96];
-        std::snprintf(range, sizeof range, "%s from %g to %g",
-                      spec.integer ? "a whole number" : "a number", spec.min, spec.max);
-        throw InputError("gr.option: '" + name + "' must be " + range);
-    }
-    builder.sceneOptions[name] = value;
+    setSceneOption(L, name, checkNumber(L, 2, "gr.option", "value"), "gr.option: '" + name + "'");
     return 0;
 }
 

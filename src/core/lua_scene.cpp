@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -289,6 +290,18 @@ void LuaBindings::materialField(const char* name, int chapter) {
 
 void LuaBindings::option(const char* name, int chapter, double min, double max, bool integer) {
     sceneBuilder(L_).optionNames[name] = {chapter, min, max, integer};
+}
+
+void setSceneOption(lua_State* L, const std::string& name, double value, const std::string& what) {
+    SceneBuilder& builder = sceneBuilder(L);
+    const auto& spec = builder.optionNames.at(name);
+    if (value < spec.min || value > spec.max || (spec.integer && value != std::floor(value))) {
+        char range[96];
+        std::snprintf(range, sizeof range, "%s from %g to %g",
+                      spec.integer ? "a whole number" : "a number", spec.min, spec.max);
+        throw InputError(what + " must be " + range);
+    }
+    builder.sceneOptions[name] = value;
 }
 
 int missingChapter(lua_State* L, const std::string& name, std::string& title) {

@@ -202,6 +202,11 @@ PointLight checkLight(lua_State* L, int arg, const char* call, const char* argNa
 /// The table of lights at argument arg: at least one, each made by gr.light.
 std::vector<PointLight> checkLights(lua_State* L, int arg);
 
+/// Store scene option `name` (a gr.option name) after checking the range gr.option allows;
+/// out of range throws InputError "<what> must be a number from MIN to MAX", where `what`
+/// names the call and argument, e.g. "gr.option: 'max_depth'" or "gr.lens: field 'aperture'".
+void setSceneOption(lua_State* L, const std::string& name, double value, const std::string& what);
+
 /// The chapter that provides `name` when this build lacks it, else 0 (the name is then
 /// simply unknown: a typo, or not a name of that kind).
 int missingChapter(lua_State* L, const std::string& name, std::string& title);

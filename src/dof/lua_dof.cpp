@@ -25,17 +25,9 @@ namespace rb {
 
 namespace {
 
-/// Store a scene option as gr.option would, checking it against the range gr.option allows.
+/// Store a scene option as gr.option would, naming gr.lens's field when it is out of range.
 void setOption(lua_State* L, const char* name, const char* field, double value) {
-    SceneBuilder& builder = sceneBuilder(L);
-    const auto& spec = builder.optionNames.at(name);
-    if (value < spec.min || value > spec.max || (spec.integer && value != std::floor(value))) {
-        char range[96];
-        std::snprintf(range, sizeof range, "%s from %g to %g",
-                      spec.integer ? "a whole number" : "a number", spec.min, spec.max);
-        throw InputError(std::string("gr.lens: field '") + field + "' must be " + range);
-    }
-    builder.sceneOptions[name] = value;
+    setSceneOption(L, name, value, std::string("gr.lens: field '") + field + "'");
 }
 
 // [lua-lens]

@@ -28,17 +28,9 @@ namespace {
 /// The fields gr.tone_map accepts, for the unknown-field message.
 constexpr const char* kFields = "operator, key, white, exposure, srgb, sharpness, threshold";
 
-/// Store a scene option as gr.option would, checking it against the range gr.option allows.
+/// Store a scene option as gr.option would, naming gr.tone_map's field when it is out of range.
 void setOption(lua_State* L, const char* field, const char* name, double value) {
-    SceneBuilder& builder = sceneBuilder(L);
-    const auto& spec = builder.optionNames.at(name);
-    if (value < spec.min || value > spec.max || (spec.integer && value != std::floor(value))) {
-        char range[96];
-        std::snprintf(range, sizeof range, "%s from %g to %g",
-                      spec.integer ? "a whole number" : "a number", spec.min, spec.max);
-        throw InputError(std::string("gr.tone_map: field '") + field + "' must be " + range);
-    }
-    builder.sceneOptions[name] = value;
+    setSceneOption(L, name, value, std::string("gr.tone_map: field '") + field + "'");
 }
 
 /// A number field of the gr.tone_map table stored as option `name`, when present.
