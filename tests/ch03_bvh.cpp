@@ -18,15 +18,15 @@
 #include <string>
 #include <vector>
 
-#include "core/aggregate.h"
-#include "core/box.h"
 #include "bvh/bvh.h"
 #include "bvh/bvh_aggregate.h"
-#include "core/error.h"
 #include "bvh/mesh.h"
 #include "bvh/obj.h"
-#include "core/sphere.h"
 #include "bvh/triangle.h"
+#include "core/aggregate.h"
+#include "core/box.h"
+#include "core/error.h"
+#include "core/sphere.h"
 #include "test_helpers.h"
 
 using rb::Vec3;
@@ -45,21 +45,39 @@ bool hitsTriangle(const rb::Ray& ray, const Vec3& p0, const Vec3& p1, const Vec3
     return rb::intersectTriangle(rb::WatertightRay(ray), p0, p1, p2, kInf, th);
 }
 
-/// The closest hit of a ray on a mesh by testing every triangle: the reference the BVH must
-/// reproduce. Returns the slot of the closest triangle, or -1.
-long bruteForceClosest(const rb::Mesh& mesh, const rb::Ray& ray, double& tClosest) {
+/// The closest hit of a ray on a mesh's triangles by testing every one, in double precision:
+/// the reference the BVH must reproduce. Among triangles hit at exactly the same distance the
+/// lowest OBJ index wins, the mesh's rule. Returns that OBJ index, or -1.
+long bruteForceClosest(const std::vector<rb::Mesh::Triangle>& triangles, const rb::Ray& ray,
+                       double& tClosest, double tMax = kInf) {
     const rb::WatertightRay wray(ray);
     long best = -1;
-    tClosest = kInf;
-    for (size_t i = 0; i < mesh.triangleCount(); ++i) {
-        const auto& v = mesh.triangle(i);
+    tClosest = tMax;
+    for (const rb::Mesh::Triangle& tri : triangles) {
         rb::TriangleHit th;
-        if (rb::intersectTriangle(wray, v[0], v[1], v[2], tClosest, th)) {
-            tClosest = th.t;
-            best = static_cast<long>(i);
-        }
+        const double limit = best >= 0 ? std::nextafter(tClosest, kInf) : tClosest;
+        if (!rb::intersectTriangle(wray, tri.v[0], tri.v[1], tri.v[2], limit, th)) continue;
+        if (th.t == tClosest && static_cast<long>(tri.source) >= best) continue;
+        tClosest = th.t;
+        best = tri.source;
     }
     return best;
+}
+
+/// A BVH of the given layout over the triangles' boxes; its slots index `triangles` through
+/// primitiveOrder().
+rb::BVH bvhOver(const std::vector<rb::Mesh::Triangle>& triangles, rb::BVHLayout layout) {
+    std::vector<rb::AABB> boxes;
+    for (const rb::Mesh::Triangle& tri : triangles) {
+        rb::AABB b;
+        for (const Vec3& p : tri.v) b.extend(p);
+        boxes.push_back(b);
+    }
+    rb::BVH bvh;
+    rb::BVHBuildOptions options;
+    options.layout = layout;
+    bvh.build(boxes, options);
+    return bvh;
 }
 
 /// A random ray aimed into a box: from a random point on a sphere twice the box's diagonal
@@ -112,6 +130,44 @@ TreeReport walkTree(const rb::BVH& bvh, size_t primitiveCount, SlotBounds primit
             }
         }
     }
+    return report;
+}
+
+/// Walk a wide BVH from the root: every child's float box must contain the double boxes of
+/// everything below it (they were rounded outwards), and every slot must be in one leaf.
+template <class SlotBounds>
+TreeReport walkWide(const rb::BVH& bvh, size_t primitiveCount, SlotBounds primitiveBounds) {
+    TreeReport report;
+    report.slotSeen.assign(primitiveCount, 0);
+    // Returns the bounds of the subtree under node `index`.
+    auto walk = [&](auto&& self, std::uint32_t index) -> rb::AABB {
+        const rb::WideNode& node = bvh.wideNodes().at(index);
+        ++report.nodesReached;
+        rb::AABB all;
+        for (int c = 0; c < 4; ++c) {
+            rb::AABB childBox;
+            for (int axis = 0; axis < 3; ++axis) {
+                childBox.lo[axis] = node.lo[axis][c];
+                childBox.hi[axis] = node.hi[axis][c];
+            }
+            if (childBox.empty()) continue;  // an unused child
+            rb::AABB inside;
+            if (node.count[c] > 0) {
+                for (std::uint32_t slot = node.child[c]; slot < node.child[c] + node.count[c];
+                     ++slot) {
+                    ++report.slotSeen.at(slot);
+                    if (!contains(childBox, primitiveBounds(slot))) ++report.badLeafBounds;
+                    inside.extend(primitiveBounds(slot));
+                }
+            } else {
+                inside = self(self, node.child[c]);
+                if (!contains(childBox, inside)) ++report.badChildBounds;
+            }
+            all.extend(inside);
+        }
+        return all;
+    };
+    walk(walk, 0);
     return report;
 }
 
@@ -357,7 +413,7 @@ SCENARIO("a degenerate triangle is never hit", "[ch03][ex3.1]") {
                                  {{0, 1, 3}, {0, 1, 2}, {2, 2, 2}});
             CHECK(mesh->triangleCount() == 1);
             CHECK(mesh->droppedCount() == 2);
-            CHECK(mesh->sourceIndex(0) == 1);
+            CHECK(mesh->triangles().at(0).source == 1);
         }
         THEN("a mesh with no good triangle at all is an InputError naming it") {
             CHECK_THROWS_AS(
@@ -374,11 +430,14 @@ SCENARIO("a degenerate triangle is never hit", "[ch03][ex3.1]") {
 
 // [ch03-bvh-equals-brute-force]
 // [ch03-fast-equals-simple]
-SCENARIO("the compact SSE traversal finds exactly what the simple traversal finds",
-         "[ch03][ex3.2]") {
-    GIVEN("the bunny's BVH and 5 000 random rays aimed into its bounds (fixed seed)") {
+SCENARIO("the wide traversal finds exactly what the binary traversal finds", "[ch03][ex3.2]") {
+    GIVEN("binary and wide BVHs over the bunny's triangles and 5 000 random rays into its bounds") {
         const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
-        const rb::BVH& bvh = bunny.bvh();
+        const auto triangles = bunny.triangles();
+        const rb::BVH binary = bvhOver(triangles, rb::BVHLayout::Binary);
+        const rb::BVH wide = bvhOver(triangles, rb::BVHLayout::Wide);
+        REQUIRE(binary.primitiveOrder() == wide.primitiveOrder());  // one build, two layouts
+        const auto& order = wide.primitiveOrder();
         rbtest::Rng rng(31337);
         int closestMismatch = 0, anyMismatch = 0, hits = 0;
         for (int k = 0; k < 5000; ++k) {
@@ -386,33 +445,39 @@ SCENARIO("the compact SSE traversal finds exactly what the simple traversal find
             const rb::WatertightRay wray(ray);
             // The same leaf test for both traversals: the nearest triangle so far.
             auto leafFor = [&](long& best) {
-                return [&](std::uint32_t slot, double& tMax) {
-                    const auto& v = bunny.triangle(slot);
-                    rb::TriangleHit th;
-                    if (!rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, th)) return false;
-                    tMax = th.t;
-                    best = slot;
-                    return true;
+                return [&](std::uint32_t first, std::uint32_t count, double& tMax) {
+                    bool found = false;
+                    for (std::uint32_t slot = first; slot < first + count; ++slot) {
+                        const auto& v = triangles[order[slot]].v;
+                        rb::TriangleHit th;
+                        if (!rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, th)) continue;
+                        tMax = th.t;
+                        best = slot;
+                        found = true;
+                    }
+                    return found;
                 };
             };
-            long bestSimple = -1, bestFast = -1;
-            double tSimple = kInf, tFast = kInf;
-            const bool foundSimple = bvh.closestSimple(ray, tSimple, leafFor(bestSimple));
-            const bool foundFast = bvh.closest(ray, tFast, leafFor(bestFast));
-            hits += foundFast;
-            if (foundSimple != foundFast || bestSimple != bestFast || tSimple != tFast)
-                ++closestMismatch;
-            auto anyLeaf = [&](std::uint32_t slot, double tMax) {
-                const auto& v = bunny.triangle(slot);
-                rb::TriangleHit th;
-                return rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, th);
+            long bestBinary = -1, bestWide = -1;
+            double tBinary = kInf, tWide = kInf;
+            const bool foundBinary = binary.closest(ray, tBinary, leafFor(bestBinary));
+            const bool foundWide = wide.closest(ray, tWide, leafFor(bestWide));
+            hits += foundWide;
+            if (foundBinary != foundWide || tBinary != tWide) ++closestMismatch;
+            auto anyLeaf = [&](std::uint32_t first, std::uint32_t count, double tMax) {
+                for (std::uint32_t slot = first; slot < first + count; ++slot) {
+                    const auto& v = triangles[order[slot]].v;
+                    rb::TriangleHit th;
+                    if (rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, th)) return true;
+                }
+                return false;
             };
-            if (bvh.anySimple(ray, kInf, anyLeaf) != bvh.any(ray, kInf, anyLeaf)) ++anyMismatch;
+            if (binary.any(ray, kInf, anyLeaf) != wide.any(ray, kInf, anyLeaf)) ++anyMismatch;
         }
-        THEN("every closest hit (triangle and t, to the bit) and every any-hit answer agree") {
-            // Source: both walk boxes that contain their primitives (the compact boxes are the
-            // build boxes rounded outwards) and run the same leaf test, so the nearest
-            // triangle cannot differ; only the order of visits does.
+        THEN("every closest hit (to the bit) and every any-hit answer agree") {
+            // Source: both walk boxes that contain their primitives (the wide boxes are the
+            // build boxes rounded outwards, tested conservatively) and run the same leaf test,
+            // so the nearest distance cannot differ; only the order of visits does.
             REQUIRE(hits > 1000);
             CHECK(closestMismatch == 0);
             CHECK(anyMismatch == 0);
@@ -421,21 +486,143 @@ SCENARIO("the compact SSE traversal finds exactly what the simple traversal find
 }
 // [ch03-fast-equals-simple]
 
+/// OBJ data for a grid of unit squares, `side` by `side`, in the plane z = z0, with its corner
+/// at (x0, y0): integer coordinates, exact in float as in double.
+rb::ObjData gridObj(int side, double x0, double y0, double z0) {
+    rb::ObjData data;
+    for (int j = 0; j <= side; ++j)
+        for (int i = 0; i <= side; ++i) data.positions.emplace_back(x0 + i, y0 + j, z0);
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i) {
+            const int a = j * (side + 1) + i, b = a + 1, c = a + side + 1, d = c + 1;
+            data.triangles.push_back({rb::ObjCorner{a}, rb::ObjCorner{b}, rb::ObjCorner{d}});
+            data.triangles.push_back({rb::ObjCorner{a}, rb::ObjCorner{d}, rb::ObjCorner{c}});
+        }
+    return data;
+}
+
+/// OBJ data for the surface of the cube [0, side]³ cut into unit squares.
+rb::ObjData cubeObj(int side) {
+    rb::ObjData data;
+    for (int axis = 0; axis < 3; ++axis)
+        for (const double level : {0.0, static_cast<double>(side)}) {
+            // A grid in the plane (u, v) of this face, lifted to coordinate `level` on `axis`.
+            const rb::ObjData face = gridObj(side, 0, 0, 0);
+            const int base = static_cast<int>(data.positions.size());
+            for (const Vec3& p : face.positions) {
+                Vec3 q;
+                q[axis] = level;
+                q[(axis + 1) % 3] = p.x;
+                q[(axis + 2) % 3] = p.y;
+                data.positions.push_back(q);
+            }
+            for (auto t : face.triangles) {
+                for (auto& corner : t) corner.v += base;
+                data.triangles.push_back(t);
+            }
+        }
+    return data;
+}
+
+// [ch03-robust-traversal]
+SCENARIO("the float traversal never misses a hit that the exact double test finds",
+         "[ch03][ex3.2][stability]") {
+    // The wide BVH tests float boxes in float arithmetic; the binary one double boxes in double.
+    // Both stretch the far end of each slab interval (kFarWidening; the 1 + 8ε of
+    // intersectBox) so that rounding cannot make a box look missed. Random rays almost never
+    // need that: they pass boxes with room to spare. These rays are built to need it: they
+    // pass exactly through the corner of a box, where the entry and exit distances are equal
+    // and any rounding can put them the wrong way round. All coordinates are small integers, or
+    // integers near 2²⁰, so vertices and origins are exact in float and in double, and only the
+    // slab arithmetic rounds. Without the widening, this test fails (checked by hand).
+    struct Case {
+        const char* name;
+        rb::ObjData data;
+    };
+    Case cases[] = {
+        {"a 24 x 24 grid at z = 3", gridObj(24, 0, 0, 3)},
+        {"the same grid near (2^20, 2^20, 2^20)", gridObj(24, 1048576, 1048576, 1048576)},
+        {"a 6 x 6 x 6 cube", cubeObj(6)}};
+    for (Case& c : cases) {
+        GIVEN(c.name) {
+            const rb::Mesh wide(c.data, "test.obj", rb::BVHLayout::Wide);
+            const rb::Mesh binary(c.data, "test.obj", rb::BVHLayout::Binary);
+            const auto triangles = wide.triangles();
+            rbtest::Rng rng(4242);
+            auto smallInt = [&](int lo, int hi) {
+                return static_cast<double>(lo + static_cast<int>(rng.uniform() * (hi - lo + 1)));
+            };
+            std::vector<rb::Ray> rays;
+            // Through every vertex from an integer origin a few units away: the hit is at
+            // t = 1 exactly, on the corner of the boxes around the vertex.
+            for (const Vec3& v : c.data.positions)
+                for (int k = 0; k < 12; ++k) {
+                    const Vec3 offset(smallInt(-9, 9), smallInt(-9, 9), smallInt(1, 9));
+                    rays.push_back({v + offset, -offset});
+                }
+            // Along the planes of the boxes' faces (a zero direction component), from origins
+            // on such a plane.
+            for (int k = 0; k < 3000; ++k) {
+                const Vec3& v = c.data.positions[static_cast<size_t>(
+                    rng.uniform() * static_cast<double>(c.data.positions.size()))];
+                Vec3 d(smallInt(-9, 9), smallInt(-9, 9), smallInt(-9, 9));
+                d[k % 3] = 0.0;
+                if (d == Vec3(0.0)) continue;
+                rays.push_back({v - smallInt(1, 5) * d, d});
+            }
+            int hits = 0, mismatches = 0;
+            for (const rb::Ray& ray : rays) {
+                double tBrute;
+                const long source = bruteForceClosest(triangles, ray, tBrute);
+                hits += source >= 0;
+                for (const rb::Mesh* mesh : {&wide, &binary}) {
+                    rb::ObjectHit oh;
+                    const bool found = mesh->intersect(ray, kInf, oh);
+                    const bool same =
+                        found == (source >= 0) &&
+                        (!found ||
+                         (oh.t == tBrute && oh.primitive == static_cast<std::uint32_t>(source)));
+                    // Shadow rays over the whole ray, and ending just past the hit.
+                    const bool shadowSame =
+                        mesh->occluded(ray, kInf) == found &&
+                        (!found || mesh->occluded(ray, std::nextafter(tBrute, kInf)));
+                    if (!same || !shadowSame) {
+                        ++mismatches;
+                        UNSCOPED_INFO("o = (" << ray.o.x << ", " << ray.o.y << ", " << ray.o.z
+                                              << "), d = (" << ray.d.x << ", " << ray.d.y << ", "
+                                              << ray.d.z << "), layout "
+                                              << (mesh == &wide ? "wide" : "binary"));
+                    }
+                }
+            }
+            THEN(
+                "both traversals agree with brute force on every ray: hit, distance, triangle, "
+                "shadow") {
+                CAPTURE(rays.size(), hits);
+                REQUIRE(hits > static_cast<int>(rays.size()) / 3);
+                CHECK(mismatches == 0);
+            }
+        }
+    }
+}
+// [ch03-robust-traversal]
+
 SCENARIO("the BVH finds the same closest triangle as testing every triangle", "[ch03][ex3.2]") {
     GIVEN(
         "the Stanford bunny (3 674 triangles) and 2 000 random rays aimed into its bounds "
         "(fixed seed)") {
         const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
         REQUIRE(bunny.triangleCount() > 3000);
+        const auto triangles = bunny.triangles();
         rbtest::Rng rng(2718);
         int hits = 0, hitMismatch = 0, tMismatch = 0, triangleMismatch = 0, shadowMismatch = 0;
         for (int k = 0; k < 2000; ++k) {
             const rb::Ray ray = rayInto(bunny.bounds(), rng);
             double tBrute;
-            const long slot = bruteForceClosest(bunny, ray, tBrute);
+            const long source = bruteForceClosest(triangles, ray, tBrute);
             rb::ObjectHit oh;
             const bool found = bunny.intersect(ray, kInf, oh);
-            if (found != (slot >= 0)) {
+            if (found != (source >= 0)) {
                 ++hitMismatch;
                 continue;
             }
@@ -446,7 +633,7 @@ SCENARIO("the BVH finds the same closest triangle as testing every triangle", "[
             // Both run the same triangle test on the same triangle, so t agrees to the last
             // bits; 1e-12 relative still allows for a different but equally close triangle.
             if (std::abs(oh.t - tBrute) > 1e-12 * tBrute) ++tMismatch;
-            if (oh.primitive != bunny.sourceIndex(static_cast<size_t>(slot))) ++triangleMismatch;
+            if (oh.primitive != static_cast<std::uint32_t>(source)) ++triangleMismatch;
             // A shadow ray that stops just short of the hit is free; one just past it is not.
             if (bunny.occluded(ray, tBrute * (1 - 1e-9))) ++shadowMismatch;
             if (!bunny.occluded(ray, tBrute * (1 + 1e-9))) ++shadowMismatch;
@@ -487,6 +674,7 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
         }
         const rb::LinearAggregate linear(instances);
         const rb::BVHAggregate bvh(instances);
+        const rb::BVHAggregate binary(instances, rb::BVHLayout::Binary);
         rb::AABB world;
         for (const rb::Instance& i : instances) world.extend(i.worldBounds);
         WHEN("3 000 random rays are traced through both") {
@@ -496,6 +684,10 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
                 rb::Hit a, b;
                 const bool foundLinear = linear.intersect(ray, kInf, a);
                 const bool foundBvh = bvh.intersect(ray, kInf, b);
+                rb::Hit c;
+                if (binary.intersect(ray, kInf, c) != foundBvh ||
+                    (foundBvh && (c.instance != b.instance || c.t != b.t)))
+                    ++hitMismatch;
                 if (foundLinear != foundBvh) {
                     ++hitMismatch;
                     continue;
@@ -503,7 +695,8 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
                 // A random segment length: the shadow verdicts must agree with the closest hit.
                 const double tMax = rng.uniform(0.0, 2.0);
                 const bool blocked = foundLinear && a.t < tMax;
-                if (bvh.occluded(ray, tMax) != blocked || linear.occluded(ray, tMax) != blocked)
+                if (bvh.occluded(ray, tMax) != blocked || linear.occluded(ray, tMax) != blocked ||
+                    binary.occluded(ray, tMax) != blocked)
                     ++shadowMismatch;
                 if (!foundLinear) continue;
                 ++hits;
@@ -521,16 +714,23 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
             }
         }
         THEN(
-            "the top-level tree is well formed: each node's box holds its children and each "
-            "instance sits in exactly one leaf") {
-            const auto& order = bvh.bvh().primitiveOrder();
-            const TreeReport report =
-                walkTree(bvh.bvh(), instances.size(),
-                         [&](std::uint32_t slot) { return instances[order[slot]].worldBounds; });
-            CHECK(report.nodesReached == bvh.bvh().nodes().size());
+            "the top-level trees are well formed: each node's box holds its children and each "
+            "instance sits in exactly one leaf, in both layouts") {
+            const auto& order = binary.bvh().primitiveOrder();
+            const auto bounds = [&](std::uint32_t slot) {
+                return instances[order[slot]].worldBounds;
+            };
+            const TreeReport report = walkTree(binary.bvh(), instances.size(), bounds);
+            CHECK(report.nodesReached == binary.bvh().nodes().size());
             CHECK(report.badChildBounds == 0);
             CHECK(report.badLeafBounds == 0);
             CHECK(std::all_of(report.slotSeen.begin(), report.slotSeen.end(),
+                              [](int n) { return n == 1; }));
+            const TreeReport wide = walkWide(bvh.bvh(), instances.size(), bounds);
+            CHECK(wide.nodesReached == bvh.bvh().wideNodes().size());
+            CHECK(wide.badChildBounds == 0);
+            CHECK(wide.badLeafBounds == 0);
+            CHECK(std::all_of(wide.slotSeen.begin(), wide.slotSeen.end(),
                               [](int n) { return n == 1; }));
         }
     }
@@ -538,25 +738,34 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
 
 SCENARIO("a BVH is well formed: boxes nest, and every primitive is in exactly one leaf",
          "[ch03][ex3.2]") {
-    GIVEN("the bunny's BVH") {
+    GIVEN("binary and wide BVHs over the bunny's triangles") {
         const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
-        const rb::BVH& bvh = bunny.bvh();
-        const TreeReport report = walkTree(bvh, bunny.triangleCount(), [&](std::uint32_t slot) {
+        const auto triangles = bunny.triangles();
+        const rb::BVH bvh = bvhOver(triangles, rb::BVHLayout::Binary);
+        const rb::BVH wide = bvhOver(triangles, rb::BVHLayout::Wide);
+        const auto bounds = [&](std::uint32_t slot) {
             rb::AABB b;
-            for (const Vec3& p : bunny.triangle(slot)) b.extend(p);
+            for (const Vec3& p : triangles[bvh.primitiveOrder()[slot]].v) b.extend(p);
             return b;
-        });
+        };
+        const TreeReport report = walkTree(bvh, triangles.size(), bounds);
+        const TreeReport wideReport = walkWide(wide, triangles.size(), bounds);
         THEN("every node is reached once from the root, and no node is orphaned") {
             CHECK(report.nodesReached == bvh.nodes().size());
+            CHECK(wideReport.nodesReached == wide.wideNodes().size());
         }
         THEN(
             "every node's box contains its children's boxes, and every leaf's box its "
-            "triangles") {
+            "triangles; the wide nodes' float boxes too") {
             CHECK(report.badChildBounds == 0);
             CHECK(report.badLeafBounds == 0);
+            CHECK(wideReport.badChildBounds == 0);
+            CHECK(wideReport.badLeafBounds == 0);
         }
         THEN("every triangle slot appears in exactly one leaf") {
             CHECK(std::all_of(report.slotSeen.begin(), report.slotSeen.end(),
+                              [](int n) { return n == 1; }));
+            CHECK(std::all_of(wideReport.slotSeen.begin(), wideReport.slotSeen.end(),
                               [](int n) { return n == 1; }));
         }
         THEN("primitiveOrder() is a permutation of 0 … n−1") {
@@ -594,8 +803,9 @@ SCENARIO("the cost of a ray grows like log n with the number of triangles", "[ch
         Level levels[] = {{32}, {128}, {512}};
         WHEN("2 000 rays per mesh are traced and their work counted") {
             for (Level& level : levels) {
-                const auto mesh = heightField(level.gridSide);
-                level.n = static_cast<double>(mesh->triangleCount());
+                const auto triangles = heightField(level.gridSide)->triangles();
+                const rb::BVH bvh = bvhOver(triangles, rb::BVHLayout::Binary);
+                level.n = static_cast<double>(triangles.size());
                 rbtest::Rng rng(8);
                 long tests = 0, nodes = 0, hits = 0;
                 constexpr int kRays = 2000;
@@ -607,17 +817,21 @@ SCENARIO("the cost of a ray grows like log n with the number of triangles", "[ch
                     const rb::Ray ray{target + 2.0 * up, -up};
                     const rb::WatertightRay wray(ray);
                     double tMax = kInf;
-                    const bool found =
-                        mesh->bvh().closest(ray, tMax, [&](std::uint32_t slot, double& t) {
-                            ++tests;
-                            const auto& v = mesh->triangle(slot);
-                            rb::TriangleHit th;
-                            if (!rb::intersectTriangle(wray, v[0], v[1], v[2], t, th)) return false;
-                            t = th.t;
-                            return true;
+                    const bool found = bvh.closest(
+                        ray, tMax, [&](std::uint32_t first, std::uint32_t count, double& t) {
+                            bool foundHere = false;
+                            for (std::uint32_t slot = first; slot < first + count; ++slot) {
+                                ++tests;
+                                const auto& v = triangles[bvh.primitiveOrder()[slot]].v;
+                                rb::TriangleHit th;
+                                if (!rb::intersectTriangle(wray, v[0], v[1], v[2], t, th)) continue;
+                                t = th.t;
+                                foundHere = true;
+                            }
+                            return foundHere;
                         });
                     hits += found;
-                    nodes += nodesPierced(mesh->bvh(), rb::RayInverse(ray), tMax);
+                    nodes += nodesPierced(bvh, rb::RayInverse(ray), tMax);
                 }
                 REQUIRE(hits > kRays * 99 / 100);  // the rays are aimed at the surface
                 level.triangleTests = static_cast<double>(tests) / kRays;

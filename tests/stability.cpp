@@ -257,8 +257,8 @@ SCENARIO("rays through the edges and vertices of a closed mesh always hit it",
                 rb::ObjectHit oh;
                 if (!mesh->intersect(rb::Ray{Vec3(0), d}, kInf, oh)) ++missed;
             }
-            for (size_t i = 0; i < mesh->triangleCount(); ++i)
-                for (const Vec3& v : mesh->triangle(i)) {
+            for (const rb::Mesh::Triangle& tri : mesh->triangles())
+                for (const Vec3& v : tri.v) {
                     rb::ObjectHit oh;
                     if (!mesh->intersect(rb::Ray{Vec3(0), v}, kInf, oh)) ++missed;
                 }

@@ -1,9 +1,13 @@
 #include "bvh/bvh.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+
+#include "core/error.h"
 
 namespace rb {
 
@@ -23,11 +27,19 @@ struct PrimRef {
     std::uint32_t index;
 };
 
-/// What the recursive build works on.
+/// What the recursive build works on. Tasks share it: each partitions its own range of refs.
 struct BuildState {
     std::vector<PrimRef> refs;
-    std::vector<BVHNode>& nodes;
     const BVHBuildOptions& options;
+};
+
+/// Ranges at least this big build their two halves as parallel OpenMP tasks.
+constexpr std::uint32_t kTaskGrain = 4096;
+
+/// A subtree under construction: its nodes, numbered from 0 in depth-first order, and the
+/// depth of its deepest leaf.
+struct Subtree {
+    std::vector<BVHNode> nodes;
     int depth = 0;
 };
 
@@ -37,6 +49,13 @@ struct Split {
     int bin = 0;  ///< Primitives in bins [0, bin) go left.
     double cost = std::numeric_limits<double>::infinity();
 };
+
+/// The SAH cost of a leaf of n primitives, in units of one primitive test: n, or for leaves
+/// tested `leafBlock` primitives at a time, blockCost per block.
+double leafCost(const BVHBuildOptions& options, std::uint32_t n) {
+    if (options.leafBlock <= 1) return static_cast<double>(n);
+    return options.blockCost * static_cast<double>((n + options.leafBlock - 1) / options.leafBlock);
+}
 
 // [binned-sah]
 /// Find the cheapest binned SAH split of refs[begin, end) over all three axes.
@@ -91,8 +110,10 @@ Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end, con
             acc.extend(binBounds[axis][b - 1]);
             count += binCount[axis][b - 1];
             if (count == 0 || rightCount[b] == 0) continue;
-            const double cost = s.options.traversalCost +
-                                (acc.halfArea() * count + rightArea[b] * rightCount[b]) * invArea;
+            const double cost =
+                s.options.traversalCost + (acc.halfArea() * leafCost(s.options, count) +
+                                           rightArea[b] * leafCost(s.options, rightCount[b])) *
+                                              invArea;
             if (cost < best.cost) best = Split{axis, b, cost};
         }
     }
@@ -102,27 +123,61 @@ Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end, con
 // [binned-sah]
 
 /// Make node `index` a leaf over refs[begin, end).
-void makeLeaf(BuildState& s, std::uint32_t index, std::uint32_t begin, std::uint32_t end) {
-    s.nodes[index].count = static_cast<std::uint16_t>(end - begin);
-    s.nodes[index].offset = begin;
+void makeLeaf(Subtree& t, std::uint32_t index, std::uint32_t begin, std::uint32_t end) {
+    t.nodes[index].count = static_cast<std::uint16_t>(end - begin);
+    t.nodes[index].offset = begin;
 }
 
-/// Build the subtree over refs[begin, end) and return its node index.
-std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, int depth) {
-    const std::uint32_t index = static_cast<std::uint32_t>(s.nodes.size());
-    s.nodes.emplace_back();
-    s.depth = std::max(s.depth, depth);
+std::uint32_t buildNode(BuildState& s, Subtree& t, std::uint32_t begin, std::uint32_t end,
+                        int depth);
+
+/// Build the two children of node `index` (over [begin, mid) and [mid, end)) and link them.
+/// Big ranges build each child as an OpenMP task into a subtree of its own, then append both
+/// in order, so the nodes come out exactly as the serial build would number them.
+void buildChildren(BuildState& s, Subtree& t, std::uint32_t index, std::uint32_t begin,
+                   std::uint32_t mid, std::uint32_t end, int depth) {
+    if (end - begin < kTaskGrain || omp_get_num_threads() == 1) {
+        buildNode(s, t, begin, mid, depth + 1);
+        t.nodes[index].offset = buildNode(s, t, mid, end, depth + 1);
+        return;
+    }
+    Subtree left, right;
+#pragma omp task default(shared)
+    buildNode(s, left, begin, mid, depth + 1);
+#pragma omp task default(shared)
+    buildNode(s, right, mid, end, depth + 1);
+#pragma omp taskwait
+    // Append a subtree: its interior nodes' second-child indices move with it.
+    auto append = [&](const Subtree& sub) {
+        const auto base = static_cast<std::uint32_t>(t.nodes.size());
+        for (BVHNode n : sub.nodes) {
+            if (n.count == 0) n.offset += base;
+            t.nodes.push_back(n);
+        }
+        t.depth = std::max(t.depth, sub.depth);
+        return base;
+    };
+    append(left);
+    t.nodes[index].offset = append(right);
+}
+
+/// Build the subtree over refs[begin, end) into t and return its node index.
+std::uint32_t buildNode(BuildState& s, Subtree& t, std::uint32_t begin, std::uint32_t end,
+                        int depth) {
+    const std::uint32_t index = static_cast<std::uint32_t>(t.nodes.size());
+    t.nodes.emplace_back();
+    t.depth = std::max(t.depth, depth);
     // Bounds of the primitives and of their centroids, in one pass.
     AABB bounds, centroidBounds;
     for (std::uint32_t i = begin; i < end; ++i) {
         bounds.extend(s.refs[i].box);
         centroidBounds.extend(s.refs[i].centroid);
     }
-    s.nodes[index].bounds = bounds;
+    t.nodes[index].bounds = bounds;
     const std::uint32_t n = end - begin;
     const bool mustSplit = n > static_cast<std::uint32_t>(s.options.maxLeafSize);
     if (n == 1) {
-        makeLeaf(s, index, begin, end);
+        makeLeaf(t, index, begin, end);
         return index;
     }
 
@@ -140,13 +195,11 @@ std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, i
                              return a.centroid[longest] < b.centroid[longest];
                          });
         if (n <= static_cast<std::uint32_t>(s.options.maxLeafSize)) {
-            makeLeaf(s, index, begin, end);
+            makeLeaf(t, index, begin, end);
             return index;
         }
-        buildNode(s, begin, half, depth + 1);
-        const std::uint32_t second = buildNode(s, half, end, depth + 1);
-        s.nodes[index].offset = second;
-        s.nodes[index].axis = static_cast<std::uint8_t>(longest);
+        t.nodes[index].axis = static_cast<std::uint8_t>(longest);
+        buildChildren(s, t, index, begin, half, end, depth);
         return index;
     }
 
@@ -155,7 +208,7 @@ std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, i
     const Split split = findSplit(s, begin, end, bounds, centroidBounds, nBins);
     std::uint32_t mid = begin;
     int axis = split.axis;
-    if (split.axis >= 0 && (mustSplit || split.cost < static_cast<double>(n))) {
+    if (split.axis >= 0 && (mustSplit || split.cost < leafCost(s.options, n))) {
         const double lo = centroidBounds.lo[axis];
         const double scale = nBins / (centroidBounds.hi[axis] - lo);
         mid = static_cast<std::uint32_t>(
@@ -169,7 +222,7 @@ std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, i
     } else if (!mustSplit || n <= 0xFFFF) {
         // A leaf is cheaper, or nothing separates the primitives (all centroids equal).
         if (!mustSplit || split.axis < 0) {
-            makeLeaf(s, index, begin, end);
+            makeLeaf(t, index, begin, end);
             return index;
         }
     }
@@ -178,93 +231,143 @@ std::uint32_t buildNode(BuildState& s, std::uint32_t begin, std::uint32_t end, i
         mid = begin + n / 2;
         axis = 0;
     }
-    buildNode(s, begin, mid, depth + 1);
-    const std::uint32_t second = buildNode(s, mid, end, depth + 1);
-    s.nodes[index].offset = second;
-    s.nodes[index].axis = static_cast<std::uint8_t>(axis);
-    s.nodes[index].count = 0;
+    t.nodes[index].axis = static_cast<std::uint8_t>(axis);
+    t.nodes[index].count = 0;
+    buildChildren(s, t, index, begin, mid, end, depth);
     return index;
+}
+
+/// Box b grown by a few ulps of its largest coordinate. A shape's hit point carries rounding
+/// error of that size (offsetRayOrigin makes the same argument), so a hit computed on a face of
+/// the box may land just outside it; the padded box still holds it.
+AABB padded(const AABB& b) {
+    if (b.empty()) return b;
+    const double extent = std::max(maxAbsComponent(b.lo), maxAbsComponent(b.hi));
+    const Vec3 pad(64.0 * std::numeric_limits<double>::epsilon() * extent);
+    return AABB{b.lo - pad, b.hi + pad};
 }
 
 }  // namespace
 
 void BVH::build(std::vector<AABB> primitiveBounds, const BVHBuildOptions& options) {
     nodes_.clear();
+    wide_.clear();
     order_.clear();
+    bounds_ = AABB();
+    layout_ = options.layout;
     if (primitiveBounds.empty()) return;
     const size_t n = primitiveBounds.size();
-    BuildState s{{}, nodes_, options};
+    BuildState s{{}, options};
     s.refs.reserve(n);
-    for (std::uint32_t i = 0; i < n; ++i)
-        s.refs.push_back({primitiveBounds[i], primitiveBounds[i].centre(), i});
+    for (std::uint32_t i = 0; i < n; ++i) {
+        bounds_.extend(primitiveBounds[i]);
+        s.refs.push_back({padded(primitiveBounds[i]), primitiveBounds[i].centre(), i});
+    }
     // Memory is the limit for big meshes: drop each temporary as soon as it is used up.
     std::vector<AABB>().swap(primitiveBounds);
-    nodes_.reserve(2 * n);
-    buildNode(s, 0, static_cast<std::uint32_t>(s.refs.size()), 0);
-    depth_ = s.depth;
-    order_.reserve(s.refs.size());
+    Subtree tree;
+    tree.nodes.reserve(2 * n);
+    // One thread starts the recursion; big ranges hand their halves to the team as tasks.
+#pragma omp parallel if (n >= kTaskGrain)
+#pragma omp single
+    buildNode(s, tree, 0, static_cast<std::uint32_t>(n), 0);
+    depth_ = tree.depth;
+    order_.reserve(n);
     for (const PrimRef& r : s.refs) order_.push_back(r.index);
     std::vector<PrimRef>().swap(s.refs);
-    nodes_.shrink_to_fit();
-    buildWide();
+    if (layout_ == BVHLayout::Wide) {
+        wide_ = collapseToWide(tree.nodes);
+    } else {
+        tree.nodes.shrink_to_fit();
+        nodes_ = std::move(tree.nodes);
+    }
+}
+
+BVHLayout bvhLayoutNamed(const std::string& name) {
+    if (name.empty() || name == "wide") return BVHLayout::Wide;
+    if (name == "binary") return BVHLayout::Binary;
+    throw InputError("--bvh: expected binary or wide, got '" + name + "'");
 }
 
 namespace {
-/// The largest float not above x, and the smallest not below: bounds rounded outwards.
-float roundDown(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+
+/// Collapse the binary subtree under node i into wide node `index` of `wide` (already
+/// allocated), recursing into the interior children it keeps.
+void collapseNode(const std::vector<BVHNode>& binary, std::uint32_t i, std::vector<WideNode>& wide,
+                  std::uint32_t index) {
+    // Step 1: start from the two children, then open the interior child with the largest
+    // surface area until there are four (the nodes a ray is most likely to enter are the ones
+    // worth testing together).
+    std::uint32_t kids[4] = {i + 1, binary[i].offset};
+    int kidCount = 2;
+    while (kidCount < 4) {
+        int open = -1;
+        double largest = -1.0;
+        for (int k = 0; k < kidCount; ++k) {
+            const BVHNode& kid = binary[kids[k]];
+            if (kid.count == 0 && kid.bounds.halfArea() > largest) {
+                largest = kid.bounds.halfArea();
+                open = k;
+            }
+        }
+        if (open < 0) break;  // all leaves
+        // Replace the opened child by its two children, keeping the build's order.
+        const std::uint32_t opened = kids[open];
+        for (int k = kidCount; k > open + 1; --k) kids[k] = kids[k - 1];
+        kids[open] = opened + 1;
+        kids[open + 1] = binary[opened].offset;
+        ++kidCount;
+    }
+    // Step 2: fill in the boxes, rounded outwards to float; unused children get empty boxes.
+    WideNode n{};
+    for (int c = 0; c < 4; ++c)
+        for (int axis = 0; axis < 3; ++axis) {
+            n.lo[axis][c] = c < kidCount ? roundDownToFloat(binary[kids[c]].bounds.lo[axis])
+                                         : std::numeric_limits<float>::infinity();
+            n.hi[axis][c] = c < kidCount ? roundUpToFloat(binary[kids[c]].bounds.hi[axis])
+                                         : -std::numeric_limits<float>::infinity();
+        }
+    // Step 3: leaves keep their range; interior children become wide nodes of their own.
+    for (int c = 0; c < kidCount; ++c) {
+        const BVHNode& kid = binary[kids[c]];
+        if (kid.count > 0) {
+            n.child[c] = kid.offset;
+            n.count[c] = kid.count;
+        } else {
+            n.child[c] = static_cast<std::uint32_t>(wide.size());
+            wide.emplace_back();
+        }
+    }
+    wide[index] = n;
+    for (int c = 0; c < kidCount; ++c)
+        if (n.count[c] == 0) collapseNode(binary, kids[c], wide, n.child[c]);
 }
-float roundUp(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
+
 }  // namespace
 
-void BVH::buildWide() {
-    wide_.clear();
-    if (nodes_.empty()) return;
-    wide_.reserve(nodes_.size() / 2 + 1);
-    if (nodes_[0].count > 0) {
-        // A single leaf: one compact node whose second child is an empty box.
+std::vector<WideNode> collapseToWide(const std::vector<BVHNode>& binary) {
+    std::vector<WideNode> wide;
+    if (binary.empty()) return wide;
+    wide.reserve(binary.size() / 3 + 1);
+    wide.emplace_back();
+    if (binary[0].count > 0) {
+        // A single leaf: a root with one child.
         WideNode n{};
-        for (int axis = 0; axis < 3; ++axis) {
-            n.lo[axis][0] = roundDown(nodes_[0].bounds.lo[axis]);
-            n.hi[axis][0] = roundUp(nodes_[0].bounds.hi[axis]);
-            n.lo[axis][1] = std::numeric_limits<float>::infinity();
-            n.hi[axis][1] = -std::numeric_limits<float>::infinity();
-        }
-        n.child[0] = nodes_[0].offset;
-        n.count[0] = nodes_[0].count;
-        n.count[1] = 1;  // an empty leaf range is never reached: its box is empty
-        n.child[1] = 0;
-        wide_.push_back(n);
-        return;
+        for (int c = 0; c < 4; ++c)
+            for (int axis = 0; axis < 3; ++axis) {
+                n.lo[axis][c] = c == 0 ? roundDownToFloat(binary[0].bounds.lo[axis])
+                                       : std::numeric_limits<float>::infinity();
+                n.hi[axis][c] = c == 0 ? roundUpToFloat(binary[0].bounds.hi[axis])
+                                       : -std::numeric_limits<float>::infinity();
+            }
+        n.child[0] = binary[0].offset;
+        n.count[0] = binary[0].count;
+        wide[0] = n;
+        return wide;
     }
-    convert(0);
-}
-
-std::uint32_t BVH::convert(std::uint32_t i) {
-    // The build tree keeps an interior node's first child at i + 1 and its second at offset.
-    const std::uint32_t index = static_cast<std::uint32_t>(wide_.size());
-    wide_.emplace_back();
-    const std::uint32_t children[2] = {i + 1, nodes_[i].offset};
-    for (int c = 0; c < 2; ++c) {
-        const BVHNode& child = nodes_[children[c]];
-        for (int axis = 0; axis < 3; ++axis) {
-            wide_[index].lo[axis][c] = roundDown(child.bounds.lo[axis]);
-            wide_[index].hi[axis][c] = roundUp(child.bounds.hi[axis]);
-        }
-        if (child.count > 0) {
-            wide_[index].child[c] = child.offset;
-            wide_[index].count[c] = child.count;
-        } else {
-            const std::uint32_t converted = convert(children[c]);
-            wide_[index].child[c] = converted;
-            wide_[index].count[c] = 0;
-        }
-    }
-    return index;
+    collapseNode(binary, 0, wide, 0);
+    wide.shrink_to_fit();
+    return wide;
 }
 
 }  // namespace rb

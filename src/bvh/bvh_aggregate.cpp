@@ -1,17 +1,18 @@
 #include "bvh/bvh_aggregate.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "bvh/mesh.h"
 
 namespace rb {
 
-BVHAggregate::BVHAggregate(const std::vector<Instance>& instances) {
+BVHAggregate::BVHAggregate(const std::vector<Instance>& instances, BVHLayout layout) {
     std::vector<AABB> boxes;
     boxes.reserve(instances.size());
     for (const Instance& i : instances) boxes.push_back(i.worldBounds);
-    bvh_.build(boxes, BVHBuildOptions{16, 2, 1.0});
+    bvh_.build(boxes, BVHBuildOptions{16, 2, 1.0, layout});
     for (std::uint32_t p : bvh_.primitiveOrder()) ordered_.push_back(&instances[p]);
 }
 
@@ -19,13 +20,22 @@ BVHAggregate::BVHAggregate(const std::vector<Instance>& instances) {
 bool BVHAggregate::intersect(const Ray& ray, double tMax, Hit& hit) const {
     const Instance* closest = nullptr;
     ObjectHit best;
-    bvh_.closest(ray, tMax, [&](std::uint32_t slot, double& tClosest) {
-        ObjectHit oh;
-        if (!ordered_[slot]->intersect(ray, tClosest, oh)) return false;
-        tClosest = oh.t;
-        best = oh;
-        closest = ordered_[slot];
-        return true;
+    bvh_.closest(ray, tMax, [&](std::uint32_t first, std::uint32_t count, double& tClosest) {
+        bool found = false;
+        for (std::uint32_t slot = first; slot < first + count; ++slot) {
+            // After a hit, also look at exactly its distance: two instances hit at the same t
+            // (faces that touch) go to the one that comes first in the scene, as testing every
+            // instance in order would find, whatever order the tree visits them in.
+            const double limit = closest ? std::nextafter(tClosest, INFINITY) : tClosest;
+            ObjectHit oh;
+            if (!ordered_[slot]->intersect(ray, limit, oh)) continue;
+            if (oh.t == tClosest && closest && ordered_[slot] > closest) continue;
+            tClosest = oh.t;
+            best = oh;
+            closest = ordered_[slot];
+            found = true;
+        }
+        return found;
     });
     if (closest) hit = closest->toWorld(ray, best);
     return closest != nullptr;
@@ -33,28 +43,32 @@ bool BVHAggregate::intersect(const Ray& ray, double tMax, Hit& hit) const {
 // [toplevel-intersect]
 
 bool BVHAggregate::occluded(const Ray& ray, double tMax) const {
-    return bvh_.any(ray, tMax,
-                    [&](std::uint32_t slot, double t) { return ordered_[slot]->occluded(ray, t); });
+    return bvh_.any(ray, tMax, [&](std::uint32_t first, std::uint32_t count, double t) {
+        for (std::uint32_t slot = first; slot < first + count; ++slot)
+            if (ordered_[slot]->occluded(ray, t)) return true;
+        return false;
+    });
 }
 
 std::string BVHAggregate::statistics() const {
     // Count each mesh once, however many instances share it (a smooth mesh counts the
     // faceted mesh it wraps).
-    size_t nodes = bvh_.nodes().size(), bytes = bvh_.nodeBytes() + bvh_.wideNodeBytes();
+    size_t nodes = bvh_.nodeCount(), bytes = bvh_.nodeBytes();
     size_t triangles = 0, triangleBytes = 0, meshBvhBytes = 0;
     std::vector<const Mesh*> seen;
     for (const Instance* i : ordered_)
         if (const Mesh* mesh = i->shape->triangleMesh())
             if (std::find(seen.begin(), seen.end(), mesh) == seen.end()) {
                 seen.push_back(mesh);
-                nodes += mesh->bvh().nodes().size();
-                meshBvhBytes += mesh->bvh().nodeBytes() + mesh->bvh().wideNodeBytes();
+                nodes += mesh->bvh().nodeCount();
+                meshBvhBytes += mesh->bvh().nodeBytes();
                 triangles += mesh->triangleCount();
                 triangleBytes += mesh->triangleBytes();
             }
     bytes += meshBvhBytes;
     char line[256];
-    std::snprintf(line, sizeof line, "%zu nodes, %.2f MiB", nodes, bytes / 1048576.0);
+    std::snprintf(line, sizeof line, "%s BVH, %zu nodes, %.2f MiB",
+                  bvh_.layout() == BVHLayout::Wide ? "wide" : "binary", nodes, bytes / 1048576.0);
     std::string out = line;
     if (triangles) {
         std::snprintf(line, sizeof line, "; %zu triangles: %.1f bytes/triangle (mesh) + %.1f (BVH)",
@@ -66,7 +80,11 @@ std::string BVHAggregate::statistics() const {
 }
 
 std::unique_ptr<Aggregate> buildBVHAggregate(const std::vector<Instance>& instances) {
-    return std::make_unique<BVHAggregate>(instances);
+    return std::make_unique<BVHAggregate>(instances, BVHLayout::Wide);
+}
+
+std::unique_ptr<Aggregate> buildBinaryBVHAggregate(const std::vector<Instance>& instances) {
+    return std::make_unique<BVHAggregate>(instances, BVHLayout::Binary);
 }
 
 }  // namespace rb

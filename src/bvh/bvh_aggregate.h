@@ -2,8 +2,8 @@
 /// The top level of the two-level BVH: a BVH over instances (chapter 3).
 #pragma once
 
-#include "core/aggregate.h"
 #include "bvh/bvh.h"
+#include "core/aggregate.h"
 #include "core/feature.h"
 
 namespace rb {
@@ -14,7 +14,8 @@ Feature bvhFeature();
 /// A BVH over instances' world bounds; each instance then uses its shape's own structure.
 class BVHAggregate final : public Aggregate {
   public:
-    explicit BVHAggregate(const std::vector<Instance>& instances);
+    explicit BVHAggregate(const std::vector<Instance>& instances,
+                          BVHLayout layout = BVHLayout::Wide);
     bool intersect(const Ray& ray, double tMax, Hit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
     /// Nodes and bytes of both levels, and bytes per triangle of the meshes.
@@ -28,5 +29,7 @@ class BVHAggregate final : public Aggregate {
 
 /// An AggregateBuilder for BVHAggregate.
 std::unique_ptr<Aggregate> buildBVHAggregate(const std::vector<Instance>& instances);
+/// An AggregateBuilder for BVHAggregate with the lesson's binary traversal (--bvh=binary).
+std::unique_ptr<Aggregate> buildBinaryBVHAggregate(const std::vector<Instance>& instances);
 
 }  // namespace rb

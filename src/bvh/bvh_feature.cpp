@@ -2,20 +2,26 @@
 #include "bvh/bvh_aggregate.h"
 #include "core/integrator.h"
 #include "core/lua_scene.h"
+#include "core/render_context.h"
 
 namespace rb {
 
 void bindMeshes(LuaBindings& lua);
 
 namespace {
-void installChapter03(Pipeline& p, Scene&, const RenderContext&) {
-    p.buildAggregate = buildBVHAggregate;
+void installChapter03(Pipeline& p, Scene&, const RenderContext& context) {
+    p.buildAggregate = bvhLayoutNamed(context.cliOption("bvh")) == BVHLayout::Binary
+                           ? buildBinaryBVHAggregate
+                           : buildBVHAggregate;
 }
 }  // namespace
 
 Feature bvhFeature() {
-    return {"bvh", 3,          "OBJ meshes, watertight triangles, two-level binned-SAH BVH",
-            false, bindMeshes, installChapter03};
+    Feature f{"bvh", 3,          "OBJ meshes, watertight triangles, two-level binned-SAH BVH",
+              false, bindMeshes, installChapter03};
+    f.options = {{"bvh", "binary|wide",
+                  "the BVH traversal: the lesson's binary tree, or four-wide SIMD nodes", "wide"}};
+    return f;
 }
 
 }  // namespace rb

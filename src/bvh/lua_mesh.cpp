@@ -1,11 +1,12 @@
 // Chapter 3's Lua calls: gr.mesh(name, 'file.obj') and the legacy table form
 // gr.mesh(name, {{x,y,z}...}, {{i,j,k,...}...}) with 0-based indices; seed 002's gr.obj_mesh.
+#include "bvh/lua_mesh.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
-#include "bvh/lua_mesh.h"
 #include "bvh/mesh.h"
 #include "core/error.h"
 #include "core/lua_scene.h"
@@ -27,7 +28,7 @@ std::shared_ptr<const Shape> meshFromFile(lua_State* L, const std::string& file,
     const auto t0 = Clock::now();
     const ObjData data = loadObj(path, builder.options.memory);
     const auto t1 = Clock::now();
-    auto mesh = std::make_shared<Mesh>(data, path);
+    auto mesh = std::make_shared<Mesh>(data, path, bvhLayout(builder.options));
     builder.times.meshLoad += std::chrono::duration<double>(t1 - t0).count();
     builder.times.meshBvh += std::chrono::duration<double>(Clock::now() - t1).count();
     builder.meshCache[key] = mesh;
@@ -35,6 +36,11 @@ std::shared_ptr<const Shape> meshFromFile(lua_State* L, const std::string& file,
 }
 
 }  // namespace
+
+BVHLayout bvhLayout(const SceneLoadOptions& options) {
+    const auto it = options.featureOptions.find("bvh");
+    return bvhLayoutNamed(it == options.featureOptions.end() ? "" : it->second);
+}
 
 ObjData objFromLuaTables(lua_State* L, const char* call) {
     ObjData data;
@@ -92,7 +98,9 @@ namespace {
 
 /// Legacy meshes: vertices and 0-based polygons as Lua tables.
 std::shared_ptr<const Shape> meshFromTables(lua_State* L, const char* call) {
-    return std::make_shared<Mesh>(objFromLuaTables(L, call), sceneBuilder(L).scenePath);
+    const SceneBuilder& builder = sceneBuilder(L);
+    return std::make_shared<Mesh>(objFromLuaTables(L, call), builder.scenePath,
+                                  bvhLayout(builder.options));
 }
 
 // [lua-mesh]

@@ -4,9 +4,15 @@
 
 #include <lua.hpp>
 
+#include "bvh/bvh.h"
 #include "bvh/obj.h"
 
 namespace rb {
+
+struct SceneLoadOptions;
+
+/// The BVH layout that --bvh asks for (binary|wide; wide when absent).
+BVHLayout bvhLayout(const SceneLoadOptions& options);
 
 /// The mesh given as Lua tables at stack indices 2 (vertices: {x, y, z} triples) and 3 (faces:
 /// lists of 0-based vertex indices, fan-triangulated), as OBJ data. Throws InputError naming

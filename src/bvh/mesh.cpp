@@ -1,14 +1,15 @@
 #include "bvh/mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/error.h"
 #include "bvh/triangle.h"
+#include "core/error.h"
 
 namespace rb {
 
-Mesh::Mesh(const ObjData& data, const std::string& name) {
+Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
     // Keep the triangles with non-zero area; a degenerate one can never be hit and has no
     // normal.
     std::vector<std::array<Vec3, 3>> kept;
@@ -51,17 +52,43 @@ Mesh::Mesh(const ObjData& data, const std::string& name) {
             texcoords_.push_back(t);
         }
     }
-    // Build the BVH (the boxes are freed inside), then store triangles in the order its leaves
-    // visit them.
-    bvh_.build(std::move(boxes));
-    bounds_ = bvh_.nodes().front().bounds;
+    // Build the BVH (the boxes are freed inside), then copy each leaf's triangles into packs of
+    // four and point the leaf at its first pack.
+    // The SAH prices a leaf by its packs of four, and a leaf may hold two packs.
+    BVHBuildOptions options;
+    options.layout = layout;
+    options.leafBlock = 4;
+    options.maxLeafSize = 8;
+    bvh_.build(std::move(boxes), options);
+    bounds_ = bvh_.bounds();
+    triangleCount_ = kept.size();
+    positions_ = data.positions;
     const auto& order = bvh_.primitiveOrder();
-    triangles_.reserve(order.size());
-    source_.reserve(order.size());
-    for (std::uint32_t p : order) {
-        triangles_.push_back(kept[p]);
-        source_.push_back(keptSource[p]);
-    }
+    bvh_.forEachLeaf([&](std::uint32_t& first, std::uint32_t count) {
+        const auto firstPack = static_cast<std::uint32_t>(packs_.size());
+        for (std::uint32_t k = 0; k < count; k += 4) {
+            Triangle4& pack = packs_.emplace_back();
+            for (std::uint32_t lane = 0; lane < 4; ++lane) {
+                // Spare lanes repeat the leaf's last triangle; the test never reports them.
+                const std::uint32_t p = order[first + std::min(k + lane, count - 1)];
+                const auto& corners = data.triangles[keptSource[p]];
+                double extent = 0.0;
+                for (int vertex = 0; vertex < 3; ++vertex) {
+                    const Vec3& v = data.positions[corners[vertex].v];
+                    for (int axis = 0; axis < 3; ++axis) {
+                        pack.p[vertex][axis][lane] = static_cast<float>(v[axis]);
+                        extent = std::max(extent, std::abs(v[axis]));
+                    }
+                    pack.vertex[vertex][lane] = static_cast<std::uint32_t>(corners[vertex].v);
+                }
+                pack.extent[lane] = roundUpToFloat(extent);
+                pack.source[lane] = keptSource[p];
+            }
+        }
+        first = firstPack;
+    });
+    bvh_.releasePrimitiveOrder();
+    packs_.shrink_to_fit();
 }
 
 const TriangleTexcoords* Mesh::texcoords(std::uint32_t triangle) const {
@@ -70,30 +97,55 @@ const TriangleTexcoords* Mesh::texcoords(std::uint32_t triangle) const {
 }
 
 size_t Mesh::triangleBytes() const {
-    return triangles_.size() * (sizeof(triangles_[0]) + sizeof(source_[0]));
+    return packs_.size() * sizeof(Triangle4) + positions_.size() * sizeof(Vec3);
+}
+
+std::vector<Mesh::Triangle> Mesh::triangles() const {
+    std::vector<Triangle> out;
+    out.reserve(triangleCount_);
+    bvh_.forEachLeaf([&](std::uint32_t first, std::uint32_t count) {
+        for (std::uint32_t k = 0; k < count; ++k) {
+            const Triangle4& pack = packs_[first + k / 4];
+            const int lane = static_cast<int>(k % 4);
+            out.push_back({vertices(pack, lane, positions_), pack.source[lane]});
+        }
+    });
+    return out;
 }
 
 // [mesh-intersect]
 bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
     if (isDegenerateDirection(ray.d)) return false;
     const WatertightRay wray(ray);
-    std::uint32_t hitSlot = 0;
+    const FilterRay fray(wray);
+    const Triangle4* bestPack = nullptr;
+    int bestLane = -1;
     TriangleHit best{};
-    const bool found = bvh_.closest(ray, tMax, [&](std::uint32_t slot, double& tClosest) {
-        const auto& v = triangles_[slot];
-        TriangleHit th;
-        if (!intersectTriangle(wray, v[0], v[1], v[2], tClosest, th)) return false;
-        tClosest = th.t;
-        best = th;
-        hitSlot = slot;
-        return true;
-    });
+    NearestTriangle nearest{tMax};
+    const bool found = bvh_.closest(
+        ray, tMax,
+        [&](std::uint32_t first, std::uint32_t count, double& tClosest)
+            __attribute__((always_inline)) {
+                bool foundHere = false;
+                // Four triangles at a time.
+                for (std::uint32_t k = 0; k < count; k += 4) {
+                    const Triangle4& pack = packs_[first + k / 4];
+                    const int lane = intersectTriangle4(wray, fray, pack, std::min(count - k, 4u),
+                                                        positions_, nearest, best);
+                    if (lane < 0) continue;
+                    tClosest = best.t;
+                    bestPack = &pack;
+                    bestLane = lane;
+                    foundHere = true;
+                }
+                return foundHere;
+            });
     if (!found) return false;
-    const auto& v = triangles_[hitSlot];
+    const std::array<Vec3, 3> v = vertices(*bestPack, bestLane, positions_);
     hit.t = best.t;
     hit.n = glm::cross(v[1] - v[0], v[2] - v[0]);  // geometric normal, by the winding
     hit.uv = Vec2(best.b1, best.b2);  // barycentrics; chapter 10 turns them into `vt` (u, v)
-    hit.primitive = source_[hitSlot];
+    hit.primitive = bestPack->source[bestLane];
     return true;
 }
 // [mesh-intersect]
@@ -101,11 +153,16 @@ bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
 bool Mesh::occluded(const Ray& ray, double tMax) const {
     if (isDegenerateDirection(ray.d)) return false;
     const WatertightRay wray(ray);
-    return bvh_.any(ray, tMax, [&](std::uint32_t slot, double t) {
-        const auto& v = triangles_[slot];
-        TriangleHit th;
-        return intersectTriangle(wray, v[0], v[1], v[2], t, th);
-    });
+    const FilterRay fray(wray);
+    return bvh_.any(
+        ray, tMax,
+        [&](std::uint32_t first, std::uint32_t count, double t) __attribute__((always_inline)) {
+            for (std::uint32_t k = 0; k < count; k += 4)
+                if (occludedTriangle4(wray, fray, packs_[first + k / 4], std::min(count - k, 4u),
+                                      positions_, t))
+                    return true;
+            return false;
+        });
 }
 
 }  // namespace rb

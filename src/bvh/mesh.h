@@ -8,6 +8,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/obj.h"
+#include "bvh/triangle4.h"
 #include "core/shape.h"
 
 namespace rb {
@@ -19,37 +20,43 @@ struct TriangleTexcoords {
     Vec3 dpdu{0.0}, dpdv{0.0};
 };
 
-/// A triangle mesh in object space. Triangles are stored in BVH order with their vertices
-/// copied out, so a leaf test reads one contiguous block.
+/// A triangle mesh in object space. Each BVH leaf's triangles are copied out into packs of four
+/// (Triangle4), so a leaf test reads one contiguous block and filters four triangles at once;
+/// the exact test reads the double-precision vertices.
 class Mesh final : public Shape {
   public:
     /// Build from OBJ data. Degenerate (zero-area) triangles are dropped; throws InputError
-    /// (naming `name`) when no triangle is left.
-    Mesh(const ObjData& data, const std::string& name);
+    /// (naming `name`) when no triangle is left. `layout` picks the BVH traversal.
+    Mesh(const ObjData& data, const std::string& name, BVHLayout layout = BVHLayout::Wide);
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
     AABB bounds() const override { return bounds_; }
     const Mesh* triangleMesh() const override { return this; }
 
     /// Number of triangles kept.
-    size_t triangleCount() const { return triangles_.size(); }
+    size_t triangleCount() const { return triangleCount_; }
     /// Degenerate triangles dropped at load.
     size_t droppedCount() const { return dropped_; }
     /// The mesh's BVH.
     const BVH& bvh() const { return bvh_; }
     /// Bytes used by triangle data (excluding the BVH).
     size_t triangleBytes() const;
-    /// The three vertices of triangle slot i (BVH order).
-    const std::array<Vec3, 3>& triangle(size_t i) const { return triangles_[i]; }
-    /// The OBJ triangle index of slot i.
-    std::uint32_t sourceIndex(size_t i) const { return source_[i]; }
+    /// A kept triangle: its vertices and its OBJ triangle index.
+    struct Triangle {
+        std::array<Vec3, 3> v;
+        std::uint32_t source;
+    };
+    /// Every kept triangle, in storage order (for tests and benchmarks; it copies).
+    std::vector<Triangle> triangles() const;
     /// The `vt` texture coordinates of OBJ triangle `triangle` (a Hit's primitive); null when
     /// the file gave that triangle none (or not at every corner).
     const TriangleTexcoords* texcoords(std::uint32_t triangle) const;
 
   private:
-    std::vector<std::array<Vec3, 3>> triangles_;     ///< Vertices, BVH order.
-    std::vector<std::uint32_t> source_;              ///< OBJ triangle index per slot.
+    /// Triangle packs: a BVH leaf of n triangles points at ⌈n/4⌉ consecutive packs.
+    std::vector<Triangle4> packs_;
+    std::vector<Vec3> positions_;  ///< The OBJ vertices, in double.
+    size_t triangleCount_ = 0;
     /// `vt` per OBJ triangle (NaN where a corner has none); empty when the file has no `vt`.
     std::vector<TriangleTexcoords> texcoords_;
     BVH bvh_;

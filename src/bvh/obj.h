@@ -41,8 +41,7 @@ std::uint64_t meshLoadBytes(const ObjData& data);
 /// Parse OBJ text; displayName is used in error messages ("name:line: ..."). The mesh must fit
 /// in what `budget` leaves free when parsing starts: the parse stops with an InputError as soon
 /// as the mesh read so far would not, before the arrays grow past it.
-ObjData parseObj(std::istream& in, const std::string& displayName,
-                 const MemoryBudget& budget = {});
+ObjData parseObj(std::istream& in, const std::string& displayName, const MemoryBudget& budget = {});
 
 /// Load an OBJ file; throws InputError naming the file if it cannot be opened, or if the mesh
 /// would not fit in `budget`.

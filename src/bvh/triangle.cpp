@@ -18,6 +18,4 @@ WatertightRay::WatertightRay(const Ray& r) : o(r.o) {
 }
 // [watertight-ray]
 
-
-
 }  // namespace rb

@@ -26,8 +26,9 @@ struct TriangleHit {
 /// Does the ray hit triangle (p0, p1, p2) at some t in (0, tMax)? Either side counts (no
 /// back-face culling). Watertight: a ray through a shared edge hits at least one of the two
 /// triangles, and a degenerate triangle is never hit.
-[[gnu::always_inline]] inline bool intersectTriangle(const WatertightRay& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2,
-                       double tMax, TriangleHit& hit) {
+[[gnu::always_inline]] inline bool intersectTriangle(const WatertightRay& ray, const Vec3& p0,
+                                                     const Vec3& p1, const Vec3& p2, double tMax,
+                                                     TriangleHit& hit) {
     // [exercise-watertight-triangle]
     // Exercise 3.1, the watertight ray–triangle test: read ch03-equations.
     // Blank: return false;

@@ -64,12 +64,14 @@ struct RayInverse {
 [[gnu::always_inline]] inline bool intersectBox(const AABB& b, const RayInverse& ri, double tMax,
                                                 double& tEntry) {
     // Intersect the three pairs of parallel planes, near plane first by the direction's sign.
-    double t0 = 0.0, t1 = tMax;
+    // The far distances, and tMax, are widened by a few ulps so that rounding never misses a
+    // box that is hit, even exactly at tMax (a tie with the closest hit so far).
+    constexpr double widen = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
+    double t0 = 0.0, t1 = tMax * widen;
     for (int axis = 0; axis < 3; ++axis) {
         const double tNear = ((ri.dirIsNeg[axis] ? b.hi : b.lo)[axis] - ri.o[axis]) * ri.invD[axis];
         double tFar = ((ri.dirIsNeg[axis] ? b.lo : b.hi)[axis] - ri.o[axis]) * ri.invD[axis];
-        // Widen the far distance by a few ulps so rounding never misses a box that is hit.
-        tFar *= 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
+        tFar *= widen;
         // Written so a NaN leaves the interval alone: a ray parallel to a slab and starting
         // exactly on its plane gives 0·∞ = NaN, and the slab then counts as closed, the same
         // rule the Box shape uses.

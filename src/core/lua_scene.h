@@ -27,6 +27,9 @@ struct SceneLoadOptions {
     std::vector<std::string> assetDirs;  ///< --assets DIR, searched after the scene's folder.
     bool lenient = false;  ///< --lenient: unknown calls and methods are ignored, with a warning.
     std::vector<std::string> dialects;  ///< --dialect FILE.lua: run before the scene.
+    /// The chapters' --name=value options, for calls that need one while the script runs
+    /// (chapter 3's gr.mesh builds its BVH with --bvh's layout).
+    std::map<std::string, std::string> featureOptions;
     /// The script itself, when it is not to be read from the scene path (the fuzz harness);
     /// the path still names it in messages and still decides the scene's folder.
     std::string sceneText;

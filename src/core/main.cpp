@@ -93,6 +93,7 @@ int run(int argc, char** argv) {
     loadOptions.assetDirs = cl.assetDirs;
     loadOptions.lenient = cl.lenient;
     loadOptions.dialects = cl.dialects;
+    loadOptions.featureOptions = cl.featureOptions;
     loadOptions.memory = cl.memory;
     loadOptions.memoryLimit = static_cast<size_t>(
         std::min<std::uint64_t>(loadOptions.memoryLimit, cl.memory.available()));

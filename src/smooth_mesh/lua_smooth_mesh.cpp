@@ -85,7 +85,7 @@ std::shared_ptr<const Shape> smoothMeshFromFile(lua_State* L, const std::string&
     if (auto it = builder.meshCache.find(key); it != builder.meshCache.end())
         mesh = std::dynamic_pointer_cast<const Mesh>(it->second);
     if (!mesh) {
-        mesh = std::make_shared<Mesh>(data, path);
+        mesh = std::make_shared<Mesh>(data, path, bvhLayout(builder.options));
         builder.meshCache[key] = mesh;
     }
     auto smooth = std::make_shared<SmoothMesh>(mesh, data, options);
