@@ -3,7 +3,8 @@
 // rtcOccluded1), medians of alternating runs, and a per-ray check that both find the same hits.
 // A benchmark for `make bench`, not a test.
 //
-// usage: bvh_vs_embree file.obj [--threads N] [--runs N]     (defaults: 1 thread, 5 runs)
+// usage: bvh_vs_embree file.obj [--threads N] [--runs N] [--bvh binary|wide]
+//        (defaults: 1 thread, 5 runs, wide)
 //
 // The ray sets (tests/perf/ray_sets.h): (a) coherent camera rays, 1024x1024, 45° fov, from 1.6
 // bounding radii, looking at the box centre along -z; (b) incoherent rays from a sphere of 2
@@ -11,6 +12,7 @@
 // (c) the same rays as any-hit shadow rays ending at their target point. Every ray is rounded to single precision first, so both
 // libraries trace exactly the same rays (Embree takes floats).
 #include <embree3/rtcore.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -213,6 +215,7 @@ struct Settings {
     std::string obj;
     int threads = 1;
     int runs = 5;
+    rb::BVHLayout layout = rb::BVHLayout::Wide;
 };
 
 /// Parse `file.obj [--threads N] [--runs N]` (a bare number is the run count).
@@ -220,7 +223,9 @@ Settings parse(int argc, char** argv) {
     Settings s;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if ((a == "--threads" || a == "--runs") && i + 1 < argc) {
+        if (a == "--bvh" && i + 1 < argc) {
+            s.layout = rb::bvhLayoutNamed(argv[++i]);
+        } else if ((a == "--threads" || a == "--runs") && i + 1 < argc) {
             const int v = std::max(1, std::atoi(argv[++i]));
             (a == "--threads" ? s.threads : s.runs) = v;
         } else if (!a.empty() && std::isdigit(static_cast<unsigned char>(a[0])) && !s.obj.empty()) {
@@ -237,6 +242,8 @@ Settings parse(int argc, char** argv) {
 
 int run(const Settings& s) {
     const rb::ObjData data = rb::loadObj(s.obj);
+    // raybook's build splits big ranges as OpenMP tasks: give it the same threads as Embree.
+    omp_set_num_threads(s.threads);
 
     // Build times, alternating raybook and Embree.
     std::vector<double> rbBuild, emBuild;
@@ -245,7 +252,7 @@ int run(const Settings& s) {
     for (int i = 0; i < s.runs; ++i) {
         mesh.reset();
         auto t0 = Clock::now();
-        mesh = std::make_unique<rb::Mesh>(data, s.obj);
+        mesh = std::make_unique<rb::Mesh>(data, s.obj, s.layout);
         rbBuild.push_back(seconds(t0));
         embree.reset();
         t0 = Clock::now();
@@ -263,19 +270,26 @@ int run(const Settings& s) {
                 "runs: median (min-max)\n",
                 RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, s.obj.c_str(),
                 data.triangles.size(), s.threads, s.threads == 1 ? "" : "s", s.runs);
-    std::printf("  build ms: raybook %s (rb::Mesh: binned SAH in double, 1 thread), Embree %s "
-                "(medium quality, %d thread%s); raybook/Embree %.2f\n",
+    std::printf("  build ms: raybook %s (rb::Mesh: binned SAH, collapsed to 4-wide, triangles "
+                "packed), Embree %s (medium quality); %d thread%s; raybook/Embree %.2f\n",
                 show(rbB, 1e3, "%.1f").c_str(), show(emB, 1e3, "%.1f").c_str(), s.threads,
                 s.threads == 1 ? "" : "s", rbB.median / emB.median);
+    const double n = static_cast<double>(mesh->triangleCount());
+    const double meshBytes = static_cast<double>(mesh->triangleBytes()) / n;
+    const double bvhBytes = static_cast<double>(mesh->bvh().nodeBytes()) / n;
+    std::printf("  memory: %.1f bytes/triangle (triangle packs and vertices %.1f, BVH nodes %.1f)\n",
+                meshBytes + bvhBytes, meshBytes, bvhBytes);
     std::printf("  %-24s %-24s %-24s %-8s %s\n", "rays", "raybook Mrays/s", "Embree Mrays/s",
                 "rb/Embree", "agreement (hits raybook/Embree, hit-miss mismatches)");
     struct Set {
         const char* name;
+        const char* key;  ///< For the machine-readable "target" lines.
         const std::vector<rbperf::BenchRay>* rays;
         bool anyHit;
-    } sets[] = {{"coherent camera 1024^2", &camera, false},
-                {"incoherent 2^20", &incoherent, false},
-                {"shadow (any hit) 2^20", &shadow, true}};
+    } sets[] = {{"coherent camera 1024^2", "coherent", &camera, false},
+                {"incoherent 2^20", "incoherent", &incoherent, false},
+                {"shadow (any hit) 2^20", "shadow", &shadow, true}};
+    std::vector<std::pair<const char*, double>> ratios;
     for (const Set& set : sets) {
         const Query rbQuery = set.anyHit ? raybookAny : raybookClosest;
         const Query emQuery = set.anyHit ? embreeAny : embreeClosest;
@@ -286,6 +300,7 @@ int run(const Settings& s) {
             b.push_back(emQuery(embree.get(), *set.rays, s.threads, outB));
         }
         const Spread sa = spread(a), sb = spread(b);
+        ratios.emplace_back(set.key, sa.median / sb.median);
         const Agreement g = compare(outA, outB, set.anyHit);
         char agreement[160];
         std::snprintf(agreement, sizeof agreement, "%zu/%zu, %zu mismatch%s (%.1f ppm)", g.hitsA,
@@ -297,7 +312,12 @@ int run(const Settings& s) {
                                      g.distanceMismatches == 1 ? "" : "s");
         std::printf("\n");
     }
-    std::printf("  target: raybook/Embree >= 0.5 on coherent and incoherent rays\n");
+    std::printf("  targets (issue 12): raybook/Embree >= 1.0 coherent, >= 0.7 incoherent, >= 0.8 shadow; "
+                "build <= 1.5x Embree's time (1 thread); <= 100 bytes/triangle\n");
+    // Machine-readable lines for bench.sh's summary: "target <name> <value>".
+    for (const auto& [key, ratio] : ratios) std::printf("target %s %.2f\n", key, ratio);
+    std::printf("target build %.2f\n", rbB.median / emB.median);
+    std::printf("target bytes_per_triangle %.1f\n", meshBytes + bvhBytes);
     return 0;
 }
 
@@ -307,8 +327,10 @@ int main(int argc, char** argv) {
     try {
         return run(parse(argc, argv));
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "bvh_vs_embree: %s\nusage: bvh_vs_embree file.obj [--threads N] "
-                             "[--runs N]\n", e.what());
+        std::fprintf(stderr,
+                     "bvh_vs_embree: %s\nusage: bvh_vs_embree file.obj [--threads N] [--runs N] "
+                     "[--bvh binary|wide]\n",
+                     e.what());
         return 2;
     }
 }
