@@ -36,6 +36,39 @@ struct BuildState {
 /// Ranges at least this big build their two halves as parallel OpenMP tasks.
 constexpr std::uint32_t kTaskGrain = 4096;
 
+/// The bounds of a range of primitives and of their centroids: what a node's split needs.
+struct RangeBounds {
+    AABB bounds, centroids;
+    /// Grow to hold primitive r.
+    void extend(const PrimRef& r) {
+        bounds.extend(r.box);
+        centroids.extend(r.centroid);
+    }
+};
+
+/// The bounds of refs[begin, end), in one pass.
+RangeBounds boundsOf(const std::vector<PrimRef>& refs, std::uint32_t begin, std::uint32_t end) {
+    RangeBounds b;
+    for (std::uint32_t i = begin; i < end; ++i) b.extend(refs[i]);
+    return b;
+}
+
+/// Reorder refs[begin, end) so that those for which goesLeft() holds come first; return where
+/// the others start, with the bounds of both sides gathered on the way (so the children need
+/// no pass of their own).
+template <class Predicate>
+std::uint32_t partitionWithBounds(std::vector<PrimRef>& refs, std::uint32_t begin,
+                                  std::uint32_t end, Predicate goesLeft, RangeBounds side[2]) {
+    std::uint32_t i = begin, j = end;
+    for (;;) {
+        while (i < j && goesLeft(refs[i])) side[0].extend(refs[i++]);
+        while (i < j && !goesLeft(refs[j - 1])) side[1].extend(refs[--j]);
+        if (i == j) return i;
+        // refs[i] belongs right and refs[j − 1] left: swap them.
+        std::swap(refs[i], refs[j - 1]);
+    }
+}
+
 /// A subtree under construction: its nodes, numbered from 0 in depth-first order, and the
 /// depth of its deepest leaf.
 struct Subtree {
@@ -129,23 +162,24 @@ void makeLeaf(Subtree& t, std::uint32_t index, std::uint32_t begin, std::uint32_
 }
 
 std::uint32_t buildNode(BuildState& s, Subtree& t, std::uint32_t begin, std::uint32_t end,
-                        int depth);
+                        int depth, const RangeBounds& range);
 
-/// Build the two children of node `index` (over [begin, mid) and [mid, end)) and link them.
+/// Build the two children of node `index` (over [begin, mid) and [mid, end), with bounds
+/// side[0] and side[1]) and link them.
 /// Big ranges build each child as an OpenMP task into a subtree of its own, then append both
 /// in order, so the nodes come out exactly as the serial build would number them.
 void buildChildren(BuildState& s, Subtree& t, std::uint32_t index, std::uint32_t begin,
-                   std::uint32_t mid, std::uint32_t end, int depth) {
+                   std::uint32_t mid, std::uint32_t end, int depth, const RangeBounds side[2]) {
     if (end - begin < kTaskGrain || omp_get_num_threads() == 1) {
-        buildNode(s, t, begin, mid, depth + 1);
-        t.nodes[index].offset = buildNode(s, t, mid, end, depth + 1);
+        buildNode(s, t, begin, mid, depth + 1, side[0]);
+        t.nodes[index].offset = buildNode(s, t, mid, end, depth + 1, side[1]);
         return;
     }
     Subtree left, right;
 #pragma omp task default(shared)
-    buildNode(s, left, begin, mid, depth + 1);
+    buildNode(s, left, begin, mid, depth + 1, side[0]);
 #pragma omp task default(shared)
-    buildNode(s, right, mid, end, depth + 1);
+    buildNode(s, right, mid, end, depth + 1, side[1]);
 #pragma omp taskwait
     // Append a subtree: its interior nodes' second-child indices move with it.
     auto append = [&](const Subtree& sub) {
@@ -161,18 +195,15 @@ void buildChildren(BuildState& s, Subtree& t, std::uint32_t index, std::uint32_t
     t.nodes[index].offset = append(right);
 }
 
-/// Build the subtree over refs[begin, end) into t and return its node index.
+/// Build the subtree over refs[begin, end), whose bounds are `range`, into t and return its
+/// node index.
 std::uint32_t buildNode(BuildState& s, Subtree& t, std::uint32_t begin, std::uint32_t end,
-                        int depth) {
+                        int depth, const RangeBounds& range) {
     const std::uint32_t index = static_cast<std::uint32_t>(t.nodes.size());
     t.nodes.emplace_back();
     t.depth = std::max(t.depth, depth);
-    // Bounds of the primitives and of their centroids, in one pass.
-    AABB bounds, centroidBounds;
-    for (std::uint32_t i = begin; i < end; ++i) {
-        bounds.extend(s.refs[i].box);
-        centroidBounds.extend(s.refs[i].centroid);
-    }
+    const AABB& bounds = range.bounds;
+    const AABB& centroidBounds = range.centroids;
     t.nodes[index].bounds = bounds;
     const std::uint32_t n = end - begin;
     const bool mustSplit = n > static_cast<std::uint32_t>(s.options.maxLeafSize);
@@ -199,7 +230,8 @@ std::uint32_t buildNode(BuildState& s, Subtree& t, std::uint32_t begin, std::uin
             return index;
         }
         t.nodes[index].axis = static_cast<std::uint8_t>(longest);
-        buildChildren(s, t, index, begin, half, end, depth);
+        const RangeBounds side[2] = {boundsOf(s.refs, begin, half), boundsOf(s.refs, half, end)};
+        buildChildren(s, t, index, begin, half, end, depth, side);
         return index;
     }
 
@@ -208,17 +240,18 @@ std::uint32_t buildNode(BuildState& s, Subtree& t, std::uint32_t begin, std::uin
     const Split split = findSplit(s, begin, end, bounds, centroidBounds, nBins);
     std::uint32_t mid = begin;
     int axis = split.axis;
+    RangeBounds side[2];
     if (split.axis >= 0 && (mustSplit || split.cost < leafCost(s.options, n))) {
         const double lo = centroidBounds.lo[axis];
         const double scale = nBins / (centroidBounds.hi[axis] - lo);
-        mid = static_cast<std::uint32_t>(
-            std::partition(s.refs.begin() + begin, s.refs.begin() + end,
-                           [&](const PrimRef& r) {
-                               const int b = std::min(
-                                   nBins - 1, static_cast<int>((r.centroid[axis] - lo) * scale));
-                               return b < split.bin;
-                           }) -
-            s.refs.begin());
+        mid = partitionWithBounds(
+            s.refs, begin, end,
+            [&](const PrimRef& r) {
+                const int b =
+                    std::min(nBins - 1, static_cast<int>((r.centroid[axis] - lo) * scale));
+                return b < split.bin;
+            },
+            side);
     } else if (!mustSplit || n <= 0xFFFF) {
         // A leaf is cheaper, or nothing separates the primitives (all centroids equal).
         if (!mustSplit || split.axis < 0) {
@@ -230,10 +263,12 @@ std::uint32_t buildNode(BuildState& s, Subtree& t, std::uint32_t begin, std::uin
         // Too many primitives with one centroid for one leaf: halve the range.
         mid = begin + n / 2;
         axis = 0;
+        side[0] = boundsOf(s.refs, begin, mid);
+        side[1] = boundsOf(s.refs, mid, end);
     }
     t.nodes[index].axis = static_cast<std::uint8_t>(axis);
     t.nodes[index].count = 0;
-    buildChildren(s, t, index, begin, mid, end, depth);
+    buildChildren(s, t, index, begin, mid, end, depth, side);
     return index;
 }
 
@@ -270,7 +305,7 @@ void BVH::build(std::vector<AABB> primitiveBounds, const BVHBuildOptions& option
     // One thread starts the recursion; big ranges hand their halves to the team as tasks.
 #pragma omp parallel if (n >= kTaskGrain)
 #pragma omp single
-    buildNode(s, tree, 0, static_cast<std::uint32_t>(n), 0);
+    buildNode(s, tree, 0, static_cast<std::uint32_t>(n), 0, boundsOf(s.refs, 0, n));
     depth_ = tree.depth;
     order_.reserve(n);
     for (const PrimRef& r : s.refs) order_.push_back(r.index);

@@ -12,9 +12,10 @@ namespace rb {
 Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
     // Keep the triangles with non-zero area; a degenerate one can never be hit and has no
     // normal.
-    std::vector<std::array<Vec3, 3>> kept;
     std::vector<std::uint32_t> keptSource;
     std::vector<AABB> boxes;
+    keptSource.reserve(data.triangles.size());
+    boxes.reserve(data.triangles.size());
     for (size_t i = 0; i < data.triangles.size(); ++i) {
         const auto& c = data.triangles[i];
         const std::array<Vec3, 3> v{data.positions[c[0].v], data.positions[c[1].v],
@@ -26,10 +27,10 @@ Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
         AABB box;
         for (const Vec3& p : v) box.extend(p);
         boxes.push_back(box);
-        kept.push_back(v);
         keptSource.push_back(static_cast<std::uint32_t>(i));
     }
-    if (kept.empty()) throw InputError(name + ": the mesh has no triangle with non-zero area");
+    if (keptSource.empty())
+        throw InputError(name + ": the mesh has no triangle with non-zero area");
     // Keep the texture coordinates of every triangle, by OBJ index, when the file has any.
     if (!data.texcoords.empty()) {
         texcoords_.reserve(data.triangles.size());
@@ -61,9 +62,12 @@ Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
     options.maxLeafSize = 8;
     bvh_.build(std::move(boxes), options);
     bounds_ = bvh_.bounds();
-    triangleCount_ = kept.size();
+    triangleCount_ = keptSource.size();
     positions_ = data.positions;
     const auto& order = bvh_.primitiveOrder();
+    size_t packCount = 0;
+    bvh_.forEachLeaf([&](std::uint32_t, std::uint32_t count) { packCount += (count + 3) / 4; });
+    packs_.reserve(packCount);
     bvh_.forEachLeaf([&](std::uint32_t& first, std::uint32_t count) {
         const auto firstPack = static_cast<std::uint32_t>(packs_.size());
         for (std::uint32_t k = 0; k < count; k += 4) {

@@ -9,8 +9,8 @@
 // The ray sets (tests/perf/ray_sets.h): (a) coherent camera rays, 1024x1024, 45° fov, from 1.6
 // bounding radii, looking at the box centre along -z; (b) incoherent rays from a sphere of 2
 // bounding radii towards uniform points in the box, fixed seed, closest hit with no far end;
-// (c) the same rays as any-hit shadow rays ending at their target point. Every ray is rounded to single precision first, so both
-// libraries trace exactly the same rays (Embree takes floats).
+// (c) the same rays as any-hit shadow rays ending at their target point. Every ray is rounded to
+// single precision first, so both libraries trace exactly the same rays (Embree takes floats).
 #include <embree3/rtcore.h>
 #include <omp.h>
 
@@ -24,9 +24,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/error.h"
 #include "bvh/mesh.h"
 #include "bvh/obj.h"
+#include "core/error.h"
 #include "ray_sets.h"
 
 namespace {
@@ -85,14 +85,14 @@ struct EmbreeScene {
         rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
         RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_MEDIUM);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-            data.positions.size()));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                              data.positions.size()));
         for (size_t i = 0; i < data.positions.size(); ++i)
             for (int k = 0; k < 3; ++k) v[3 * i + k] = static_cast<float>(data.positions[i][k]);
-        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-            geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-            data.triangles.size()));
+        auto* idx = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(unsigned), data.triangles.size()));
         for (size_t t = 0; t < data.triangles.size(); ++t)
             for (int k = 0; k < 3; ++k)
                 idx[3 * t + k] = static_cast<unsigned>(data.triangles[t][k].v);
@@ -191,7 +191,7 @@ double embreeAny(const void* target, const std::vector<rbperf::BenchRay>& rays, 
 /// How the two libraries' answers differ, ray by ray.
 struct Agreement {
     size_t hitsA = 0, hitsB = 0;
-    size_t hitMissMismatches = 0;  ///< One library hits, the other misses.
+    size_t hitMissMismatches = 0;   ///< One library hits, the other misses.
     size_t distanceMismatches = 0;  ///< Both hit, distances differ by more than 1e-4 relative.
 };
 
@@ -203,7 +203,8 @@ Agreement compare(const std::vector<float>& a, const std::vector<float>& b, bool
         const bool hb = anyHit ? b[i] != 0.0f : b[i] != kMiss;
         g.hitsA += ha;
         g.hitsB += hb;
-        if (ha != hb) ++g.hitMissMismatches;
+        if (ha != hb)
+            ++g.hitMissMismatches;
         else if (ha && !anyHit && std::abs(a[i] - b[i]) > 1e-4f * std::max(a[i], b[i]))
             ++g.distanceMismatches;
     }
@@ -266,19 +267,22 @@ int run(const Settings& s) {
     const auto shadow = toFloatPrecision(rbperf::incoherentRays(box, 1 << 20, 7));
     const auto incoherent = rbperf::unbounded(shadow);
 
-    std::printf("BVH against Embree %d.%d.%d on %s (%zu triangles), %d thread%s, %d alternating "
-                "runs: median (min-max)\n",
-                RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, s.obj.c_str(),
-                data.triangles.size(), s.threads, s.threads == 1 ? "" : "s", s.runs);
-    std::printf("  build ms: raybook %s (rb::Mesh: binned SAH, collapsed to 4-wide, triangles "
-                "packed), Embree %s (medium quality); %d thread%s; raybook/Embree %.2f\n",
-                show(rbB, 1e3, "%.1f").c_str(), show(emB, 1e3, "%.1f").c_str(), s.threads,
-                s.threads == 1 ? "" : "s", rbB.median / emB.median);
+    std::printf(
+        "BVH against Embree %d.%d.%d on %s (%zu triangles), %d thread%s, %d alternating "
+        "runs: median (min-max)\n",
+        RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, s.obj.c_str(),
+        data.triangles.size(), s.threads, s.threads == 1 ? "" : "s", s.runs);
+    std::printf(
+        "  build ms: raybook %s (rb::Mesh: binned SAH, collapsed to 4-wide, triangles "
+        "packed), Embree %s (medium quality); %d thread%s; raybook/Embree %.2f\n",
+        show(rbB, 1e3, "%.1f").c_str(), show(emB, 1e3, "%.1f").c_str(), s.threads,
+        s.threads == 1 ? "" : "s", rbB.median / emB.median);
     const double n = static_cast<double>(mesh->triangleCount());
     const double meshBytes = static_cast<double>(mesh->triangleBytes()) / n;
     const double bvhBytes = static_cast<double>(mesh->bvh().nodeBytes()) / n;
-    std::printf("  memory: %.1f bytes/triangle (triangle packs and vertices %.1f, BVH nodes %.1f)\n",
-                meshBytes + bvhBytes, meshBytes, bvhBytes);
+    std::printf(
+        "  memory: %.1f bytes/triangle (triangle packs and vertices %.1f, BVH nodes %.1f)\n",
+        meshBytes + bvhBytes, meshBytes, bvhBytes);
     std::printf("  %-24s %-24s %-24s %-8s %s\n", "rays", "raybook Mrays/s", "Embree Mrays/s",
                 "rb/Embree", "agreement (hits raybook/Embree, hit-miss mismatches)");
     struct Set {
@@ -308,12 +312,14 @@ int run(const Settings& s) {
                       1e6 * g.hitMissMismatches / set.rays->size());
         std::printf("  %-24s %-24s %-24s %-8.2f %s", set.name, show(sa, 1e-6).c_str(),
                     show(sb, 1e-6).c_str(), sa.median / sb.median, agreement);
-        if (!set.anyHit) std::printf(", %zu distance%s off by >1e-4", g.distanceMismatches,
-                                     g.distanceMismatches == 1 ? "" : "s");
+        if (!set.anyHit)
+            std::printf(", %zu distance%s off by >1e-4", g.distanceMismatches,
+                        g.distanceMismatches == 1 ? "" : "s");
         std::printf("\n");
     }
-    std::printf("  targets (issue 12): raybook/Embree >= 1.0 coherent, >= 0.7 incoherent, >= 0.8 shadow; "
-                "build <= 1.5x Embree's time (1 thread); <= 100 bytes/triangle\n");
+    std::printf(
+        "  targets (issue 12): raybook/Embree >= 1.0 coherent, >= 0.7 incoherent, >= 0.8 shadow; "
+        "build <= 1.5x Embree's time (1 thread); <= 100 bytes/triangle\n");
     // Machine-readable lines for bench.sh's summary: "target <name> <value>".
     for (const auto& [key, ratio] : ratios) std::printf("target %s %.2f\n", key, ratio);
     std::printf("target build %.2f\n", rbB.median / emB.median);
