@@ -7,18 +7,20 @@
 
 namespace rb {
 
-/// The smallest float not below x (x rounded up to float). NaN stays NaN.
+/// The smallest float not below x (x rounded up to float). NaN stays NaN. Branch-free: it runs
+/// several times per ray.
 [[gnu::always_inline]] inline float roundUpToFloat(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) {
-        // One float step towards +∞: the bit pattern moves one up for f > 0, one down for
-        // f < 0; from ±0 the step is the smallest positive subnormal.
-        std::uint32_t bits;
-        std::memcpy(&bits, &f, sizeof bits);
-        bits = f > 0.0f ? bits + 1 : f < 0.0f ? bits - 1 : 1u;
-        std::memcpy(&f, &bits, sizeof f);
-    }
-    return f;
+    const float f = static_cast<float>(x);
+    // One float step towards +∞: the bit pattern moves one up for f > 0, one down for f < 0;
+    // from ±0 the step is the smallest positive subnormal (bit pattern 1).
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    const std::uint32_t magnitude = bits & 0x7FFFFFFFu;
+    const std::uint32_t stepped = magnitude == 0 ? 1u : (bits >> 31) ? bits - 1 : bits + 1;
+    const std::uint32_t result = static_cast<double>(f) < x ? stepped : bits;
+    float out;
+    std::memcpy(&out, &result, sizeof out);
+    return out;
 }
 /// The largest float not above x (x rounded down to float).
 [[gnu::always_inline]] inline float roundDownToFloat(double x) {

@@ -52,7 +52,7 @@ struct WideRay {
     __m128 oNear[3], oFar[3], invDNear[3], invDFar[3];
     int nearPlane[3], farPlane[3];  ///< Offsets, in floats, of the near and far planes in a node.
 
-    explicit WideRay(const Ray& r) {
+    [[gnu::always_inline]] explicit WideRay(const Ray& r) {
         for (int axis = 0; axis < 3; ++axis) {
             const double invD = 1.0 / r.d[axis];
             const bool negative = std::signbit(invD);
@@ -206,7 +206,8 @@ template <class LeafTest>
 // [wide-traverse]
 
 /// Any-hit traversal of a wide BVH for shadow rays: stops at the first leaf for which
-/// leaf(first, count, tMax) returns true.
+/// leaf(first, count, tMax) returns true. Order does not matter here, so the leaves among a
+/// node's children are tested at once and only nodes wait on the stack.
 template <class LeafTest>
 [[gnu::always_inline]] inline bool anyWide(const std::vector<WideNode>& nodes, const Ray& ray,
                                            double tMax, LeafTest&& leaf) {
@@ -216,13 +217,14 @@ template <class LeafTest>
     WideStack stack;
     std::uint32_t ref = 0, count = 0;  // start at the root node
     for (;;) {
-        if (count > 0) {
-            if (leaf(ref, count, tMax)) return true;
-        } else {
-            const WideNode& n = nodes[ref];
-            __m128 tEntry;
-            for (int mask = intersectChildren4(n, r, tMaxF, tEntry); mask; mask &= mask - 1)
-                stack.push(n, __builtin_ctz(mask), 0.0f);
+        const WideNode& n = nodes[ref];
+        __m128 tEntry;
+        for (int mask = intersectChildren4(n, r, tMaxF, tEntry); mask; mask &= mask - 1) {
+            const int c = __builtin_ctz(mask);
+            if (n.count[c] == 0)
+                stack.push(n, c, 0.0f);
+            else if (leaf(n.child[c], n.count[c], tMax))
+                return true;
         }
         if (stack.empty()) return false;
         stack.pop(ref, count);
