@@ -321,7 +321,8 @@ def collapse(nodes, i, wide):
 
 
 def slab_2d(o, d, box):
-    """intersectChildren4 for one lane, in the plane (tMax infinite): [t0, t1], hit when t0 <= t1."""
+    """intersectChildren4 for one lane, in the plane, tMax infinite: [t0, t1], a hit when
+    t0 <= t1."""
     t0, t1 = 0.0, math.inf
     for axis in range(2):
         near, far = (box[0][axis], box[1][axis]) if d[axis] >= 0 else (box[1][axis],
@@ -462,7 +463,6 @@ def wide_figure(name):
              "count is 4 × 16 bits: 8 bytes, then 8 of padding (alignas 64)", "start", 11, "#555")
 
     # Below right: the four lanes of the slab test for this ray, and the visiting order.
-    G = Frame2D((560, 600), 1)
     t_max = max(t1 for t0, t1 in intervals if t0 <= t1) * 1.08
     scale = 300 / t_max
     fig.text((545, y0 - 34), "one slab test, four lanes: [~t~_0, ~t~_1] of each child", "start",
@@ -488,7 +488,6 @@ def wide_figure(name):
         fig.text((565 + scale * t / 10, y_axis + 16), f"{t / 10:.1f}", size=10)
     fig.text((715, y_axis + 32), "~t~ along the ray (|~d~| scaled so the arrow ends at 1.05)",
              size=11, fill="#555")
-    del G
     return fig.write(name)
 
 
