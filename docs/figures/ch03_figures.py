@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Chapter 3's figures (SVG, written next to this script): the binned SAH split of
-chapters/03-bvh.md, computed as src/bvh/bvh.cpp computes it.
+chapters/03-bvh.md, computed as src/bvh/bvh.cpp computes it, the watertight test's edge
+functions, and the wide BVH of the "going further" section.
 
     python3 docs/figures/ch03_figures.py
 
@@ -9,6 +10,15 @@ ch03-watertight.svg   two triangles sharing an edge, moved into the ray's frame 
                functions U, V, W as the signed areas the origin makes with each edge; left, a
                ray through one triangle, right, a ray through a point of the shared edge, where
                the neighbour's function for that edge is exactly -U.
+ch03-wide.svg  twelve triangles built into a binary tree by the binned SAH (both axes, one
+               triangle per leaf), then collapsed as collapseToWide() in src/bvh/bvh.cpp does:
+               from the root's two children, the interior child of largest area is opened until
+               there are four. Left, the four child boxes of the root's wide node and a ray, with
+               each child's slab interval [t0, t1] as intersectChildren4() computes it (tMax
+               infinite) and the order in which the traversal visits the children it enters;
+               right, the binary tree with the binary nodes each wide node absorbs; below, the
+               wide node's 128 bytes (WideNode: lo[3][4], hi[3][4], child[4], count[4]), lane c
+               holding child c, so that one load fetches one plane of all four children.
 ch03-sah.svg   eight triangles in a node N; their centroids (box centres) binned along x into
                B = min(16, 8) = 8 bins; every candidate plane between bins priced by
                C_split = C_trav + (A(L)|L| + A(R)|R|) / A(N), the cheapest one drawn with its
@@ -19,8 +29,10 @@ random line meeting N also meets a convex C inside it is perimeter(C) / perimete
 Crofton again). A is half of it, as the code's halfArea() is half the surface area. Only the x
 axis is drawn; the code prices the y and z planes the same way and keeps the cheapest of all.
 """
-from svgfig import (BLUE, DARK, FILL_BLUE, FILL_GREY, FILL_ORANGE, GRID, INK, ORANGE, RED,
-                    Figure, Frame2D, add)
+import math
+
+from svgfig import (BLUE, DARK, FILL_BLUE, FILL_GREY, FILL_ORANGE, FILL_RED, GREEN, GRID, INK,
+                    ORANGE, RED, Figure, Frame2D, add)
 
 TRIANGLES = [
     [(0.5, 0.8), (2.0, 1.2), (1.0, 2.6)],
@@ -233,6 +245,253 @@ def watertight_figure(name):
     return fig.write(name)
 
 
+# The wide BVH figure: a small binary SAH tree, collapsed into four-wide nodes.
+
+WIDE_TRIANGLES = [
+    [(0.3, 0.4), (1.5, 0.6), (0.7, 1.6)],
+    [(1.2, 1.5), (2.4, 1.2), (1.9, 2.5)],
+    [(0.4, 2.6), (1.4, 2.9), (0.6, 3.8)],
+    [(1.6, 3.4), (2.7, 3.1), (2.2, 4.3)],
+    [(3.4, 0.3), (4.6, 0.7), (3.9, 1.5)],
+    [(4.2, 1.6), (5.3, 1.3), (5.0, 2.4)],
+    [(5.8, 0.4), (7.0, 0.9), (6.2, 1.7)],
+    [(6.6, 1.8), (7.9, 1.5), (7.4, 2.8)],
+    [(4.0, 3.6), (5.1, 3.3), (4.6, 4.5)],
+    [(8.2, 0.5), (9.5, 0.8), (8.8, 1.9)],
+    [(8.6, 2.6), (9.7, 2.3), (9.3, 3.6)],
+    [(7.0, 3.7), (8.3, 3.5), (7.6, 4.6)],
+]
+CHILD_COLOURS = [BLUE, ORANGE, GREEN, RED]
+BAND = "#e6e9ee"  # the grey band around the binary nodes one wide node absorbs
+
+
+def build_binary(prims, nodes):
+    """The binned SAH build of src/bvh/bvh.cpp in the plane, one triangle per leaf: append
+    the subtree over prims to nodes (first child right after its parent) and return its index."""
+    index = len(nodes)
+    box = bounds([p for i in prims for p in WIDE_TRIANGLES[i]])
+    nodes.append({"box": box, "prims": prims, "kids": None})
+    if len(prims) == 1:
+        return index
+    cents = {i: tuple((a + b) / 2 for a, b in zip(*bounds(WIDE_TRIANGLES[i]))) for i in prims}
+    n_bins = max(2, min(16, len(prims)))
+    best = None
+    for axis in range(2):
+        lo, hi = min(c[axis] for c in cents.values()), max(c[axis] for c in cents.values())
+        if hi == lo:
+            continue
+        bin_of = {i: min(n_bins - 1, int((cents[i][axis] - lo) * n_bins / (hi - lo)))
+                  for i in prims}
+        for b in range(1, n_bins):
+            left = [i for i in prims if bin_of[i] < b]
+            right = [i for i in prims if bin_of[i] >= b]
+            if not left or not right:
+                continue
+            cost = C_TRAV + sum(
+                half_area(bounds([p for i in side for p in WIDE_TRIANGLES[i]])) * len(side)
+                for side in (left, right)) / half_area(box)
+            if best is None or cost < best[0]:
+                best = (cost, left, right)
+    _, left, right = best
+    build_binary(left, nodes)
+    second = build_binary(right, nodes)
+    nodes[index]["kids"] = (index + 1, second)
+    return index
+
+
+def collapse(nodes, i, wide):
+    """collapseNode: the binary nodes wide node len(wide) absorbs, and its (up to) four
+    children, opening the interior child of largest area until there are four."""
+    kids = list(nodes[i]["kids"])
+    absorbed = [i]
+    while len(kids) < 4:
+        interior = [k for k in range(len(kids)) if nodes[kids[k]]["kids"]]
+        if not interior:
+            break
+        open_ = max(interior, key=lambda k: half_area(nodes[kids[k]]["box"]))
+        opened = kids[open_]
+        absorbed.append(opened)
+        kids[open_:open_ + 1] = list(nodes[opened]["kids"])
+    me = {"binary": i, "absorbed": absorbed, "kids": kids}
+    wide.append(me)
+    for k in kids:
+        if nodes[k]["kids"]:
+            collapse(nodes, k, wide)
+    return me
+
+
+def slab_2d(o, d, box):
+    """intersectChildren4 for one lane, in the plane, tMax infinite: [t0, t1], a hit when
+    t0 <= t1."""
+    t0, t1 = 0.0, math.inf
+    for axis in range(2):
+        near, far = (box[0][axis], box[1][axis]) if d[axis] >= 0 else (box[1][axis],
+                                                                        box[0][axis])
+        t0 = max(t0, (near - o[axis]) / d[axis])
+        t1 = min(t1, (far - o[axis]) / d[axis])
+    return t0, t1
+
+
+def rounded_group(fig, points, edges, radius):
+    """A light band around a group of tree nodes: thick round-capped strokes along its edges."""
+    for p, q in edges:
+        fig.add(f'<line x1="{p[0]:.2f}" y1="{p[1]:.2f}" x2="{q[0]:.2f}" y2="{q[1]:.2f}" '
+                f'stroke="{BAND}" stroke-width="{2 * radius}" stroke-linecap="round"/>')
+    for p in points:
+        fig.circle(p, radius, BAND, BAND, 0)
+
+
+def wide_figure(name):
+    nodes = []
+    build_binary(list(range(len(WIDE_TRIANGLES))), nodes)
+    wide = []
+    collapse(nodes, 0, wide)
+    root = wide[0]
+    # Which root child each binary node lies under (for the colours).
+    colour_of = {}
+
+    def paint(k, colour):
+        colour_of[k] = colour
+        if nodes[k]["kids"]:
+            for kid in nodes[k]["kids"]:
+                paint(kid, colour)
+
+    for c, k in enumerate(root["kids"]):
+        paint(k, CHILD_COLOURS[c])
+
+    fig = Figure(900, 690, "a binary BVH collapsed into a four-wide node, and its memory layout")
+
+    # Left: the triangles, the root's four child boxes, and a ray.
+    F = Frame2D((30, 330), 44)
+    o, target = (-0.3, 4.7), (9.9, 0.9)
+    d = (target[0] - o[0], target[1] - o[1])
+    intervals = [slab_2d(o, d, nodes[k]["box"]) for k in root["kids"]]
+    pad = 0.08
+    for c, k in enumerate(root["kids"]):
+        (x0, y0), (x1, y1) = nodes[k]["box"]
+        fig.rect(*F((x0 - pad, y1 + pad)), *F((x1 + pad, y0 - pad)), CHILD_COLOURS[c], "none", 2)
+        fig.text(add(F((x0 - pad, y1 + pad)), (4, -5)), f"child {c}", "start", 12,
+                 CHILD_COLOURS[c], "bold")
+    for i, tri in enumerate(WIDE_TRIANGLES):
+        leaf = next(k for k in range(len(nodes)) if nodes[k]["prims"] == [i])
+        colour = colour_of[leaf]
+        fig.polygon([F(p) for p in tri], colour, colour, 1.2, opacity=0.22)
+        cx = sum(p[0] for p in tri) / 3
+        cy = sum(p[1] for p in tri) / 3
+        fig.text(add(F((cx, cy)), (0, 4)), str(i), size=10, fill=DARK)
+    t_end = 1.05
+    fig.arrow(F(o), F((o[0] + t_end * d[0], o[1] + t_end * d[1])), INK, 1.6)
+    fig.dot(F(o), INK, 3.5)
+    fig.text(add(F(o), (-4, -8)), "ray", "start", 12)
+    for c, (t0, t1) in enumerate(intervals):
+        if t0 <= t1:
+            for t in (t0, t1):
+                fig.dot(F((o[0] + t * d[0], o[1] + t * d[1])), CHILD_COLOURS[c], 3.5)
+
+    # Right: the binary tree; each wide node is a grey band around the binary nodes it absorbs.
+    leaves = [k for k in range(len(nodes)) if not nodes[k]["kids"]]
+    pos = {}
+
+    def place(k, depth):
+        if not nodes[k]["kids"]:
+            pos[k] = (490 + 33 * leaves.index(k), 60 + 52 * depth)
+        else:
+            a, b = nodes[k]["kids"]
+            place(a, depth + 1)
+            place(b, depth + 1)
+            pos[k] = ((pos[a][0] + pos[b][0]) / 2, 60 + 52 * depth)
+
+    place(0, 0)
+    for w, group in enumerate(wide):
+        inside = set(group["absorbed"])
+        edges = [(pos[k], pos[kid]) for k in inside for kid in nodes[k]["kids"] if kid in inside]
+        rounded_group(fig, [pos[k] for k in inside], edges, 14)
+        top = pos[group["binary"]]
+        fig.text(add(top, (-18, -2)), f"W{w}", "end", 12, DARK, "bold")
+    for k, node in enumerate(nodes):
+        if node["kids"]:
+            for kid in node["kids"]:
+                colour = DARK if k in root["absorbed"] else colour_of[kid]
+                fig.line(pos[k], pos[kid], colour, 1.4)
+    for k, node in enumerate(nodes):
+        if node["kids"]:
+            colour = DARK if k in root["absorbed"] else colour_of[k]
+            fig.circle(pos[k], 6, colour, "white" if k in root["absorbed"] else colour, 2)
+        else:
+            fig.rect(pos[k][0] - 9, pos[k][1] - 9, pos[k][0] + 9, pos[k][1] + 9,
+                     colour_of[k], "white", 1.8)
+            fig.text(add(pos[k], (0, 4)), str(node["prims"][0]), size=10)
+    for c, k in enumerate(root["kids"]):
+        fig.text(add(pos[k], (0, -12 if nodes[k]["kids"] else -14)), f"{c}", "end" if c < 2
+                 else "start", 11, CHILD_COLOURS[c], "bold")
+    fig.text((685, 24), f"the binary tree: W0 absorbs {len(root['absorbed'])} binary nodes "
+             f"(white), {len(wide)} wide nodes in all", size=12)
+
+    # Below: the 128 bytes of W0, one row of four lanes per 16-byte load.
+    rows = [("lo[0]", "lo.x", lambda k: nodes[k]["box"][0][0]),
+            ("lo[1]", "lo.y", lambda k: nodes[k]["box"][0][1]),
+            ("lo[2]", "lo.z", lambda k: 0.0),
+            ("hi[0]", "hi.x", lambda k: nodes[k]["box"][1][0]),
+            ("hi[1]", "hi.y", lambda k: nodes[k]["box"][1][1]),
+            ("hi[2]", "hi.z", lambda k: 0.0),
+            ("child", "node or first pack", None),
+            ("count", "0 or triangles", None)]
+    x0, y0, cell_w, cell_h = 130, 392, 62, 30
+    fig.text((x0 - 100, y0 - 34), "W0 in memory (WideNode, 128 bytes)", "start", 13,
+             weight="bold")
+    for c in range(4):
+        fig.text((x0 + cell_w * c + cell_w / 2, y0 - 14), f"lane {c}", size=11,
+                 fill=CHILD_COLOURS[c])
+    wide_index = {group["binary"]: w for w, group in enumerate(wide)}
+    for r, (field, meaning, value) in enumerate(rows):
+        y = y0 + cell_h * r
+        fig.text((x0 - 100, y + 20), f"{16 * r:3d}", "start", 11, GRID)
+        fig.text((x0 - 8, y + 20), field, "end", 12)
+        for c, k in enumerate(root["kids"]):
+            fill = {BLUE: FILL_BLUE, ORANGE: FILL_ORANGE, GREEN: "#e2f2e5",
+                    RED: FILL_RED}[CHILD_COLOURS[c]]
+            fig.rect(x0 + cell_w * c, y, x0 + cell_w * (c + 1), y + cell_h, DARK, fill, 1)
+            if value:
+                text = f"{value(k):.1f}"
+            elif field == "child":
+                text = f"W{wide_index[k]}" if nodes[k]["kids"] else "pack"
+            else:
+                text = "0" if nodes[k]["kids"] else str(len(nodes[k]["prims"]))
+            fig.text((x0 + cell_w * c + cell_w / 2, y + 20), text, size=12)
+        fig.text((x0 + 4 * cell_w + 8, y + 20), meaning, "start", 11, "#555")
+    fig.text((x0 - 100, y0 + cell_h * 8 + 18),
+             "count is 4 × 16 bits: 8 bytes, then 8 of padding (alignas 64)", "start", 11, "#555")
+
+    # Below right: the four lanes of the slab test for this ray, and the visiting order.
+    t_max = max(t1 for t0, t1 in intervals if t0 <= t1) * 1.08
+    scale = 300 / t_max
+    fig.text((545, y0 - 34), "one slab test, four lanes: [~t~_0, ~t~_1] of each child", "start",
+             13, weight="bold")
+    order = sorted((t0, c) for c, (t0, t1) in enumerate(intervals) if t0 <= t1)
+    for c, (t0, t1) in enumerate(intervals):
+        y = y0 + 22 + 44 * c
+        fig.text((555, y + 4), f"lane {c}", "end", 11, CHILD_COLOURS[c])
+        fig.line((565, y), (565 + 300, y), GRID, 1)
+        if t0 <= t1:
+            fig.line((565 + scale * t0, y), (565 + scale * t1, y), CHILD_COLOURS[c], 5)
+            rank = [cc for _, cc in order].index(c)
+            fig.text((565 + scale * t0, y - 9), f"~t~_0 = {t0:.2f}", "start", 11,
+                     CHILD_COLOURS[c])
+            fig.text((565 + scale * t1 + 6, y + 4), f"visit {rank + 1}", "start", 11, INK, "bold")
+        else:
+            fig.text((565 + 150, y - 6), f"miss: ~t~_0 = {t0:.2f} > ~t~_1 = {t1:.2f}", size=11,
+                     fill="#555")
+    y_axis = y0 + 22 + 44 * 4 - 10
+    fig.line((565, y_axis), (865, y_axis), DARK, 1)
+    for t in range(0, int(t_max * 10) + 1, 2):
+        fig.line((565 + scale * t / 10, y_axis), (565 + scale * t / 10, y_axis + 4), DARK, 1)
+        fig.text((565 + scale * t / 10, y_axis + 16), f"{t / 10:.1f}", size=10)
+    fig.text((715, y_axis + 32), "~t~ along the ray (|~d~| scaled so the arrow ends at 1.05)",
+             size=11, fill="#555")
+    return fig.write(name)
+
+
 if __name__ == "__main__":
-    made = [sah_figure("ch03-sah.svg"), watertight_figure("ch03-watertight.svg")]
+    made = [sah_figure("ch03-sah.svg"), watertight_figure("ch03-watertight.svg"),
+            wide_figure("ch03-wide.svg")]
     print("wrote", ", ".join("docs/figures/" + m for m in made))
