@@ -428,7 +428,6 @@ SCENARIO("a degenerate triangle is never hit", "[ch03][ex3.1]") {
 
 // ---- The BVH ----------------------------------------------------------------------------------
 
-// [ch03-bvh-equals-brute-force]
 // [ch03-fast-equals-simple]
 SCENARIO("the wide traversal finds exactly what the binary traversal finds", "[ch03][ex3.2]") {
     GIVEN("binary and wide BVHs over the bunny's triangles and 5 000 random rays into its bounds") {
@@ -607,6 +606,7 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
 }
 // [ch03-robust-traversal]
 
+// [ch03-bvh-equals-brute-force]
 SCENARIO("the BVH finds the same closest triangle as testing every triangle", "[ch03][ex3.2]") {
     GIVEN(
         "the Stanford bunny (3 674 triangles) and 2 000 random rays aimed into its bounds "
