@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "bvh/float_rounding.h"
 #include "bvh/mesh.h"
 
 namespace rb {
@@ -20,34 +21,39 @@ BVHAggregate::BVHAggregate(const std::vector<Instance>& instances, BVHLayout lay
 bool BVHAggregate::intersect(const Ray& ray, double tMax, Hit& hit) const {
     const Instance* closest = nullptr;
     ObjectHit best;
-    bvh_.closest(ray, tMax, [&](std::uint32_t first, std::uint32_t count, double& tClosest) {
-        bool found = false;
-        for (std::uint32_t slot = first; slot < first + count; ++slot) {
-            // After a hit, also look at exactly its distance: two instances hit at the same t
-            // (faces that touch) go to the one that comes first in the scene, as testing every
-            // instance in order would find, whatever order the tree visits them in.
-            const double limit = closest ? std::nextafter(tClosest, INFINITY) : tClosest;
-            ObjectHit oh;
-            if (!ordered_[slot]->intersect(ray, limit, oh)) continue;
-            if (oh.t == tClosest && closest && ordered_[slot] > closest) continue;
-            tClosest = oh.t;
-            best = oh;
-            closest = ordered_[slot];
-            found = true;
-        }
-        return found;
-    });
+    bvh_.closest(
+        ray, tMax,
+        [&](std::uint32_t first, std::uint32_t count, double& tClosest)
+            __attribute__((always_inline)) {
+                bool found = false;
+                for (std::uint32_t slot = first; slot < first + count; ++slot) {
+                    // After a hit, also look at exactly its distance: two instances hit at the same
+                    // t (faces that touch) go to the one that comes first in the scene, as testing
+                    // every instance in order would find, whatever order the tree visits them in.
+                    const double limit = closest ? nextUp(tClosest) : tClosest;
+                    ObjectHit oh;
+                    if (!ordered_[slot]->intersect(ray, limit, oh)) continue;
+                    if (oh.t == tClosest && closest && ordered_[slot] > closest) continue;
+                    tClosest = oh.t;
+                    best = oh;
+                    closest = ordered_[slot];
+                    found = true;
+                }
+                return found;
+            });
     if (closest) hit = closest->toWorld(ray, best);
     return closest != nullptr;
 }
 // [toplevel-intersect]
 
 bool BVHAggregate::occluded(const Ray& ray, double tMax) const {
-    return bvh_.any(ray, tMax, [&](std::uint32_t first, std::uint32_t count, double t) {
-        for (std::uint32_t slot = first; slot < first + count; ++slot)
-            if (ordered_[slot]->occluded(ray, t)) return true;
-        return false;
-    });
+    return bvh_.any(
+        ray, tMax,
+        [&](std::uint32_t first, std::uint32_t count, double t) __attribute__((always_inline)) {
+            for (std::uint32_t slot = first; slot < first + count; ++slot)
+                if (ordered_[slot]->occluded(ray, t)) return true;
+            return false;
+        });
 }
 
 std::string BVHAggregate::statistics() const {

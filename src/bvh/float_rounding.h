@@ -1,5 +1,6 @@
 /// \file
-/// Doubles rounded to float in a chosen direction, for bounds that must stay bounds.
+/// Doubles rounded to float in a chosen direction, for bounds that must stay bounds, and the
+/// next double up.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +23,16 @@ namespace rb {
     std::memcpy(&out, &result, sizeof out);
     return out;
 }
+/// The next double above t, for t > 0 and finite (a hit distance): one step of the bit pattern.
+/// A distance limit of nextUp(t) lets a test accept a hit at exactly t.
+[[gnu::always_inline]] inline double nextUp(double t) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &t, sizeof bits);
+    ++bits;
+    std::memcpy(&t, &bits, sizeof t);
+    return t;
+}
+
 /// The largest float not above x (x rounded down to float).
 [[gnu::always_inline]] inline float roundDownToFloat(double x) {
     return -roundUpToFloat(-x);

@@ -132,7 +132,7 @@ struct NearestTriangle {
         const int lane = __builtin_ctz(mask);
         const std::array<Vec3, 3> v = vertices(tri, lane, positions);
         // After a hit, a tie at exactly its distance is considered too.
-        const double tLimit = nearest.found ? std::nextafter(nearest.t, INFINITY) : nearest.t;
+        const double tLimit = nearest.found ? nextUp(nearest.t) : nearest.t;
         TriangleHit h;
         if (!intersectTriangle(ray, v[0], v[1], v[2], tLimit, h)) continue;
         if (h.t == nearest.t && tri.source[lane] >= nearest.source) continue;
