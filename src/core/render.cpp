@@ -137,7 +137,8 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
                 rays.add(RayKind::Camera);
                 sum += integrator.trace(ray, sampler, rays, 0);
             }
-            image.set(x, y, sum / static_cast<double>(count));
+            // One sample is its own average (no division, the same bits).
+            image.set(x, y, count == 1 ? sum : sum / static_cast<double>(count));
         }
 }
 
