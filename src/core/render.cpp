@@ -144,6 +144,13 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
 
 }  // namespace
 
+void startRenderThreads(int threads) {
+    const int n = threads > 0 ? threads : omp_get_max_threads();
+    std::atomic<int> started{0};
+#pragma omp parallel num_threads(n)
+    ++started;  // a body, so the region is not optimised away
+}
+
 // [render-loop]
 Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera, int width,
              int height, const RenderSettings& settings, RayCounters& counters) {

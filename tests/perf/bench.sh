@@ -6,8 +6,8 @@
 #   BENCH_RUNS=N   runs per scene and thread count (default 5)
 #   RB_SHARED=DIR  the shared folder (default: ../shared beside the repository)
 #
-# Times: raybook's is the "render" phase that ./rt --stats prints (after the Lua script ran, the
-# meshes loaded and the BVHs built; PNG writing excluded). POV-Ray's is its own "Trace Time"
+# Times: raybook's is the "render" phase that ./rt --stats prints (after the render threads
+# started, the Lua script ran, the meshes loaded and the BVHs built; PNG writing excluded). POV-Ray's is its own "Trace Time"
 # line, because its process has a fixed idle wall-time floor of about 0.69 s, whatever the
 # scene. Setup (raybook's Lua, load and build phases against POV-Ray's
 # Parse Time) is reported apart. Runs alternate raybook, POV-Ray, raybook, ... so both see the
@@ -65,7 +65,8 @@ rb_run() {  # scene size threads [extra args...]
                  --output "$tmp/rb.png" "$@" "$scene" 2>&1); then
     echo "bench: $rt failed on $scene:" >&2; echo "$log" >&2; exit 1
   fi
-  # "time  lua 0.001 s, load 0.000 s, mesh bvh 0.000 s" / "time  build ..., render 0.085 s, ..."
+  # "time  threads 0.001 s, lua 0.001 s, load 0.000 s, mesh bvh 0.000 s" /
+  # "time  build ..., render 0.0850 s, ..."
   # "rays  camera 262144 shadow 350104 reflection ... (total 612248)"
   awk '$1 == "time" { for (i = 2; i < NF; i++) if ($i ~ /^[0-9.]+$/ && $(i + 1) ~ /^s/) {
                         if ($(i - 1) == "render") r = $i; else if ($(i - 1) != "write") setup += $i } }
@@ -165,7 +166,7 @@ done
 
 say ""
 say "Same work? Rays per image (1 thread): primary = camera + reflected + refracted, shadow = shadow rays;"
-say "setup = raybook's Lua + load + build phases, POV-Ray's Parse Time (medians, s):"
+say "setup = raybook's thread start + Lua + load + build phases, POV-Ray's Parse Time (medians, s):"
 line=$(printf "  %-14s %21s %21s %21s %21s" scene "primary raybook/POV" "shadow raybook/POV" "setup raybook" "parse POV-Ray")
 say "$line"
 for entry in "${scenes[@]}"; do
