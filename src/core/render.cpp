@@ -145,6 +145,8 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
 }  // namespace
 
 void startRenderThreads(int threads) {
+    // --threads holds for every later parallel loop too (chapter 12's tone map).
+    if (threads > 0) omp_set_num_threads(threads);
     const int n = threads > 0 ? threads : omp_get_max_threads();
     std::atomic<int> started{0};
 #pragma omp parallel num_threads(n)

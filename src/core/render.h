@@ -59,7 +59,8 @@ std::vector<ImageTile> tilesInRenderOrder(int width, int height);
 std::vector<WorkUnit> workUnits(const std::vector<ImageTile>& tiles);
 
 /// Start the OpenMP threads a render with `threads` threads (0: all cores) will use, so that
-/// render() finds them running. Optional: the first parallel region starts them otherwise.
+/// render() finds them running, and make `threads` the thread count of every later parallel
+/// loop. Optional: the first parallel region starts them otherwise.
 void startRenderThreads(int threads);
 
 /// Render an image of the scene through the camera. Counts rays into `counters`.
