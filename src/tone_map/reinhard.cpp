@@ -47,6 +47,7 @@ double localScale(int i) {
 
 namespace {
 
+// [blur-line]
 /// One line of a separable blur: row `line` of the width-wide image `in` (alongRows), or its
 /// column `line`, into `out`; the line has `length` pixels and `weight` holds the taps 0..radius.
 /// A template, so each direction's index arithmetic compiles without a test per tap.
@@ -69,6 +70,7 @@ void blurLine(const std::vector<double>& in, std::vector<double>& out, int line,
         out[index] = sum / total;
     }
 }
+// [blur-line]
 
 }  // namespace
 
