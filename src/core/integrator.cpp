@@ -30,11 +30,6 @@ Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters
 }
 // [trace]
 
-bool Integrator::occluded(const Ray& ray, double tMax, RayCounters& counters) const {
-    counters.add(RayKind::Shadow);
-    return scene_.aggregate->occluded(ray, tMax);
-}
-
 // [headlight]
 Colour shadeHeadlight(const ShadeContext&, const Ray& ray, const Hit& hit) {
     const Colour kd = hit.material ? hit.material->kd : Colour(0.5);

@@ -31,6 +31,10 @@ struct Scene {
     double minWeight = 1.0 / 256.0;
 };
 
+/// The media of a ray that starts in air: the default of Integrator::trace, one shared constant
+/// so a camera ray does not zero a fresh 16-entry stack.
+inline constexpr MediumStack kNoMedia{};
+
 class Integrator;
 class PixelSampler;
 class PostProcess;
@@ -120,9 +124,12 @@ class Integrator {
     /// Radiance arriving along a ray (reversed): the shaded colour of the first surface, or
     /// the background.
     Colour trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth,
-                 const MediumStack& media = MediumStack{}, double weight = 1.0) const;
+                 const MediumStack& media = kNoMedia, double weight = 1.0) const;
     /// True when something lies along the ray with t in (0, tMax): the shadow query.
-    bool occluded(const Ray& ray, double tMax, RayCounters& counters) const;
+    bool occluded(const Ray& ray, double tMax, RayCounters& counters) const {
+        counters.add(RayKind::Shadow);
+        return scene_.aggregate->occluded(ray, tMax);
+    }
     /// The pipeline this integrator runs.
     const Pipeline& pipeline() const { return pipeline_; }
 

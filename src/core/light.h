@@ -32,7 +32,10 @@ struct PointLight {
     // [falloff]
     /// The light's intensity after falloff at distance r.
     Colour intensityAt(double r) const {
-        return colour / (falloff.x + falloff.y * r + falloff.z * r * r);
+        const double attenuation = falloff.x + falloff.y * r + falloff.z * r * r;
+        // A4's usual falloff (1, 0, 0): dividing by 1 changes nothing, so skip the divisions.
+        if (attenuation == 1.0) return colour;
+        return colour / attenuation;
     }
     // [falloff]
 };

@@ -15,15 +15,26 @@ namespace rb {
 
 class Texture;
 
+/// Orders parameter names by length, then alphabetically. Transparent, like std::less<>: a
+/// lookup by string literal builds no std::string; and since the names a chapter looks up on
+/// every hit ("reflect", "transparency", "ior") differ in length, a lookup mostly settles on
+/// the lengths alone, without comparing characters.
+struct ShortlexLess {
+    using is_transparent = void;
+    /// True when a comes before b.
+    bool operator()(std::string_view a, std::string_view b) const {
+        return a.size() != b.size() ? a.size() < b.size() : a < b;
+    }
+};
+
 /// A surface material. The core reads kd, ks and shininess (A4's gr.material); later chapters
 /// read their own named parameters ("reflect", "ior", ...) from `params`.
 struct Material {
-    Colour kd{0.0};                        ///< Diffuse reflectance.
-    Colour ks{0.0};                        ///< Specular reflectance.
-    double shininess = 1.0;                ///< Phong exponent.
-    /// Chapter parameters by name, e.g. "reflect". std::less<> lets a lookup compare a string
-    /// literal directly, without building a std::string on every hit.
-    std::map<std::string, double, std::less<>> params;
+    Colour kd{0.0};          ///< Diffuse reflectance.
+    Colour ks{0.0};          ///< Specular reflectance.
+    double shininess = 1.0;  ///< Phong exponent.
+    /// Chapter parameters by name, e.g. "reflect", looked up on every hit (see ShortlexLess).
+    std::map<std::string, double, ShortlexLess> params;
     /// Tilts the shading normal where this material is hit (chapter 11's bump), or null.
     std::shared_ptr<const NormalPerturbation> bump;
 

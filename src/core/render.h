@@ -58,6 +58,11 @@ std::vector<ImageTile> tilesInRenderOrder(int width, int height);
 /// The progress estimator's view of `tiles`: one WorkUnit per tile, in the same order.
 std::vector<WorkUnit> workUnits(const std::vector<ImageTile>& tiles);
 
+/// Start the OpenMP threads a render with `threads` threads (0: all cores) will use, so that
+/// render() finds them running, and make `threads` the thread count of every later parallel
+/// loop. Optional: the first parallel region starts them otherwise.
+void startRenderThreads(int threads);
+
 /// Render an image of the scene through the camera. Counts rays into `counters`.
 Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera, int width,
              int height, const RenderSettings& settings, RayCounters& counters);

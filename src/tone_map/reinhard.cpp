@@ -45,6 +45,35 @@ double localScale(int i) {
     return std::pow(1.6, i);
 }
 
+namespace {
+
+// [blur-line]
+/// One line of a separable blur: row `line` of the width-wide image `in` (alongRows), or its
+/// column `line`, into `out`; the line has `length` pixels and `weight` holds the taps 0..radius.
+/// A template, so each direction's index arithmetic compiles without a test per tap.
+template <bool alongRows>
+void blurLine(const std::vector<double>& in, std::vector<double>& out, int line, int width,
+              int length, const std::vector<double>& weight) {
+    const int radius = static_cast<int>(weight.size()) - 1;
+    for (int i = 0; i < length; ++i) {
+        double sum = 0.0, total = 0.0;
+        for (int k = std::max(-radius, -i); k <= std::min(radius, length - 1 - i); ++k) {
+            const int j = i + k;
+            const std::size_t index = alongRows ? static_cast<std::size_t>(line) * width + j
+                                                : static_cast<std::size_t>(j) * width + line;
+            const double w = weight[std::abs(k)];
+            sum += w * in[index];
+            total += w;
+        }
+        const std::size_t index = alongRows ? static_cast<std::size_t>(line) * width + i
+                                            : static_cast<std::size_t>(i) * width + line;
+        out[index] = sum / total;
+    }
+}
+// [blur-line]
+
+}  // namespace
+
 // [gaussian-blur]
 std::vector<double> gaussianBlur(const std::vector<double>& L, int width, int height,
                                  double alphaS) {
@@ -54,27 +83,19 @@ std::vector<double> gaussianBlur(const std::vector<double>& L, int width, int he
     std::vector<double> weight(radius + 1);
     for (int k = 0; k <= radius; ++k) weight[k] = std::exp(-(k * k) / (alphaS * alphaS));
     // Each output pixel sums the taps that fall inside the image and divides by their weight:
-    // near a border the kernel shrinks instead of reading black.
+    // near a border the kernel shrinks instead of reading black. The lines are independent,
+    // so threads share them out; each pixel's sum runs in the same order on any thread.
     const auto pass = [&](const std::vector<double>& in, bool alongRows) {
         std::vector<double> out(in.size());
         const int length = alongRows ? width : height;
         const int lines = alongRows ? height : width;
-        for (int line = 0; line < lines; ++line)
-            for (int i = 0; i < length; ++i) {
-                double sum = 0.0, total = 0.0;
-                for (int k = std::max(-radius, -i); k <= std::min(radius, length - 1 - i); ++k) {
-                    const int j = i + k;
-                    const std::size_t index = alongRows
-                                                  ? static_cast<std::size_t>(line) * width + j
-                                                  : static_cast<std::size_t>(j) * width + line;
-                    const double w = weight[std::abs(k)];
-                    sum += w * in[index];
-                    total += w;
-                }
-                const std::size_t index = alongRows ? static_cast<std::size_t>(line) * width + i
-                                                    : static_cast<std::size_t>(i) * width + line;
-                out[index] = sum / total;
-            }
+#pragma omp parallel for schedule(static)
+        for (int line = 0; line < lines; ++line) {
+            if (alongRows)
+                blurLine<true>(in, out, line, width, length, weight);
+            else
+                blurLine<false>(in, out, line, width, length, weight);
+        }
         return out;
     };
     return pass(pass(L, true), false);

@@ -88,7 +88,7 @@ ToneMapSettings toneMapSettings(const RenderContext& context) {
 
 // [tone-map]
 void toneMap(Image& film, const ToneMapSettings& settings) {
-    std::vector<float>& rgb = film.data();
+    const std::span<float> rgb = film.data();
     const std::size_t n = rgb.size() / 3;
     const double gain = std::exp2(settings.exposure);
     // Without an operator every pixel is scaled by the exposure alone.
