@@ -372,8 +372,10 @@ for entry in "${scenes[@]}"; do
 done
 mesh_ratio=""
 [ -n "${pvm[$mesh_scene.1]:-}" ] && mesh_ratio=$(ratio "${rbm[$mesh_scene.1]}" "${pvm[$mesh_scene.1]}")
-bytes=$(target_line bytes_per_triangle "$embree1"); bytes_from="bvh_vs_embree"
-[ -n "$bytes" ] || { bytes=$scaling_bytes; bytes_from="bvh_scaling, bunny_L3"; }
+# The issue asks for bunny_L3 (235k triangles): bvh_scaling's last row; bvh_vs_embree's own
+# figure (bunny_L2) only when bvh_scaling did not run.
+bytes=$scaling_bytes; bytes_from="bvh_scaling, bunny_L3"
+[ -n "$bytes" ] || { bytes=$(target_line bytes_per_triangle "$embree1"); bytes_from="bvh_vs_embree, bunny_L2"; }
 scale=$(target_line scaling "$scaling"); scale_from="bvh_scaling"
 [ -n "$scale" ] || { scale=$scaling_ratio; scale_from="bvh_scaling's columns, largest/smallest"; }
 
