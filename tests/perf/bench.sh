@@ -209,64 +209,47 @@ else
   say "  (the images DIFFER)"
 fi
 
-# ---- Chapter 8 costs nothing when a scene asks for no antialiasing -------------------------
-# The chapter-2 and chapter-7 scenes, rendered by the chapter-7 binary and by the chapter-8 binary
-# with every feature on, alternating, 1 thread, 3 x BENCH_RUNS runs each. Neither scene asks for
-# antialiasing, so chapter 8 installs no pixel sampler and the core's loop runs; the only new
-# work is one null test per tile.
+# ---- A chapter costs nothing when a scene does not use it ----------------------------------
+# One scene rendered by the binary before a chapter and by the chapter's binary with every
+# feature on, alternating, 1 thread, 3 x BENCH_RUNS runs each; prints one line: the medians,
+# their ratio against the 2% target, and whether the images are byte-identical.
+unused_cost_line() {  # before_binary chapter_binary scene size
+  local before=$1 after=$2 scene=$3 size=$4 a=() b=() ma mb same i
+  for ((i = 0; i < feature_runs; i++)); do
+    a+=("$( (cd "$root" && "$build/$before" --quiet --stats --threads 1 --size "$size" --output "$tmp/u-a.png" "$scene" 2>&1) |
+            awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
+    b+=("$( (cd "$root" && "$build/$after" --features=all --quiet --stats --threads 1 --size "$size" --output "$tmp/u-b.png" "$scene" 2>&1) |
+            awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
+  done
+  read -r ma _ < <(printf "%s\n" "${a[@]}" | stats)
+  read -r mb _ < <(printf "%s\n" "${b[@]}" | stats)
+  same=$(cmp -s "$tmp/u-a.png" "$tmp/u-b.png" && echo "images byte-identical" || echo "images DIFFER")
+  awk -v a="$ma" -v b="$mb" -v sa="$(printf "%s\n" "${a[@]}" | spread)" -v sb="$(printf "%s\n" "${b[@]}" | spread)" \
+      -v n="$(basename "$scene" .lua) $size" -v na="$before" -v nb="$after" -v same="$same" 'BEGIN { d = (b / a - 1) * 100
+        printf "  %-28s %s %s, %s %s: ratio %.3f (%+.1f%%) %s; %s", n, na, sa, nb, sb, b / a, d,
+               (d <= 2 && d >= -2) ? "met" : "MISSED", same }'
+}
+
+# Chapter 8 with a scene that asks for no antialiasing: chapter 8 installs no pixel sampler and
+# the core's loop runs; the only new work is one null test per tile.
 if [ -x "$build/rt_ch8" ] && [ -x "$build/rt_ch7" ]; then
   progress "chapter 8 unused"
   say ""
   say "Chapter 8 unused costs nothing: rt_ch7 against rt_ch8 --features=all, 1 thread, $feature_runs alternating runs,"
   say "render s, ratio of medians (target within 2%):"
-  for entry in "scenes/chapter02-phong.lua 1600x1200" "scenes/chapter07-glossy.lua 512x384"; do
-    read -r scene size <<<"$entry"
-    r7=(); r8=()
-    for ((i = 0; i < feature_runs; i++)); do
-      r7+=("$( (cd "$root" && "$build/rt_ch7" --quiet --stats --threads 1 --size "$size" --output "$tmp/r7.png" "$scene" 2>&1) |
-               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
-      r8+=("$( (cd "$root" && "$build/rt_ch8" --features=all --quiet --stats --threads 1 --size "$size" --output "$tmp/r8.png" "$scene" 2>&1) |
-               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
-    done
-    read -r m7 _ < <(printf "%s\n" "${r7[@]}" | stats)
-    read -r m8 _ < <(printf "%s\n" "${r8[@]}" | stats)
-    same=$(cmp -s "$tmp/r7.png" "$tmp/r8.png" && echo "images byte-identical" || echo "images DIFFER")
-    line=$(awk -v a="$m7" -v b="$m8" -v sa="$(printf "%s\n" "${r7[@]}" | spread)" -v sb="$(printf "%s\n" "${r8[@]}" | spread)" \
-             -v n="$(basename "$scene" .lua) $size" -v same="$same" 'BEGIN { d = (b / a - 1) * 100
-               printf "  %-28s rt_ch7 %s, rt_ch8 %s: ratio %.3f (%+.1f%%) %s; %s", n, sa, sb, b / a, d,
-                      (d <= 2 && d >= -2) ? "met" : "MISSED", same }')
-    say "$line"
-  done
+  say "$(unused_cost_line rt_ch7 rt_ch8 scenes/chapter02-phong.lua 1600x1200)"
+  say "$(unused_cost_line rt_ch7 rt_ch8 scenes/chapter07-glossy.lua 512x384)"
 fi
 
-# ---- Chapter 10 costs nothing when a scene uses no texture ---------------------------------
-# The chapter-2 and chapter-8 scenes, rendered by the chapter-9 binary and by the chapter-10
-# binary with every feature on, alternating, 1 thread, 3 x BENCH_RUNS runs each. Neither scene
-# has a textured material, so chapter 10 installs no texture lookup and trace() pays one null
-# test per hit.
+# Chapter 10 with scenes that have no textured material: chapter 10 installs no texture lookup
+# and trace() pays one null test per hit.
 if [ -x "$build/rt_ch10" ] && [ -x "$build/rt_ch9" ]; then
   progress "chapter 10 unused"
   say ""
   say "Chapter 10 unused costs nothing: rt_ch9 against rt_ch10 --features=all, 1 thread, $feature_runs alternating runs,"
   say "render s, ratio of medians (target within 2%):"
-  for entry in "scenes/chapter02-phong.lua 1600x1200" "scenes/chapter08-antialiasing.lua 256x192"; do
-    read -r scene size <<<"$entry"
-    r8=(); r10=()
-    for ((i = 0; i < feature_runs; i++)); do
-      r8+=("$( (cd "$root" && "$build/rt_ch9" --quiet --stats --threads 1 --size "$size" --output "$tmp/r8.png" "$scene" 2>&1) |
-               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
-      r10+=("$( (cd "$root" && "$build/rt_ch10" --features=all --quiet --stats --threads 1 --size "$size" --output "$tmp/r10.png" "$scene" 2>&1) |
-               awk '$1 == "time" { for (i = 2; i < NF; i++) if ($(i - 1) == "render") print $i }')")
-    done
-    read -r m8 _ < <(printf "%s\n" "${r8[@]}" | stats)
-    read -r m10 _ < <(printf "%s\n" "${r10[@]}" | stats)
-    same=$(cmp -s "$tmp/r8.png" "$tmp/r10.png" && echo "images byte-identical" || echo "images DIFFER")
-    line=$(awk -v a="$m8" -v b="$m10" -v sa="$(printf "%s\n" "${r8[@]}" | spread)" -v sb="$(printf "%s\n" "${r10[@]}" | spread)" \
-             -v n="$(basename "$scene" .lua) $size" -v same="$same" 'BEGIN { d = (b / a - 1) * 100
-               printf "  %-28s rt_ch9 %s, rt_ch10 %s: ratio %.3f (%+.1f%%) %s; %s", n, sa, sb, b / a, d,
-                      (d <= 2 && d >= -2) ? "met" : "MISSED", same }')
-    say "$line"
-  done
+  say "$(unused_cost_line rt_ch9 rt_ch10 scenes/chapter02-phong.lua 1600x1200)"
+  say "$(unused_cost_line rt_ch9 rt_ch10 scenes/chapter08-antialiasing.lua 256x192)"
 fi
 
 # ---- Adaptive antialiasing against POV-Ray's +AM2, at equal error ---------------------------
