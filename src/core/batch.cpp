@@ -7,9 +7,16 @@
 // line and the --stats block, which names every image written) into a SceneResult. And it
 // writes DIR/raybook-report.html, one self-contained page with a card per scene, while the
 // children's full logs stay in DIR/raybook-report/.
+//
+// The batch writes nothing outside DIR/raybook-report/ and that page. Each child renders with
+// --output-dir DIR/raybook-report/SCENE.lua/, so a student's own image of the name the scene
+// renders (an A4 deliverable) is never written over: the report shows it beside raybook's
+// render, with the RMSE between them. A report folder or page that the batch did not make is
+// never removed or replaced.
 #include "core/batch.h"
 
 #include <fcntl.h>
+#include <stb_image.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,6 +25,7 @@
 #include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -25,6 +33,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -43,6 +52,10 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* kReportFolder = "raybook-report";
 /// The report page, written in DIR.
 constexpr const char* kReportPage = "raybook-report.html";
+/// A file in the report folder that says the batch made it, so it may empty it next time.
+constexpr const char* kReportStamp = ".raybook-batch";
+/// A line in the report page's head that says the batch wrote it, so it may replace it.
+constexpr const char* kReportGenerator = "<meta name=\"generator\" content=\"raybook --batch\">";
 
 /// What became of one Lua file.
 enum class Status { Ok, Error, TimedOut, Crashed, Helper };
@@ -68,10 +81,12 @@ const char* statusClass(Status s) {
 
 /// One image a scene wrote, as the report shows it.
 struct ImageInfo {
-    std::string path;                 ///< Relative to DIR, '/'-separated.
-    bool exists = false;              ///< The file was there after the batch.
-    int width = 0, height = 0;        ///< From the PNG header, when readable.
-    std::vector<std::string> alsoBy;  ///< Other scenes that wrote the same file.
+    std::string path;           ///< raybook's render, relative to DIR, '/'-separated.
+    bool exists = false;        ///< The file was there after the batch.
+    int width = 0, height = 0;  ///< From the PNG header, when readable.
+    /// The student's own image of the name the scene renders, relative to DIR; empty if none.
+    std::string own;
+    std::string comparison;  ///< "RMSE 0.0123 ...", or why the two could not be compared.
 };
 
 /// Everything the batch learned about one Lua file.
@@ -89,6 +104,7 @@ struct SceneResult {
     std::vector<std::string> other;     ///< Every other stderr line outside the stats.
     std::vector<ImageInfo> images;      ///< In the order the scene wrote them.
     std::string stdoutLog, stderrLog;   ///< The child's logs, relative to DIR.
+    std::string renders;                ///< The folder of its renders, relative to DIR.
 };
 
 /// A child that is still running.
@@ -347,18 +363,58 @@ Status exitStatus(int waitStatus, bool killed, double limit, std::string* note) 
     return Status::Error;
 }
 
+/// Pixels as 8-bit RGB, freed with stbi_image_free.
+using Pixels = std::unique_ptr<unsigned char, void (*)(void*)>;
+
+/// How raybook's render compares with the student's own image: "RMSE 0.0123 ..." over every
+/// channel in [0, 1], or why the two cannot be compared.
+std::string compareWithOwn(const fs::path& render, const fs::path& own) {
+    int w[2] = {}, h[2] = {}, channels = 0;
+    Pixels a(stbi_load(render.c_str(), &w[0], &h[0], &channels, 3), stbi_image_free);
+    Pixels b(stbi_load(own.c_str(), &w[1], &h[1], &channels, 3), stbi_image_free);
+    if (!a) return "raybook's render could not be read back";
+    if (!b) return "not compared: the student's file is not an image stb_image can read";
+    if (w[0] != w[1] || h[0] != h[1])
+        return "not compared: the sizes differ (" + std::to_string(w[0]) + "x" +
+               std::to_string(h[0]) + " rendered, " + std::to_string(w[1]) + "x" +
+               std::to_string(h[1]) + " the student's)";
+    // RMSE over every channel of every pixel, in [0, 1] (1 = black against white everywhere).
+    const size_t n = static_cast<size_t>(w[0]) * static_cast<size_t>(h[0]) * 3;
+    double sum = 0;
+    size_t differing = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const double d = (a.get()[i] - b.get()[i]) / 255.0;
+        sum += d * d;
+        differing += a.get()[i] != b.get()[i];
+    }
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "RMSE %.4f against the student's image (%.1f%% of values differ)",
+                  std::sqrt(sum / static_cast<double>(n)),
+                  100.0 * static_cast<double>(differing) / static_cast<double>(n));
+    return text;
+}
+
 /// Fill in a finished scene's result from its exit and its logs.
 void finishScene(const fs::path& dir, int waitStatus, bool killed, double limit,
                  SceneResult* result) {
     result->status = exitStatus(waitStatus, killed, limit, &result->note);
     const fs::path folder = (dir / result->path).parent_path();
+    const fs::path renders = dir / result->renders;
     for (const std::string& written : readStderr(readFile(dir / result->stderrLog), result)) {
-        // rt prints each image as the scene named it, relative to the scene's folder.
+        // rt prints each image where --output-dir put it: under the scene's renders folder, at
+        // the path the scene named relative to its own folder.
         const fs::path file = (folder / written).lexically_normal();
         ImageInfo image;
         image.path = file.lexically_relative(dir).generic_string();
         image.exists = fs::is_regular_file(file);
         if (image.exists) pngSize(file, &image.width, &image.height);
+        // The student's own image of that name, beside the scene, is left as it is and compared.
+        const fs::path own = (folder / file.lexically_relative(renders)).lexically_normal();
+        if (image.exists && fs::is_regular_file(own)) {
+            image.own = own.lexically_relative(dir).generic_string();
+            image.comparison = compareWithOwn(file, own);
+        }
         result->images.push_back(image);
     }
     if (result->status == Status::Ok && result->images.empty())
@@ -413,6 +469,8 @@ void runScenes(const fs::path& dir, const std::string& exe, const std::vector<st
             plan.exe = exe;
             plan.argv = {exe};
             plan.argv.insert(plan.argv.end(), options.begin(), options.end());
+            plan.argv.push_back("--output-dir");
+            plan.argv.push_back((dir / r.renders).string());
             plan.argv.push_back(scene.filename().string());
             plan.folder = scene.parent_path().string();
             plan.stdoutPath = (dir / r.stdoutLog).string();
@@ -452,17 +510,6 @@ void runScenes(const fs::path& dir, const std::string& exe, const std::vector<st
         // Step 3: wait a little before looking again.
         if (!changed) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-}
-
-/// Note on every image that more than one scene wrote (the last one to finish wins).
-void noteSharedImages(std::vector<SceneResult>* results) {
-    std::map<std::string, std::vector<std::string>> writers;
-    for (const SceneResult& r : *results)
-        for (const ImageInfo& image : r.images) writers[image.path].push_back(r.path);
-    for (SceneResult& r : *results)
-        for (ImageInfo& image : r.images)
-            for (const std::string& other : writers[image.path])
-                if (other != r.path) image.alsoBy.push_back(other);
 }
 
 // ---- The report -------------------------------------------------------------------------------
@@ -543,6 +590,8 @@ ul.msgs li { padding: 3px 8px; margin: 2px 0; border-radius: 4px; overflow-wrap:
              white-space: pre-wrap; }
 ul.errors li { background: #ffebe9; color: #82071e; }
 ul.warnings li { background: #fff8c5; color: #4d2d00; }
+ul.compare li { background: #ddf4ff; color: #0a3069; }
+.thumbs figure.own img { border: 2px solid #0969da; }
 .note { font-style: italic; color: #57606a; }
 details { margin-top: 4px; color: #57606a; }
 details pre { white-space: pre-wrap; margin: 4px 0; }
@@ -557,13 +606,20 @@ std::string thumbnails(const SceneResult& r) {
     for (const ImageInfo& image : r.images) {
         if (!image.exists) continue;
         const std::string url = escapeHtml(urlPath(image.path));
-        std::string caption = fs::path(image.path).filename().string();
+        std::string caption =
+            (image.own.empty() ? "" : "raybook's ") + fs::path(image.path).filename().string();
         if (image.width > 0)
             caption +=
                 " (" + std::to_string(image.width) + "x" + std::to_string(image.height) + ")";
         html += "<figure><a href=\"" + url + "\"><img src=\"" + url + "\" alt=\"" +
                 escapeHtml(image.path) + "\" loading=\"lazy\"></a><figcaption>" +
                 escapeHtml(caption) + "</figcaption></figure>";
+        if (image.own.empty()) continue;
+        // The student's own image of the same name, as they handed it in.
+        const std::string own = escapeHtml(urlPath(image.own));
+        html += "<figure class=\"own\"><a href=\"" + own + "\"><img src=\"" + own + "\" alt=\"" +
+                escapeHtml(image.own) + "\" loading=\"lazy\"></a><figcaption>student's " +
+                escapeHtml(fs::path(image.own).filename().string()) + "</figcaption></figure>";
     }
     if (html.empty()) {
         const char* why = r.status == Status::Helper ? "helper: nothing to render" : "no image";
@@ -592,16 +648,22 @@ std::string metaLine(const SceneResult& r) {
     return line;
 }
 
-/// Notes about images: missing after the batch, or written by more than one scene.
+/// Notes about images: missing after the batch.
 std::vector<std::string> imageNotes(const SceneResult& r) {
     std::vector<std::string> notes;
-    for (const ImageInfo& image : r.images) {
+    for (const ImageInfo& image : r.images)
         if (!image.exists) notes.push_back(image.path + " was written but is gone");
-        for (const std::string& other : image.alsoBy)
-            notes.push_back(image.path + " is also written by " + other +
-                            "; the picture is whichever finished last");
-    }
     return notes;
+}
+
+/// The comparisons of raybook's renders with the student's own images, one line each.
+std::string comparisonList(const SceneResult& r) {
+    std::string html;
+    for (const ImageInfo& image : r.images)
+        if (!image.own.empty())
+            html += "<li class=\"mono\">" + escapeHtml(image.own) + ": " +
+                    escapeHtml(image.comparison) + "</li>";
+    return html.empty() ? "" : "<ul class=\"msgs compare\">" + html + "</ul>";
 }
 
 /// The era line: the era itself in bold ("current framework (...)"), then the evidence.
@@ -631,6 +693,7 @@ std::string sceneCard(const SceneResult& r) {
     if (!r.note.empty()) html += "<div class=\"note\">" + escapeHtml(r.note) + "</div>";
     html += messageList(r.errors, "errors");
     html += messageList(warnings, "warnings");
+    html += comparisonList(r);
     if (!r.other.empty()) {
         std::string text;
         for (const std::string& line : r.other) text += line + "\n";
@@ -676,11 +739,10 @@ void writeReport(const fs::path& file, const std::vector<SceneResult>& results,
                  const BatchInfo& info) {
     const size_t helpers = countOf(results, Status::Helper);
     const size_t scenes = results.size() - helpers;
-    std::string html =
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-        "<title>raybook batch: " +
-        escapeHtml(info.dir.filename().string()) + "</title><style>" + reportCss() +
-        "</style></head><body><main>\n";
+    std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">" +
+                       std::string(kReportGenerator) +
+                       "<title>raybook batch: " + escapeHtml(info.dir.filename().string()) +
+                       "</title><style>" + reportCss() + "</style></head><body><main>\n";
     html += "<h1>raybook batch report: " + escapeHtml(info.dir.filename().string()) + "</h1>";
     html += "<p class=\"sub\"><span class=\"mono\">" + escapeHtml(info.dir.string()) +
             "</span><br>" + std::to_string(scenes) + " scenes and " + std::to_string(helpers) +
@@ -691,12 +753,44 @@ void writeReport(const fs::path& file, const std::vector<SceneResult>& results,
             escapeHtml(info.passedOptions) + " SCENE.lua</span> in its own folder</p>\n";
     html += summary(results) + "\n";
     for (const SceneResult& r : results) html += sceneCard(r);
-    html += "<footer>Full logs: <span class=\"mono\">" + std::string(kReportFolder) +
-            "/</span>. Thumbnails link to the images, which each scene wrote in its own "
-            "folder.</footer>\n</main></body></html>\n";
+    html += "<footer>Full logs and raybook's renders: <span class=\"mono\">" +
+            std::string(kReportFolder) +
+            "/SCENE.lua/</span>. The batch writes nothing else; a student's own image of the "
+            "name a scene renders is shown beside raybook's, as it was handed in (blue "
+            "frame).</footer>\n</main></body></html>\n";
     std::ofstream out(file, std::ios::binary);
     out << html;
     if (!out) throw InputError("--batch: cannot write " + file.string());
+}
+
+/// True when the report page at `page` was written by rt --batch (an older rt wrote no
+/// generator line, only its title).
+bool isBatchReport(const fs::path& page) {
+    const std::string text = readFile(page);
+    return text.find(kReportGenerator) != std::string::npos ||
+           text.find("<title>raybook batch: ") != std::string::npos;
+}
+
+/// Empty the report folder for a new batch, refusing a folder or page the batch did not make,
+/// and stamp the folder as the batch's.
+void prepareReportFolder(const fs::path& dir) {
+    const fs::path folder = dir / kReportFolder;
+    const fs::path page = dir / kReportPage;
+    std::error_code ec;
+    const bool pageExists = fs::exists(page, ec);
+    if (pageExists && !isBatchReport(page))
+        throw InputError("--batch: " + page.string() +
+                         " exists but was not written by rt --batch; move it away or delete it");
+    // A folder with the stamp is the batch's; so is one beside a report page (an older rt's).
+    if (fs::exists(folder, ec) && !fs::exists(folder / kReportStamp, ec) && !pageExists)
+        throw InputError("--batch: " + folder.string() +
+                         " exists but was not made by rt --batch (it has no " + kReportStamp +
+                         " file); the batch writes its renders and logs there, so move the folder "
+                         "away or delete it");
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / kReportStamp)
+        << "This folder is rt --batch's: the next batch over its parent empties it.\n";
 }
 
 /// The local date and time, for the report.
@@ -724,6 +818,10 @@ int runBatch(const CommandLine& cl, int, char** argv) {
         throw InputError("--batch: '" + cl.batchDir + "' is not a folder");
     if (!cl.output.empty())
         throw InputError("--batch: --output names one image; each scene writes its own");
+    if (!cl.outputDir.empty())
+        throw InputError(
+            "--batch: --output-dir is the batch's own choice: each scene's renders "
+            "go to DIR/raybook-report/SCENE.lua/");
     BatchInfo info;
     info.dir = fs::absolute(cl.batchDir).lexically_normal();
     if (info.dir.filename().empty()) info.dir = info.dir.parent_path();
@@ -736,6 +834,7 @@ int runBatch(const CommandLine& cl, int, char** argv) {
         r.status = isHelper(info.dir / path) ? Status::Helper : Status::Ok;
         r.stdoutLog = std::string(kReportFolder) + "/" + path + ".stdout.txt";
         r.stderrLog = std::string(kReportFolder) + "/" + path + ".stderr.txt";
+        r.renders = std::string(kReportFolder) + "/" + path;
         results.push_back(r);
     }
     const size_t helpers = countOf(results, Status::Helper);
@@ -744,8 +843,7 @@ int runBatch(const CommandLine& cl, int, char** argv) {
                          (helpers ? " that calls gr.render" : "") + ")");
 
     // Step 3: run the scenes; the report folder starts empty each time.
-    fs::remove_all(info.dir / kReportFolder);
-    fs::create_directories(info.dir / kReportFolder);
+    prepareReportFolder(info.dir);
     const std::vector<std::string> options = childOptions(cl);
     info.jobs = jobCount(cl, results.size() - helpers);
     info.timeLimit = cl.sceneTimeLimit;
@@ -760,7 +858,6 @@ int runBatch(const CommandLine& cl, int, char** argv) {
     }
     runScenes(info.dir, selfExecutable(argv), options, info.jobs, info.timeLimit, cl.quiet,
               &results);
-    noteSharedImages(&results);
 
     // Step 4: the report, and the summary line.
     info.totalSeconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -42,14 +42,31 @@ std::string partialPath(const std::string& output) {
     return path.replace_extension(".partial.png").string();
 }
 
-/// The output path of render number `index` (of `count`) after --output.
+/// Where --output-dir DIR puts an image named `path`: DIR/path, or DIR/its file name when the
+/// path is absolute or climbs out of its folder with "..", so nothing lands outside DIR. The
+/// folders under DIR are made here (DIR is the caller's; --batch owns its report folder).
+std::string underOutputDir(const std::string& dir, const std::string& path) {
+    namespace fs = std::filesystem;
+    const fs::path p = fs::path(path).lexically_normal();
+    const bool leaves = p.is_absolute() || (!p.empty() && *p.begin() == "..");
+    const fs::path file = fs::path(dir) / (leaves ? p.filename() : p);
+    std::error_code ec;  // a folder that cannot be made is reported by the caller's check
+    fs::create_directories(file.parent_path(), ec);
+    return file.string();
+}
+
+/// The output path of render number `index` (of `count`) after --output and --output-dir.
 std::string outputPath(const CommandLine& cl, const RenderJob& job, size_t index, size_t count) {
-    if (cl.output.empty()) return job.output;
-    if (count == 1 || index == 0) return cl.output;
-    const auto dot = cl.output.rfind('.');
-    const std::string stem = dot == std::string::npos ? cl.output : cl.output.substr(0, dot);
-    const std::string ext = dot == std::string::npos ? ".png" : cl.output.substr(dot);
-    return stem + "-" + std::to_string(index + 1) + ext;
+    std::string path = job.output;
+    if (!cl.output.empty() && (count == 1 || index == 0)) {
+        path = cl.output;
+    } else if (!cl.output.empty()) {
+        const auto dot = cl.output.rfind('.');
+        const std::string stem = dot == std::string::npos ? cl.output : cl.output.substr(0, dot);
+        const std::string ext = dot == std::string::npos ? ".png" : cl.output.substr(dot);
+        path = stem + "-" + std::to_string(index + 1) + ext;
+    }
+    return cl.outputDir.empty() ? path : underOutputDir(cl.outputDir, path);
 }
 
 void printFeatures(const FeatureSet& set) {

@@ -81,7 +81,9 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
                 for (const OutputFormat& format : f.outputFormats)
                     formats.push_back(format.extension);
             checkOutputName(cl.output, "--output", formats);
-        } else if (name == "--assets")
+        } else if (name == "--output-dir")
+            cl.outputDir = next();
+        else if (name == "--assets")
             cl.assetDirs.push_back(next());
         else if (name == "--stats")
             cl.stats = true;
@@ -145,6 +147,10 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --size WxH         override the image size                    default: gr.render's
   --output FILE      override the output image (.png; .hdr with chapter 12)
                                                                 default: gr.render's
+  --output-dir DIR   write every image under DIR, at the path the scene (or --output)
+                     names, instead of beside it; a path that leaves its folder (..,
+                     or absolute) keeps only its file name. --batch uses it, so a
+                     class's own images are never written over
   --assets DIR       also look for meshes, textures and require()d files in DIR, after
                      the working directory and the scene's folder (may be repeated)
   --time-limit S     stop the render after S seconds, writing nothing (exit code 124);
@@ -165,7 +171,8 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --lenient          unknown calls, methods and primitives are warnings, not errors;
                      stderr ends with the list of what was ignored
   --batch DIR        render every scene under DIR, each from its own folder, and write
-                     DIR/raybook-report.html
+                     DIR/raybook-report.html; the renders go to DIR/raybook-report/,
+                     beside any image a student made, never over it
   --scene-time-limit S
                      seconds each scene may take in --batch      default: 300
   --unsafe-lua       let the scene use os and io (off: scenes run in a sandbox)

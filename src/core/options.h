@@ -22,6 +22,7 @@ struct CommandLine {
     int samplesPerPixel = 0;       ///< --spp N (0: the scene's choice, normally 1).
     int width = 0, height = 0;     ///< --size WxH (0: the scene's size).
     std::string output;            ///< --output FILE.
+    std::string outputDir;         ///< --output-dir DIR: every image goes under DIR.
     std::vector<std::string> assetDirs;  ///< --assets DIR (repeatable): more places for files.
     int maxDepth = -1;                   ///< --max-depth N (-1: the scene's choice).
     bool stats = false;                  ///< --stats.

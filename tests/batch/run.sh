@@ -8,7 +8,10 @@
 #
 # Usage: bash tests/batch/run.sh RT_BINARY OUT_DIR
 #
-# It copies the class folder to OUT_DIR/class, runs rt --batch on it, and checks: exit code 0;
+# It copies the class folder to OUT_DIR/class, runs rt --batch on it, and checks: every file of
+# the class (the students' own images among them) is byte-identical after the batch and nothing
+# new appears outside raybook-report/ and the page; each student image is shown beside raybook's
+# render with the RMSE between them (or why they cannot be compared); exit code 0;
 # the summary line; the report lists every Lua file once with the expected status; every
 # thumbnail it shows exists and every ok scene shows one; messages are HTML-escaped; the era,
 # warning and error lines appear; the logs exist; and bad input (no folder, no scenes) exits 1.
@@ -30,10 +33,25 @@ rm -rf "$OUT/class"
 cp -r "$HERE/class" "$OUT/class"
 CLASS=$OUT/class
 REPORT=$CLASS/raybook-report.html
+# Every file of the class with its checksum, outside what the batch owns.
+class_files() {
+    (cd "$1" && find . -path ./raybook-report -prune -o -type f ! -name raybook-report.html \
+        -print0 | LC_ALL=C sort -z | xargs -0 sha256sum)
+}
+class_files "$CLASS" >"$OUT/before.sha256"
 start=$SECONDS
 "$RT" --batch "$CLASS" --scene-time-limit "$LIMIT" >"$OUT/stdout.txt" 2>"$OUT/stderr.txt"
 rc=$?
 took=$((SECONDS - start))
+class_files "$CLASS" >"$OUT/after.sha256"
+if cmp -s "$OUT/before.sha256" "$OUT/after.sha256"; then
+    ok "all $(wc -l <"$OUT/before.sha256") files of the class byte-identical, none added"
+else
+    fail "the class's files" "changed by the batch: $(diff "$OUT/before.sha256" \
+        "$OUT/after.sha256" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+fi
+[ -e "$OUT/student10-escape.png" ] && fail "escape" "a render was written outside the class" ||
+    ok "no render outside DIR (student10/paths.lua names ../student10-escape.png)"
 [ $rc -eq 0 ] && ok "exit code 0 (${took}s)" || fail "exit code" "$rc: $(head -c 400 "$OUT/stderr.txt")"
 [ -s "$REPORT" ] && ok "report written" || fail "report" "$REPORT is missing"
 if grep -Eq '^[0-9]+ rendered, [0-9]+ failed, [0-9]+ timed out$' "$OUT/stdout.txt"; then
@@ -136,6 +154,21 @@ card_says student07/stars.lua "time limit of $LIMIT s"
 card_says student04/rabbits.lua "2 images"
 card_says student01/trees.lua "never calls gr.render"
 card_says welcome.lua " rays"
+# The students' own images, beside raybook's render, compared.
+card_says student01/snowman.lua "student01/snowman.png: RMSE 0.0000"
+card_says student05/bath.lua "student05/bath.png: RMSE 0."
+card_says student08/cube-farm.lua "sizes differ (160x120 rendered, 80x60 the student's)"
+card_says "student09 (late)/night & day.lua" "day.png: not compared: the student's file is not"
+card_says student10/paths.lua "student10/renders/cube.png: RMSE"
+bath_rmse=$(card student05/bath.lua | sed -n 's/.*bath.png: RMSE \([0-9.]*\).*/\1/p')
+python3 -c "import sys; sys.exit(not 0.001 < float('${bath_rmse:-0}') < 0.5)" &&
+    ok "bath.png (another picture of the same size) differs: RMSE $bath_rmse" ||
+    fail "bath.png" "RMSE '$bath_rmse', expected between 0.001 and 0.5"
+grep -q 'src="student01/snowman.png"' "$REPORT" && ok "the student's own image is shown" ||
+    fail "own image" "the report does not show student01/snowman.png"
+grep -q 'src="raybook-report/student01/snowman.lua/snowman.png"' "$REPORT" &&
+    ok "raybook's render is under raybook-report/student01/snowman.lua/" ||
+    fail "render" "no raybook-report/student01/snowman.lua/snowman.png in the report"
 # The era line, when this rt prints one (rt: era: on stderr).
 if grep -q '^rt: era:' "$CLASS/raybook-report/student02/hut-2012.lua.stderr.txt" 2>/dev/null; then
     card_says student02/hut-2012.lua "era: pre-2015"
@@ -173,5 +206,22 @@ rm -rf "$OUT/empty" "$OUT/helpers-only" && mkdir -p "$OUT/empty" "$OUT/helpers-o
 expect_exit1 "no scenes" --batch "$OUT/empty"
 cp "$HERE/class/student01/trees.lua" "$OUT/helpers-only/"
 expect_exit1 "only helpers" --batch "$OUT/helpers-only"
+
+# ---- Never over a folder or page it did not make ------------------------------------------------
+rm -rf "$OUT/own-report" && mkdir -p "$OUT/own-report/raybook-report"
+cp "$HERE/class/welcome.lua" "$OUT/own-report/"
+echo "a student's notes" >"$OUT/own-report/raybook-report/notes.txt"
+expect_exit1 "a raybook-report folder the batch did not make" --batch "$OUT/own-report"
+[ -f "$OUT/own-report/raybook-report/notes.txt" ] && ok "... and it is left alone" ||
+    fail "own folder" "the batch removed a raybook-report folder it did not make"
+rm -rf "$OUT/own-report/raybook-report"
+echo "<html>my own page</html>" >"$OUT/own-report/raybook-report.html"
+expect_exit1 "a raybook-report.html the batch did not write" --batch "$OUT/own-report"
+grep -q "my own page" "$OUT/own-report/raybook-report.html" && ok "... and it is left alone" ||
+    fail "own page" "the batch replaced a raybook-report.html it did not write"
+rm -f "$OUT/own-report/raybook-report.html"
+"$RT" --batch "$OUT/own-report" >/dev/null 2>&1 && "$RT" --batch "$OUT/own-report" >/dev/null 2>&1 &&
+    ok "a second batch over the same folder replaces its own report" ||
+    fail "second batch" "the batch refused its own report folder"
 
 finish
