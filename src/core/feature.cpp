@@ -131,6 +131,7 @@ constexpr LaterCall kLaterCalls[] = {
     {"cylinder", 15, "quadrics"},
     {"cyllinder", 15, "quadrics"},
     {"photon_map", 16, "photon_map"},
+    {"photons", 16, "photon_map"},
     {"media", 17, "media"},
 };
 }  // namespace

@@ -10,6 +10,7 @@
 #include "core/aggregate.h"
 #include "core/light.h"
 #include "core/medium_stack.h"
+#include "core/pre_pass.h"
 #include "core/sampler.h"
 #include "core/stats.h"
 
@@ -115,6 +116,9 @@ struct Pipeline {
     /// How an image position becomes a camera ray (chapter 13's thin lens), or null: the
     /// pinhole camera's ray.
     std::shared_ptr<const CameraRayGenerator> cameraRays;
+    /// Work before the first camera ray (chapter 16's photon tracing), in chapter order;
+    /// empty by default.
+    std::vector<std::shared_ptr<PrePass>> prePasses;
 };
 
 /// Traces rays through a scene with a pipeline.

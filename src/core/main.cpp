@@ -207,6 +207,7 @@ int run(int argc, char** argv) {
         settings.samplesPerPixel = cl.samplesPerPixel > 0 ? cl.samplesPerPixel : 1;
         settings.progress = !cl.quiet && isatty(STDERR_FILENO);
         settings.shouldStop = stopRequested;
+        settings.memory = &cl.memory;
         PartialImage partial;
         if (cl.partial) settings.partial = &partial;
         RayCounters counters;
@@ -271,6 +272,9 @@ int run(int argc, char** argv) {
                          buildSeconds, renderSeconds, writeSeconds);
             if (pipeline.postProcess)
                 std::fprintf(stderr, "  time       post-process %.3f s\n", postSeconds);
+            for (const auto& pass : pipeline.prePasses)
+                if (const std::string line = pass->statistics(); !line.empty())
+                    std::fprintf(stderr, "  %s\n", line.c_str());
             std::fprintf(stderr, "  speed      %.2f Mrays/s\n",
                          counters.total() / std::max(renderSeconds, 1e-9) / 1e6);
             std::fprintf(stderr, "  instances  %zu\n", scene.instances.size());

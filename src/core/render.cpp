@@ -156,6 +156,10 @@ void startRenderThreads(int threads) {
 // [render-loop]
 Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera, int width,
              int height, const RenderSettings& settings, RayCounters& counters) {
+    // Work before the first camera ray (chapter 16's photons), with the same seed.
+    for (const auto& pass : pipeline.prePasses)
+        pass->run(scene, pipeline,
+                  {settings.seed, camera, width, height, settings.memory, counters});
     Image image(width, height);
     const Integrator integrator(scene, pipeline);
     const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();

@@ -35,6 +35,9 @@ struct RenderSettings {
     std::function<bool()> shouldStop;
     /// When set and the render stops, receives what was rendered (--partial). Null: dropped.
     PartialImage* partial = nullptr;
+    /// The budget the pipeline's pre-passes (chapter 16's photon maps) charge before they
+    /// allocate (--max-memory). Null: no limit.
+    const MemoryBudget* memory = nullptr;
 };
 
 /// Side of the square tiles the render loop hands to threads, in pixels.

@@ -1,0 +1,68 @@
+/// \file
+/// Photon: one stored photon, in 20 bytes as Jensen packs it (position, RGBE power, incoming
+/// direction in two bytes).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "core/vec.h"
+
+namespace rb {
+
+// [photon-record]
+/// A photon stored where it landed on a diffuse surface. Source: H. W. Jensen, "Realistic
+/// Image Synthesis Using Photon Mapping" (2001), section 5.2: 20 bytes per photon.
+struct Photon {
+    float position[3];       ///< Where it landed, in world space.
+    std::uint8_t power[4];   ///< Its flux Φ, packed as shared-exponent RGBE (Ward's format).
+    std::uint8_t theta;      ///< The direction it travelled: polar angle, 256 steps over [0, π].
+    std::uint8_t phi;        ///< ... and azimuth, 256 steps over [−π, π).
+    std::uint16_t reserved;  ///< Padding to 20 bytes (Jensen keeps the kd-tree's split axis here).
+};
+static_assert(sizeof(Photon) == 20, "a photon record is 20 bytes");
+// [photon-record]
+
+/// Pack a non-negative colour as RGBE, rounding each mantissa to nearest (plain truncation
+/// would bias every photon down by half a step).
+inline void packRgbe(const Colour& c, std::uint8_t out[4]) {
+    const double v = std::max(c.r, std::max(c.g, c.b));
+    if (!(v > 1e-32)) {
+        out[0] = out[1] = out[2] = out[3] = 0;
+        return;
+    }
+    int e = 0;
+    std::frexp(v, &e);  // v = m·2^e with m in [0.5, 1)
+    const double scale = std::ldexp(1.0, 8 - e);
+    auto byte = [&](double x) {
+        return static_cast<std::uint8_t>(std::min(255.0, std::floor(x * scale + 0.5)));
+    };
+    out[0] = byte(c.r);
+    out[1] = byte(c.g);
+    out[2] = byte(c.b);
+    out[3] = static_cast<std::uint8_t>(e + 128);
+}
+
+/// The colour packRgbe stored.
+inline Colour unpackRgbe(const std::uint8_t in[4]) {
+    if (in[3] == 0) return Colour(0.0);
+    const double f = std::ldexp(1.0, static_cast<int>(in[3]) - (128 + 8));
+    return Colour(in[0] * f, in[1] * f, in[2] * f);
+}
+
+/// Quantise a unit direction to (θ, φ) bytes.
+inline void packDirection(const Vec3& d, std::uint8_t& theta, std::uint8_t& phi) {
+    const double t = std::acos(std::clamp(d.z, -1.0, 1.0)) * (256.0 / M_PI);
+    const double p = (std::atan2(d.y, d.x) + M_PI) * (256.0 / (2.0 * M_PI));
+    theta = static_cast<std::uint8_t>(std::min(255.0, t));
+    phi = static_cast<std::uint8_t>(static_cast<int>(p) & 255);
+}
+
+/// The unit direction at the centre of the (θ, φ) bin packDirection chose.
+inline Vec3 unpackDirection(std::uint8_t theta, std::uint8_t phi) {
+    const double t = (theta + 0.5) * (M_PI / 256.0);
+    const double p = (phi + 0.5) * (2.0 * M_PI / 256.0) - M_PI;
+    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+}
+
+}  // namespace rb

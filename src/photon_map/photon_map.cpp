@@ -1,0 +1,241 @@
+#include "photon_map/photon_map.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.h"
+#include "core/material.h"
+#include "core/render_context.h"
+#include "phong/phong.h"
+
+namespace rb {
+
+void bindPhotonMap(LuaBindings& lua);
+
+namespace {
+
+/// The first radius, in pixel footprints at the typical distance the camera sees: the caustic
+/// map's, and the indirect map's (its photons are spread over the whole scene, so it needs a
+/// wider disk to find as many).
+constexpr double kCausticFootprints = 3.0;
+constexpr double kIndirectFootprints = 12.0;
+
+/// A whole number from the command line within [lo, hi], or InputError naming the option.
+double cliNumber(const RenderContext& context, const char* option, double lo, double hi,
+                 bool integer, double fallback) {
+    const std::string text = context.cliOption(option);
+    if (text.empty()) return fallback;
+    const double v = parseNumberOption(std::string("--") + option, text);
+    if (v < lo || v > hi || (integer && v != std::floor(v)))
+        throw InputError(std::string("--") + option + ": expected " +
+                         (integer ? "a whole number" : "a number") + " from " + formatNumber(lo) +
+                         " to " + formatNumber(hi) + ", got " + text);
+    return v;
+}
+
+}  // namespace
+
+// [photon-settings]
+PhotonSettings photonSettings(const RenderContext& context) {
+    PhotonSettings s;
+    // The scene's gr.photons{...} (checked when it was called).
+    s.on = context.sceneOption("photons", 0.0) != 0.0;
+    s.photons = static_cast<std::uint64_t>(context.sceneOption("photon_count", 20000));
+    s.passes = static_cast<int>(context.sceneOption("photon_passes", s.passes));
+    s.radius = context.sceneOption("photon_radius", 0.0);
+    s.alpha = context.sceneOption("photon_alpha", s.alpha);
+    s.classic = context.sceneOption("photon_classic", 0.0) != 0.0;
+    s.nearest = static_cast<int>(context.sceneOption("photon_nearest", 0.0));
+    s.caustics = context.sceneOption("photon_caustics", 1.0) != 0.0;
+    s.indirect = context.sceneOption("photon_indirect", 0.0) != 0.0;
+    // The command line overrides it; --photons alone switches photon mapping on.
+    if (!context.cliOption("photons").empty()) s.on = true;
+    s.photons = static_cast<std::uint64_t>(
+        cliNumber(context, "photons", 1, 1e12, true, static_cast<double>(s.photons)));
+    s.passes = static_cast<int>(cliNumber(context, "photon-passes", 1, 100000, true, s.passes));
+    s.radius = cliNumber(context, "photon-radius", 1e-12, 1e12, false, s.radius);
+    s.alpha = cliNumber(context, "photon-alpha", 1e-6, 1.0 - 1e-6, false, s.alpha);
+    return s;
+}
+// [photon-settings]
+
+std::vector<double> passRadii(double r0, double alpha, int passes, bool classic) {
+    std::vector<double> radii(static_cast<std::size_t>(passes), r0);
+    if (classic) return radii;
+    // [exercise-radius]
+    // Exercise 16.1, the shrinking radius: read ch16-progressive.
+    // Blank: return radii;
+    // Source: C. Knaus and M. Zwicker, "Progressive Photon Mapping: A Probabilistic Approach",
+    // ACM TOG 30(3), 2011, eq. 19: r²_{i+1} = r²_i (i + α)/(i + 1), passes counted from 1.
+    for (int i = 1; i < passes; ++i) radii[i] = radii[i - 1] * std::sqrt((i + alpha) / (i + 1.0));
+    return radii;
+    // [exercise-radius]
+}
+
+Colour irradianceEstimate(const Colour& flux, double radius) {
+    // [exercise-density]
+    // Exercise 16.2, the density estimate: read ch16-estimate.
+    // Blank: return Colour(0.0);
+    return flux / (M_PI * radius * radius);
+    // [exercise-density]
+}
+
+// [irradiance]
+Colour PhotonPasses::irradiance(const Vec3& x, const Vec3& n, int nearest) const {
+    if (grids.empty()) return Colour(0.0);
+    Colour sum(0.0);
+    for (std::size_t i = 0; i < grids.size(); ++i) {
+        if (nearest > 0) {
+            double r2 = 0.0;
+            const Colour flux = grids[i].gatherNearest(x, n, nearest, r2);
+            if (r2 > 0.0) sum += irradianceEstimate(flux, std::sqrt(r2));
+        } else {
+            sum += irradianceEstimate(grids[i].gatherFlux(x, n, radii[i]), radii[i]);
+        }
+    }
+    return sum / static_cast<double>(grids.size());
+}
+// [irradiance]
+
+// [photon-term]
+Colour PhotonMapping::apply(const ShadeContext& ctx, const Ray& ray, const Hit& hit,
+                            const Colour& colour) const {
+    if (!hit.material) return colour;
+    const Material& m = ctx.integrator.pipeline().textureLookup && !hit.material->textures.empty()
+                            ? ctx.integrator.pipeline().textureLookup(hit)
+                            : *hit.material;
+    // The opaque part of the surface is diffuse; chapter 5's transparent part is glass.
+    const double transparency = glass_ ? hit.material->param("transparency") : 0.0;
+    if (m.kd == Colour(0.0) || transparency >= 1.0) return colour;
+    // The gather looks at the side the ray sees.
+    const Vec3 n = faceForward(hit.ns, -ray.d);
+    Colour e = caustics_.irradiance(hit.p, n, settings_.nearest);
+    e += indirect_.irradiance(hit.p, n, settings_.nearest);
+    return colour + (1.0 - std::clamp(transparency, 0.0, 1.0)) * m.kd * e;
+}
+// [photon-term]
+
+std::uint64_t photonPassBytes(std::uint64_t photons) {
+    // Per record: the pass's chunks, the merged list, the grid's sorted copy, its bucket of
+    // each photon and its table.
+    const std::uint64_t perRecord =
+        3 * sizeof(Photon) + sizeof(std::uint32_t) + PhotonGrid::bytesPerPhoton();
+    return saturatingProduct(saturatingProduct(photons, kMaxStoredPerPhoton), perRecord);
+}
+
+namespace {
+
+/// The distance the camera typically sees (the median over a 16 × 16 grid of camera rays that
+/// hit something) times the angle one pixel spans: the width of a pixel there.
+double pixelFootprint(const Scene& scene, const PrePassContext& ctx) {
+    std::vector<double> distances;
+    for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 16; ++i) {
+            const Ray ray =
+                ctx.camera.generateRay((i + 0.5) * ctx.width / 16.0, (j + 0.5) * ctx.height / 16.0);
+            Hit hit;
+            if (scene.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit))
+                distances.push_back(hit.t * glm::length(ray.d));
+        }
+    const Ray a = ctx.camera.generateRay(0.5 * ctx.width, 0.5 * ctx.height);
+    const Ray b = ctx.camera.generateRay(0.5 * ctx.width + 1.0, 0.5 * ctx.height);
+    const double pixelAngle =
+        std::acos(std::clamp(glm::dot(glm::normalize(a.d), glm::normalize(b.d)), -1.0, 1.0));
+    if (distances.empty()) return 0.0;
+    std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+    return distances[distances.size() / 2] * pixelAngle;
+}
+
+}  // namespace
+
+// [photon-passes]
+void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PrePassContext& ctx) {
+    const auto start = std::chrono::steady_clock::now();
+    const PhotonScattering scattering = PhotonScattering::of(pipeline);
+    glass_ = scattering.refraction != nullptr;
+    // Step 1: the first radius, from the pixel footprint unless the scene gave one.
+    const double footprint = pixelFootprint(scene, ctx);
+    if (settings_.radius == 0.0 && !(footprint > 0.0)) return;  // the camera sees nothing
+    const double causticR0 =
+        settings_.radius > 0.0 ? settings_.radius : kCausticFootprints * footprint;
+    const double indirectR0 =
+        settings_.radius > 0.0 ? settings_.radius : kIndirectFootprints * footprint;
+    // Step 2: each pass traces new photons for each map and sorts them into a grid sized for
+    // that pass's radius.
+    auto tracePasses = [&](PhotonPaths paths, double r0, PhotonPasses& map) {
+        map.radii = passRadii(r0, settings_.alpha, settings_.passes, settings_.classic);
+        for (int pass = 0; pass < settings_.passes; ++pass) {
+            if (ctx.memory)
+                ctx.memory->require(photonPassBytes(settings_.photons), where_,
+                                    "photon pass " + std::to_string(pass + 1) + " of " +
+                                        std::to_string(settings_.photons) + " photons");
+            PhotonTraceSettings trace;
+            trace.paths = paths;
+            trace.photons = settings_.photons;
+            trace.pass = pass;
+            trace.seed = ctx.seed;
+            std::vector<Photon> photons = tracePhotons(scene, scattering, trace, ctx.counters);
+            map.stored += photons.size();
+            map.grids.emplace_back(std::move(photons), map.radii[pass]);
+        }
+    };
+    if (settings_.caustics) tracePasses(PhotonPaths::Caustic, causticR0, caustics_);
+    if (settings_.indirect) tracePasses(PhotonPaths::Indirect, indirectR0, indirect_);
+    seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+// [photon-passes]
+
+std::string PhotonMapping::statistics() const {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "photons    %d passes of %llu: %llu caustic, %llu indirect stored; "
+                  "radius %.4g -> %.4g; %.3f s",
+                  settings_.passes, static_cast<unsigned long long>(settings_.photons),
+                  static_cast<unsigned long long>(caustics_.stored),
+                  static_cast<unsigned long long>(indirect_.stored),
+                  caustics_.radii.empty()
+                      ? (indirect_.radii.empty() ? 0.0 : indirect_.radii.front())
+                      : caustics_.radii.front(),
+                  caustics_.radii.empty() ? (indirect_.radii.empty() ? 0.0 : indirect_.radii.back())
+                                          : caustics_.radii.back(),
+                  seconds_);
+    return line;
+}
+
+namespace {
+
+// [install-photon-map]
+void installPhotonMap(Pipeline& pipeline, Scene& scene, const RenderContext& context) {
+    // Read (and check) the settings for every scene, so a bad value always fails the same way.
+    const PhotonSettings settings = photonSettings(context);
+    // A scene that asks for no photons pays nothing: no term, no pass.
+    if (!settings.on || (!settings.caustics && !settings.indirect)) return;
+    // The indirect map measures the light that A4's ambient term stands in for: drop it.
+    if (settings.indirect) scene.ambient = Colour(0.0);
+    auto mapping = std::make_shared<PhotonMapping>(settings, context.job.where);
+    pipeline.terms.push_back(mapping);
+    pipeline.prePasses.push_back(mapping);
+}
+// [install-photon-map]
+
+}  // namespace
+
+Feature photonMapFeature() {
+    return {"photon_map",
+            16,
+            "photon mapping: caustics and indirect light, progressive (radius shrinks by alpha)",
+            true,
+            bindPhotonMap,
+            installPhotonMap,
+            {{"photons", "N", "photons per pass for each map; switches photon mapping on",
+              "the scene's gr.photons, else 20000 (off without either)"},
+             {"photon-passes", "N", "photon passes, each with new photons and a smaller radius",
+              "the scene's, else 16"},
+             {"photon-radius", "R", "the first pass's gather radius, in scene units",
+              "the scene's, else 3 (caustics) or 12 (indirect) pixel footprints"},
+             {"photon-alpha", "A", "radius shrink per pass, in (0, 1)", "the scene's, else 2/3"}}};
+}
+
+}  // namespace rb
