@@ -55,6 +55,7 @@
 #include "texture/texture.h"
 #include "tone_map/tone_map.h"
 #include "quadrics/quadrics.h"
+#include "photon_map/photon_map.h"
 
 namespace rbtest {
 
@@ -134,7 +135,7 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::smoothMeshFeature(),  rb::textureFeature(),
                                           rb::bumpFeature(),        rb::toneMapFeature(),
                                           rb::dofFeature(),         rb::csgFeature(),
-                                          rb::quadricsFeature()};
+                                          rb::quadricsFeature(),    rb::photonMapFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);
