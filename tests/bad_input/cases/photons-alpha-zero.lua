@@ -1,0 +1,8 @@
+-- needs-feature: photon_map
+-- Alpha 0 shrinks the radius to nothing after one pass.
+-- expect: gr.photons: field 'alpha' must lie strictly between 0 and 1
+gr.photons{alpha = 0} --!
+local s = gr.sphere('s')
+s:set_material(gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 1))
+gr.render(s, 'out.png', 16, 16, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50,
+          {0.1, 0.1, 0.1}, {gr.light({0, 0, 5}, {1, 1, 1}, {1, 0, 0})})
