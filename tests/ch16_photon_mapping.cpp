@@ -73,7 +73,7 @@ double pointLightIrradiance(double h, double rho) {
 }  // namespace
 
 // [irradiance-probes]
-SCENARIO("photons from a point light measure E = I cos(theta) / d^2 on a plane", "[ch16]") {
+SCENARIO("photons from a point light measure E = I cos(theta) / d^2 on a plane", "[ch16][ex16.2]") {
     GIVEN("a point light of intensity 1 one unit above a plane, and 2^21 stratified photons") {
         const auto world = rbtest::worldFromLua(kLitPlane, rbtest::chapters(16));
         const double r = 0.1;
@@ -97,7 +97,7 @@ SCENARIO("photons from a point light measure E = I cos(theta) / d^2 on a plane",
 // [irradiance-probes]
 
 // [kernel-bias]
-SCENARIO("a disk of radius r blurs the irradiance by (r^2/8) times its Laplacian", "[ch16]") {
+SCENARIO("a disk of radius r blurs the irradiance by (r^2/8) times its Laplacian", "[ch16][ex16.2]") {
     GIVEN("the same light and plane, and a gather of radius 0.3 under the light") {
         const auto world = rbtest::worldFromLua(kLitPlane, rbtest::chapters(16));
         const double r = 0.3;
@@ -120,7 +120,7 @@ SCENARIO("a disk of radius r blurs the irradiance by (r^2/8) times its Laplacian
 // [kernel-bias]
 
 // [radius-schedule]
-SCENARIO("the progressive radius shrinks as a product of Gamma functions", "[ch16]") {
+SCENARIO("the progressive radius shrinks as a product of Gamma functions", "[ch16][ex16.1]") {
     GIVEN("a first radius of 1 and alpha = 2/3") {
         const double alpha = 2.0 / 3.0;
         const std::vector<double> radii = rb::passRadii(1.0, alpha, 64, false);
@@ -205,7 +205,7 @@ SCENARIO("a photon record packs its power and direction in 20 bytes", "[ch16]") 
     }
 }
 
-SCENARIO("photon mapping gives the same bits on one thread and on two", "[ch16]") {
+SCENARIO("photon mapping gives the same bits on one thread and on two", "[ch16][ex16.2]") {
     GIVEN("the chapter's scene at 48 x 48") {
         const std::string lua = sourceFile("scenes/chapter16-photon-mapping.lua");
         const auto world = rbtest::worldFromLua(lua, rbtest::chapters(16));
