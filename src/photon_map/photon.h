@@ -23,9 +23,11 @@ struct Photon {
 static_assert(sizeof(Photon) == 20, "a photon record is 20 bytes");
 // [photon-record]
 
-/// Pack a non-negative colour as RGBE, rounding each mantissa to nearest (plain truncation
-/// would bias every photon down by half a step).
-inline void packRgbe(const Colour& c, std::uint8_t out[4]) {
+/// Pack a non-negative colour as RGBE. Each mantissa is rounded down after adding `dither` in
+/// [0, 1): a uniform random dither makes the stored flux exact on average (plain truncation
+/// would bias every photon down by half a step, and rounding to nearest would bias a whole map
+/// of photons of one flux, all rounded the same way, by up to 1/256); 0.5 rounds to nearest.
+inline void packRgbe(const Colour& c, std::uint8_t out[4], double dither = 0.5) {
     const double v = std::max(c.r, std::max(c.g, c.b));
     if (!(v > 1e-32)) {
         out[0] = out[1] = out[2] = out[3] = 0;
@@ -33,9 +35,11 @@ inline void packRgbe(const Colour& c, std::uint8_t out[4]) {
     }
     int e = 0;
     std::frexp(v, &e);  // v = m·2^e with m in [0.5, 1)
+    // The largest channel may round up to 256: then use the next exponent.
+    if (std::floor(v * std::ldexp(1.0, 8 - e) + dither) > 255.0) ++e;
     const double scale = std::ldexp(1.0, 8 - e);
     auto byte = [&](double x) {
-        return static_cast<std::uint8_t>(std::min(255.0, std::floor(x * scale + 0.5)));
+        return static_cast<std::uint8_t>(std::min(255.0, std::floor(x * scale + dither)));
     };
     out[0] = byte(c.r);
     out[1] = byte(c.g);

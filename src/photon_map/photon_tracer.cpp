@@ -239,7 +239,7 @@ void tracePhoton(const Scene& scene, const PhotonScattering& s, PhotonPaths path
             keeps(paths, specular, diffuse)) {
             Photon p;
             for (int a = 0; a < 3; ++a) p.position[a] = static_cast<float>(hit.p[a]);
-            packRgbe(flux, p.power);
+            packRgbe(flux, p.power, sampler.next1D());
             packDirection(d, p.theta, p.phi);
             p.reserved = 0;
             out.push_back(p);
