@@ -95,6 +95,12 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the scene's lens (gr.lens or dof_aperture) is " +
                            "ignored: it needs chapter 13 (dof), and " +
                            whyAbsent(features, "dof", 13));
+    // Chapter 16's photons, when the chapter is built but switched off.
+    const auto photons = job.options.find("photons");
+    if (photons != job.options.end() && photons->second != 0.0 && !features.enabled("photon_map"))
+        warnings.push_back(job.where + ": the scene's photons (gr.photons) are ignored: they " +
+                           "need chapter 16 (photon_map), and " +
+                           whyAbsent(features, "photon_map", 16));
     // Compound nodes (chapter 14's CSG) whose feature is off are drawn as plain groups.
     if (job.root) {
         std::vector<const SceneNode*> stack = {job.root.get()};

@@ -7,7 +7,7 @@
 //       radius:   the first pass's gather radius (default: from the pixel footprint)
 //       alpha:    the radius shrinks as r²_{i+1} = r²_i (i + α)/(i + 1); in (0, 1)
 //       method:   'progressive' (default) or 'classic' (Jensen's: one radius for every pass)
-//       k:        with 'classic', gather the k nearest photons within the radius (0: all)
+//       k:        gather only the k nearest photons within each pass's radius (0: all of them)
 //       caustics: keep a caustic map (light focused by mirrors and glass)
 //       indirect: keep an indirect map (colour bleeding); it replaces the ambient term
 //   gr.photons{} switches photon mapping on with every default.

@@ -65,6 +65,7 @@ int PhotonGrid::bucketsAround(const Vec3& x, std::uint32_t out[8]) const {
     return n;
 }
 
+// [gather-tests]
 template <class F>
 void PhotonGrid::forEachNear(const Vec3& x, const Vec3& n, double radius, F&& f) const {
     if (photons_.empty()) return;
@@ -83,6 +84,7 @@ void PhotonGrid::forEachNear(const Vec3& x, const Vec3& n, double radius, F&& f)
             f(photon, d2);
         }
 }
+// [gather-tests]
 
 // [gather]
 Colour PhotonGrid::gatherFlux(const Vec3& x, const Vec3& n, double radius) const {

@@ -169,8 +169,8 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
         for (int pass = 0; pass < settings_.passes; ++pass) {
             if (ctx.memory)
                 ctx.memory->require(photonPassBytes(settings_.photons), where_,
-                                    "photon pass " + std::to_string(pass + 1) + " of " +
-                                        std::to_string(settings_.photons) + " photons");
+                                    "photon pass " + std::to_string(pass + 1) + " (" +
+                                        std::to_string(settings_.photons) + " photons)");
             PhotonTraceSettings trace;
             trace.paths = paths;
             trace.photons = settings_.photons;
@@ -188,20 +188,18 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
 // [photon-passes]
 
 std::string PhotonMapping::statistics() const {
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "photons    %d passes of %llu: %llu caustic, %llu indirect stored; "
-                  "radius %.4g -> %.4g; %.3f s",
-                  settings_.passes, static_cast<unsigned long long>(settings_.photons),
-                  static_cast<unsigned long long>(caustics_.stored),
-                  static_cast<unsigned long long>(indirect_.stored),
-                  caustics_.radii.empty()
-                      ? (indirect_.radii.empty() ? 0.0 : indirect_.radii.front())
-                      : caustics_.radii.front(),
-                  caustics_.radii.empty() ? (indirect_.radii.empty() ? 0.0 : indirect_.radii.back())
-                                          : caustics_.radii.back(),
-                  seconds_);
-    return line;
+    // One map's part of the line: its photons and its first and last radius.
+    auto map = [](const char* name, const PhotonPasses& m) {
+        if (m.radii.empty()) return std::string();
+        char text[128];
+        std::snprintf(text, sizeof text, "; %s %llu stored, radius %.4g -> %.4g", name,
+                      static_cast<unsigned long long>(m.stored), m.radii.front(), m.radii.back());
+        return std::string(text);
+    };
+    char head[96];
+    std::snprintf(head, sizeof head, "photons    %d passes of %llu in %.3f s", settings_.passes,
+                  static_cast<unsigned long long>(settings_.photons), seconds_);
+    return head + map("caustic", caustics_) + map("indirect", indirect_);
 }
 
 namespace {

@@ -26,7 +26,7 @@ struct PhotonSettings {
     double radius = 0.0;       ///< The first pass's gather radius; 0: from the pixel footprint.
     double alpha = 2.0 / 3.0;  ///< The radius shrinks as r²_{i+1} = r²_i (i + α)/(i + 1).
     bool classic = false;      ///< Jensen's classic method: one radius for every pass.
-    int nearest = 0;           ///< k > 0: the k nearest photons (classic), within the radius.
+    int nearest = 0;           ///< k > 0: only the k nearest photons within each radius.
     bool caustics = true;      ///< Keep a caustic map (L S+ D).
     bool indirect = false;     ///< Keep an indirect map (L (S|D)* D D); drops the ambient term.
 };

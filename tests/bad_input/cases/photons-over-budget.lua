@@ -2,7 +2,7 @@
 -- rt-args: --max-memory 64M
 -- A hundred billion photons a pass cannot fit in 64 MiB: refused before any is traced,
 -- naming the gr.render call whose photon pass it is.
--- expect: photon pass 1 of 100000000000 photons
+-- expect: photon pass 1 (100000000000 photons)
 gr.photons{count = 1e11}
 local s = gr.sphere('s')
 s:set_material(gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 1))
