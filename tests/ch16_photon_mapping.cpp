@@ -268,12 +268,9 @@ std::vector<rb::Photon> causticPhotons(const std::string& lua, std::uint64_t cou
                             counters);
 }
 
-/// A glass ball of radius 1 and index 1.5 at the origin, lit along +x by a light 10⁴ away
-/// through a black plate with a square hole of half-width 0.1 (only paraxial rays pass), and a
-/// white screen whose front face is the plane x = `screen`.
-std::string glassBallScene(double screen) {
-    return R"(
-local black = gr.material({0, 0, 0}, {0, 0, 0}, 1)
+/// The start of a test scene: a root node, and box(name, material, x0, y0, z0, x1, y1, z1)
+/// that adds an axis-aligned box from corner to corner.
+const char* kBoxes = R"(
 local root = gr.node('root')
 local function box(name, m, x0, y0, z0, x1, y1, z1)
   local b = gr.cube(name)
@@ -282,7 +279,16 @@ local function box(name, m, x0, y0, z0, x1, y1, z1)
   b:set_material(m)
   root:add_child(b)
 end
-box('top', black, -2.2, 0.1, -3, -2, 3, 3)
+)";
+
+/// A glass ball of radius 1 and index 1.5 at the origin, lit along +x by a light 10⁴ away
+/// through a black plate with a square hole of half-width 0.1 (only paraxial rays pass), and a
+/// white screen whose front face is the plane x = `screen`.
+std::string glassBallScene(double screen) {
+    return R"(
+local black = gr.material({0, 0, 0}, {0, 0, 0}, 1)
+)" + std::string(kBoxes) +
+           R"(box('top', black, -2.2, 0.1, -3, -2, 3, 3)
 box('bottom', black, -2.2, -3, -3, -2, -0.1, 3)
 box('near', black, -2.2, -0.1, -3, -2, 0.1, -0.1)
 box('far', black, -2.2, -0.1, 0.1, -2, 0.1, 3)
@@ -334,15 +340,7 @@ SCENARIO("light inside a mirror ring draws a nephroid with its cusp at R / 2", "
     GIVEN(
         "an open mirror tube of radius 1 on a white floor, lit from far away at 20 degrees "
         "through a slit that lets in rays within 0.1 of the diameter") {
-        const char* ring = R"(
-local root = gr.node('root')
-local function box(name, m, x0, y0, z0, x1, y1, z1)
-  local b = gr.cube(name)
-  b:scale(x1 - x0, y1 - y0, z1 - z0)
-  b:translate(x0, y0, z0)
-  b:set_material(m)
-  root:add_child(b)
-end
+        const std::string ring = std::string(kBoxes) + R"(
 local black = gr.material({0, 0, 0}, {0, 0, 0}, 1)
 box('floor', gr.material({0.8, 0.8, 0.8}, {0, 0, 0}, 1), -5, -1, -5, 5, 0, 5)
 box('slit left', black, -1.6, 0, -3, -1.5, 3, -0.1)
