@@ -275,6 +275,24 @@ if "$rt" --list-features 2>/dev/null | awk '$2 == "csg" { found = 1 } END { exit
   bash "$root/tests/perf/ch14/csg_vs_povray.sh" "$build" | tee -a "$report"
 fi
 
+# ---- Photon mapping against POV-Ray's photons, and the photon speed (chapter 16) -------------
+# The chapter scene's caustics against tests/perf/povray/chapter16-caustics.pov at equal error
+# (it needs the ch08 RMSE tool), then photons per second, the photon passes' 2-thread speedup,
+# and the grid's build and gather times (ch16_photon_speed). Each output is also kept in
+# BUILD_DIR/bench/ch16-povray.txt and ch16-speed.txt: the summary below reads their "target NAME
+# VALUE" lines.
+rm -f "$out/ch16-povray.txt" "$out/ch16-speed.txt"  # no stale figures in the summary
+if [ -x "$build/rt_ch16" ]; then
+  if [ -x "$build/tests/perf/ch08/ch08_aa_charts" ]; then
+    progress "caustics against POV-Ray's photons"
+    say ""
+    bash "$root/tests/perf/ch16/caustics_vs_povray.sh" "$build" "$out/ch16" | tee "$out/ch16-povray.txt" | tee -a "$report"
+  fi
+  progress "photon speed"
+  say ""
+  PHOTON_RUNS=$runs bash "$root/tests/perf/ch16/photon_speed.sh" "$build" | tee "$out/ch16-speed.txt" | tee -a "$report"
+fi
+
 # ---- raybook's BVH against Embree ----------------------------------------------------------
 # Each run's output is also kept in BUILD_DIR/bench/bvh_vs_embree.Nt.txt: the summary below reads
 # its "target NAME VALUE" lines (1 thread, as the issue measures).
@@ -374,5 +392,25 @@ target_row "time per ray, 3.7k -> 235k triangles (x)" "$scale" "<=" 1.6 "($scale
 target_row "mesh scene vs POV-Ray trace time (x)" "$mesh_ratio" "<=" 0.20 "($mesh_scene)"
 target_row "Whitted scenes vs POV-Ray, worst (x)" "$whitted_worst" "<=" 0.35 "(${whitted_detail%, })"
 target_row "2-thread speedup, worst scene over 40 ms (x)" "$speedup_worst" ">=" 1.9 "(${speedup_detail%, })"
+
+# Issue 20's (chapter 16's) targets, from the chapter 16 block above; n/a when rt_ch16 or
+# ch16_photon_speed was not built. The caustics' ratio at equal error and the photons per second
+# have no target: they are printed for the record.
+ch16speed=$out/ch16-speed.txt
+ch16povray=$out/ch16-povray.txt
+say ""
+say "Issue 20 (chapter 16) targets, this run:"
+say "$(printf "  %-46s %8s %9s  %-6s %s" measure value target "" "")"
+target_row "photon grid build, ms per million photons" "$(target_line grid_build_ms_per_million "$ch16speed")" "<=" 50 "(ch16_photon_speed, 1 thread)"
+target_row "50-photon gather (us)" "$(target_line gather_50_us "$ch16speed")" "<=" 2 "(ch16_photon_speed, 1 thread)"
+target_row "photon passes, 2-thread speedup (x)" "$(target_line photon_speedup "$ch16speed")" ">=" 1.9 "(rt_ch16 --stats, chapter scene)"
+record_row() {  # measure, value (empty: n/a), detail: a row with no target
+  say "$(printf "  %-46s %8s %9s  %-6s %s" "$1" "${2:-n/a}" "-" "" "$3")"
+}
+record_row "photons traced per second, 2 threads" "$(target_line photons_per_second "$ch16speed")" "(no target)"
+record_row "caustics vs POV-Ray photons, equal error (x)" "$(target_line caustics_povray "$ch16povray")" \
+           "(no target; raybook / POV-Ray time, raybook k = 50 nearest)"
+record_row "  the same, raybook's progressive defaults (x)" "$(target_line caustics_povray_progressive "$ch16povray")" \
+           "(no target; n/a where no error level is shared)"
 echo
 echo "bench: table saved to $report"
