@@ -89,12 +89,18 @@ rows = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("
 rb = [(float(r[3]), float(r[2]), r[1]) for r in rows if r[0] == "raybook" and r[1] != "none"]
 pv = [(float(r[3]), float(r[2]), r[1]) for r in rows if r[0] == "povray" and r[1] != "none"]
 none = {r[0]: (float(r[3]), float(r[2])) for r in rows if r[1] == "none"}
+# Markdown: the chapter page includes this output (docs/charts/ch08-povray.txt), so it is two
+# tables and a bullet, not aligned columns (Doxygen would run those into one paragraph).
 print(f"Adaptive antialiasing, mirror_glass (grey plane) at {sys.argv[2]}, {sys.argv[3]} thread(s); "
-      "each renderer's RMSE against its own converged reference; fastest of 3 runs")
-print(f"  {'threshold':>9} {'raybook s':>10} {'raybook RMSE':>13} {'POV-Ray s':>10} {'POV RMSE':>9}")
+      "each renderer's RMSE against its own converged reference; fastest of 3 runs.")
+print()
+print("| threshold | raybook s | raybook RMSE | POV-Ray s | POV-Ray RMSE |")
+print("|---:|---:|---:|---:|---:|")
 for (e1, t1, th), (e2, t2, _) in zip(rb, pv):
-    print(f"  {th:>9} {t1:10.3f} {e1:13.5f} {t2:10.3f} {e2:9.5f}")
-print(f"  {'none':>9} {none['raybook'][1]:10.3f} {none['raybook'][0]:13.5f} {none['povray'][1]:10.3f} {none['povray'][0]:9.5f}")
+    print(f"| {th} | {t1:.3f} | {e1:.5f} | {t2:.3f} | {e2:.5f} |")
+print(f"| none (one ray per pixel) | {none['raybook'][1]:.3f} | {none['raybook'][0]:.5f} | "
+      f"{none['povray'][1]:.3f} | {none['povray'][0]:.5f} |")
+print()
 def time_at(points, e):
     pts = sorted(points)  # by error
     for (ea, ta, _), (eb, tb, _) in zip(pts, pts[1:]):
@@ -107,12 +113,17 @@ for e, t, th in pv:
     tr = time_at(rb, e)
     if tr is not None:
         ratios.append((th, e, tr, t, tr / t))
-print("Equal error: raybook's time interpolated at POV-Ray's RMSE (ratio = raybook / POV-Ray):")
-for th, e, tr, t, r in ratios:
-    print(f"  POV-Ray +A{th} +AM2 +R3: RMSE {e:.5f}, POV-Ray {t:.3f} s, raybook {tr:.3f} s, ratio {r:.2f}")
+print("Equal error: raybook's time interpolated (log-log) at each POV-Ray point's RMSE "
+      "(ratio = raybook / POV-Ray; below 1: raybook is faster).")
+print()
 if ratios:
+    print("| POV-Ray setting | RMSE | POV-Ray s | raybook s | ratio |")
+    print("|---|---:|---:|---:|---:|")
+    for th, e, tr, t, r in ratios:
+        print(f"| `+A{th} +AM2 +R3` | {e:.5f} | {t:.3f} | {tr:.3f} | {r:.2f} |")
+    print()
     rs = sorted(r for *_, r in ratios)
-    print(f"  median ratio {rs[len(rs) // 2]:.2f} over {len(rs)} points (below 1: raybook is faster)")
+    print(f"- **median ratio {rs[len(rs) // 2]:.2f}** over {len(rs)} points (below 1: raybook is faster)")
 else:
-    print("  the two error ranges do not overlap: no ratio at equal error")
+    print("- the two error ranges do not overlap: no ratio at equal error")
 PY

@@ -103,13 +103,18 @@ import math, sys
 rows = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
 rb = [(float(r[3]), float(r[2]), r[1]) for r in rows if r[0] == "raybook"]
 pv = [(float(r[3]), float(r[2]), r[1]) for r in rows if r[0] == "povray"]
+# Markdown: the chapter page includes this output (docs/charts/ch13-povray.txt), so it is two
+# tables and bullets, not aligned columns (Doxygen would run those into one paragraph).
 print(f"Depth of field, the peers' dof scene (black background) at {sys.argv[2]}, {sys.argv[3]} thread(s); "
-      "each renderer's RMSE against its own converged reference; fastest of 5 rounds")
-print(f"  {'raybook N':>10} {'s':>8} {'RMSE':>9}      {'POV-Ray N':>11} {'s':>8} {'RMSE':>9}")
+      "each renderer's RMSE against its own converged reference; fastest of 5 rounds.")
+print()
+print("| raybook N | s | RMSE | POV-Ray N | s | RMSE |")
+print("|---:|---:|---:|---:|---:|---:|")
 for i in range(max(len(rb), len(pv))):
-    a = f"  {rb[i][2]:>10} {rb[i][1]:8.3f} {rb[i][0]:9.5f}" if i < len(rb) else " " * 31
-    b = f"      {pv[i][2]:>11} {pv[i][1]:8.3f} {pv[i][0]:9.5f}" if i < len(pv) else ""
+    a = f"| {rb[i][2]} | {rb[i][1]:.3f} | {rb[i][0]:.5f} " if i < len(rb) else "| | | "
+    b = f"| {pv[i][2]} | {pv[i][1]:.3f} | {pv[i][0]:.5f} |" if i < len(pv) else "| | | |"
     print(a + b)
+print()
 def time_at(points, e):
     pts = sorted(points)  # by error
     for (ea, ta, _), (eb, tb, _) in zip(pts, pts[1:]):
@@ -117,20 +122,25 @@ def time_at(points, e):
             f = (math.log(e) - math.log(ea)) / (math.log(eb) - math.log(ea))
             return math.exp(math.log(ta) + f * (math.log(tb) - math.log(ta)))
     return None
-print("Equal error: raybook's time interpolated (log-log) at POV-Ray's RMSE (ratio = raybook / POV-Ray):")
+print("Equal error: raybook's time interpolated (log-log) at each POV-Ray point's RMSE "
+      "(ratio = raybook / POV-Ray; below 1: raybook is faster).")
+print()
+print("| POV-Ray N | RMSE | POV-Ray s | raybook s | ratio |")
+print("|---:|---:|---:|---:|---:|")
 ratios = []
 for e, t, n in pv:
     tr = time_at(rb, e)
     if tr is None:
-        print(f"  POV-Ray {n}: RMSE {e:.5f} outside raybook's range")
+        print(f"| {n} | {e:.5f} | {t:.3f} | outside raybook's range | - |")
         continue
     ratios.append((n, tr / t))
-    print(f"  POV-Ray {n}: RMSE {e:.5f}, POV-Ray {t:.3f} s, raybook {tr:.3f} s, ratio {tr / t:.2f}")
+    print(f"| {n} | {e:.5f} | {t:.3f} | {tr:.3f} | {tr / t:.2f} |")
+print()
 named = {n: r for n, r in ratios}
 for n in ("64", "adaptive64"):
     if n in named:
-        print(f"  {'dof64.pov' if n == '64' else 'dof.pov'}: ratio {named[n]:.2f}")
+        print(f"- {'dof64.pov' if n == '64' else 'dof.pov'}: ratio {named[n]:.2f}")
 if ratios:
     rs = sorted(r for _, r in ratios)
-    print(f"  median ratio {rs[len(rs) // 2]:.2f} over {len(rs)} points (below 1: raybook is faster)")
+    print(f"- **median ratio {rs[len(rs) // 2]:.2f}** over {len(rs)} points (below 1: raybook is faster)")
 PY
