@@ -2,6 +2,8 @@
 -- above, whose top cap and bottom cap refract the checks below it (seed 001 saw its caps black);
 -- an open copper tube, whose inside shows through the missing caps; a red cone on its base;
 -- a blue frustum (a cone cut off at top radius 0.45), capped; and a green lampshade (an open frustum).
+-- Pale blue walls and a ceiling stand around it all, so that what the glass reflects and bends
+-- upwards is light, and the cylinder's outline reads (against the black background it did not).
 -- Every shape is the unit cylinder or cone (height 2 along y, radius 1) under transforms,
 -- written in raybook's own calls: seed 001's gr.cyllinder and gr.cone('name') would mark the
 -- scene as pre-2015, whose transforms apply in the reverse order.
@@ -66,6 +68,25 @@ shade:scale(0.42, 0.28, 0.42)
 shade:translate(-1.2, 0.29, 0.5)
 shade:set_material(green)
 scene:add_child(shade)
+
+-- The sky: a wall beyond the floor (reaching below it, since the eye looks down past the floor's
+-- far edge), a ceiling above the lights and a wall behind the camera, all one pale blue.
+local sky = gr.material{kd = {0.55, 0.68, 0.85}, ks = {0, 0, 0}, shininess = 1}
+local far = gr.cube('far wall')
+far:scale(40, 34, 1)
+far:translate(-20, -5, -6)
+far:set_material(sky)
+scene:add_child(far)
+local ceiling = gr.cube('ceiling')
+ceiling:scale(40, 1, 40)
+ceiling:translate(-20, 9, -20)
+ceiling:set_material(sky)
+scene:add_child(ceiling)
+local near = gr.cube('near wall')
+near:scale(40, 30, 1)
+near:translate(-20, -1, 8)
+near:set_material(sky)
+scene:add_child(near)
 
 local key  = gr.light({-3, 6, 4}, {0.8, 0.8, 0.75}, {1, 0, 0})
 local fill = gr.light({4, 3, 5}, {0.3, 0.3, 0.35}, {1, 0, 0})
