@@ -98,15 +98,20 @@ def thin_lens():
         body.append(line(*P(0, lens_y), *P(far, lens_y + t * dy), RAY, 1.4))
         body.append(dot(*P(0, lens_y), RAY, 3))
     body.append(dot(*P(*focus), FOCUS, 5))
-    body.append(text(*P(f + 0.15, f * d + 0.3), "all meet here", "start", 13, FOCUS))
+    # Left of the focus, above the converging rays (right of it, the rays fan out through the text).
+    body.append(text(*P(f - 0.15, f * d + 0.3), "all meet here", "end", 13, FOCUS))
     # The blur circle at the near and far depths: A * |1 - z / f| in the world.
     for z in (near, far):
         c = A * abs(1 - z / f)
         centre = z * d
         x = P(z, 0)[0] + 10
         body.append(line(x, P(z, centre - c / 2)[1], x, P(z, centre + c / 2)[1], FOCUS, 3))
-        body.append(text(x + 8, P(z, centre - c / 2)[1] + 16,
-                         f"blur {c:.2f} = A|1 - z/f|", "start", 12, FOCUS))
+        # The label goes where no ray or axis passes: just under the axis for the near bar (the
+        # rays fill the space above and beside it, and its foot is just above the axis), below
+        # the far bar (the rays fill the space above it).
+        ly = P(z, 0)[1] + 20 if z < f else P(z, centre - c / 2)[1] + 16
+        body.append(text(x + 8, ly, f"blur {c:.2f} = A|1 - z/f|", "start", 12, FOCUS)
+                    .replace("<text ", '<text paint-order="stroke" stroke="white" stroke-width="4" ', 1))
     body.append(dot(*P(1.0, d), "#222", 3))
     body.append(text(*P(1.05, d + 0.25), "d", "start", 13))
     return svg(880, 360, body, "The thin lens: rays through one image position meet on the "
