@@ -51,22 +51,39 @@ def curves_figure(name):
         f.text((x0 - 8, y + 4), f"{v:g}", anchor="end", size=12)
     f.text(((x0 + x1) / 2, y0 + 40), "scaled luminance ~L~ = ~a~ L_w / L̄_w (log scale)")
     f.text((22, (y0 + y1) / 2 - 40), "~L_d~", anchor="middle")
-    # The curves, sampled densely in log L.
+    # What the display cannot show: above 1 every channel is clamped to 1 (the page's
+    # "the channels are clamped to [0, 1]"), so the band above the line L_d = 1 is shaded.
+    band_top, one = page(1.0, top)[1], page(1.0, 1.0)[1]
+    f.rect(x0, band_top, x1, one, "none", "#eceff3", 0)
+    f.text((x0 + 8, band_top + 15), "above 1: clamped to 1", anchor="start", size=12, fill=DARK)
+    # The curves, sampled densely in log L, as the display shows them: each one clamped to 1.
+    # The L_white curves are also drawn dashed where the formula alone rises above 1.
     samples = [10.0 ** (lo + (hi - lo) * k / 400) for k in range(401)]
+    for white, colour in ((2.0, GREEN), (10.0, ORANGE)):
+        pts = [page(L, reinhard(L, white)) for L in samples
+               if L >= white and reinhard(L, white) <= top]
+        f.polyline(pts, colour, 1.4, dash="5 4")
+    # The clamped parts at L_d = 1 lie on one line: clip's (red, from L = 1) is drawn widest,
+    # then L_white = 2's (green, from 2) and L_white = 10's (orange, from 10) narrower on top of
+    # it, so each stays visible from where it joins; the curves themselves are all 2.2 wide.
+    for white, colour, width in ((0.0, RED, 7.0), (2.0, GREEN, 4.4), (10.0, ORANGE, 2.2)):
+        f.line(page(max(white, 1.0), 1.0), page(10.0**hi, 1.0), colour, width)
     f.polyline([page(L, min(L, 1.0)) for L in samples], RED, 2.2)
     f.polyline([page(L, reinhard(L, None)) for L in samples], BLUE, 2.2)
     for white, colour in ((2.0, GREEN), (10.0, ORANGE)):
-        pts = [page(L, reinhard(L, white)) for L in samples if reinhard(L, white) <= top]
-        f.polyline(pts, colour, 2.2)
+        f.polyline([page(L, reinhard(L, white)) for L in samples if L <= white], colour, 2.2)
         f.dot(page(white, 1.0), colour, 4.5)
-    # Legend.
-    entries = [(RED, "clip: min(~L~, 1)"), (BLUE, "~L~ / (1 + ~L~)"),
-               (GREEN, "~L~_{white} = 2: reaches 1 at ~L~ = 2"),
-               (ORANGE, "~L~_{white} = 10: reaches 1 at ~L~ = 10")]
-    for k, (colour, label) in enumerate(entries):
-        y = y1 + 22 + 20 * k
-        f.line((x0 + 12, y - 4), (x0 + 40, y - 4), colour, 2.2)
-        f.text((x0 + 48, y), label, anchor="start", size=13)
+    # Legend, bottom right, where no curve passes (every curve is above 0.5 for L > 1).
+    entries = [(RED, 2.2, None, "clip: min(~L~, 1)"), (BLUE, 2.2, None, "~L~ / (1 + ~L~)"),
+               (GREEN, 2.2, None, "~L~_{white} = 2 (dot: reaches 1)"),
+               (ORANGE, 2.2, None, "~L~_{white} = 10 (dot: reaches 1)"),
+               (DARK, 1.4, "5 4", "before the clamp")]
+    lx, ly = page(1.5, 0)[0], y0 - 14 - 19 * (len(entries) - 1)
+    f.rect(lx - 8, ly - 17, x1 - 6, y0 - 5, GRID, "white", 0.8)
+    for k, (colour, width, dash, label) in enumerate(entries):
+        y = ly + 19 * k
+        f.line((lx, y - 4), (lx + 28, y - 4), colour, width, dash=dash)
+        f.text((lx + 36, y), label, anchor="start", size=13)
     return f.write(name)
 
 
