@@ -78,7 +78,11 @@ JITTER_SEED = 877937
 
 def grid_figure(name, jitter):
     n = 4
-    body = [square(PAD, PAD, S, "#333", 2)]
+    # Alternate cells tinted, so that each point is seen in its own cell.
+    body = [f'<rect x="{PAD + i * S / n:.2f}" y="{PAD + j * S / n:.2f}" width="{S / n:.2f}" '
+            f'height="{S / n:.2f}" fill="#eef1f6"/>'
+            for j in range(n) for i in range(n) if (i + j) % 2]
+    body.append(square(PAD, PAD, S, "#333", 2))
     for k in range(1, n):
         body.append(f'<line x1="{PAD + k * S / n}" y1="{PAD}" x2="{PAD + k * S / n}" y2="{PAD + S}" '
                     f'stroke="{GRID}" stroke-dasharray="4 3"/>')
