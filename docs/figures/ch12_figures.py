@@ -6,7 +6,9 @@ chapters/12-tone-mapping.md.
 
 ch12-curves.svg   display luminance L_d against scaled luminance L (log axis): clipping
                   (min(L, 1)), Reinhard's L / (1 + L), and L (1 + L / L_white^2) / (1 + L) for
-                  L_white = 2 and 10, each reaching 1 exactly at its L_white.
+                  L_white = 2 and 10, each reaching 1 exactly at its L_white; each drawn as the
+                  display shows it, clamped to 1 (the shaded band above 1), with the L_white
+                  formulas' unclamped continuation dashed.
 ch12-scales.svg   the local operator's scale selection on one row of an image with an edge:
                   scaled luminance 0.05 left of the edge and 20 right of it, a pixel 6 pixels left
                   of the edge, and for each scale s_i = 1.6^i the centre blur V1 and surround V2
