@@ -551,7 +551,8 @@ SCENARIO("the sampler's numbers are uniform on the unit interval and the unit sq
 // ---- The render loop --------------------------------------------------------------------------
 
 // [ch01-determinism]
-SCENARIO("the image is bit-identical for 1 and 2 threads and for every run", "[ch01][ex1.3]") {
+SCENARIO("the image is bit-identical for 1 and 2 threads and for every run",
+         "[ch01][ex1.1][ex1.2][ex1.3]") {
     GIVEN("a scene of three spheres on a floor, two lights, 64 × 48 pixels, 4 jittered samples") {
         const CodeScene code;
         WHEN("it is rendered with 1 thread, with 2 threads, and with 2 threads again") {

@@ -156,7 +156,7 @@ SCENARIO("a seed-001 scene's translate-then-scale walls stand where its author p
     }
 }
 
-SCENARIO("Lua 5.1's unpack and string.gfind mark a scene as pre-2015", "[ch02][era][ex2.3]") {
+SCENARIO("Lua 5.1's unpack and string.gfind mark a scene as pre-2015", "[ch02][era][ex2.2]") {
     GIVEN("a scene that places its wall with unpack, and no other sign") {
         const std::string lua = "root = gr.node('root')\nlocal p = {-5, 0, -6}\n" +
                                 std::string(
@@ -183,7 +183,7 @@ SCENARIO("Lua 5.1's unpack and string.gfind mark a scene as pre-2015", "[ch02][e
     }
 }
 
-SCENARIO("the loader notes where the order of transforms first matters", "[ch02][era][ex2.3]") {
+SCENARIO("the loader notes where the order of transforms first matters", "[ch02][era][ex2.2]") {
     GIVEN("one node moved twice, another rotated about one axis twice: calls that commute") {
         const Loaded l = load(
             "root = gr.node('root')\nlocal s = gr.sphere('s')\n"
@@ -207,7 +207,7 @@ SCENARIO("the loader notes where the order of transforms first matters", "[ch02]
 }
 
 SCENARIO("extra trailing arguments are what the course framework ignores: a warning",
-         "[ch02][tolerance][ex2.3][needs-ch04]") {
+         "[ch02][tolerance][ex2.2][needs-ch04]") {
     GIVEN("gr.sphere with two extra arguments, twice") {
         const Loaded l = load(
             "root = gr.node('root')\nroot:add_child(gr.sphere('s', 1, 2))\n"
@@ -242,7 +242,7 @@ SCENARIO("extra trailing arguments are what the course framework ignores: a warn
 }
 
 SCENARIO("--lenient renders what raybook understands and lists what it ignored",
-         "[ch02][lenient][ex2.3]") {
+         "[ch02][lenient][ex2.2]") {
     const std::string lua =
         "root = gr.node('root')\n"
         "local m = gr.shiny_material({1,0,0}, 3)\n"
@@ -284,7 +284,7 @@ SCENARIO("--lenient renders what raybook understands and lists what it ignored",
 }
 
 SCENARIO("a dialect file maps a student's own calls onto raybook's before the scene runs",
-         "[ch02][dialect][ex2.3][needs-ch04]") {
+         "[ch02][dialect][ex2.2][needs-ch04]") {
     GIVEN(
         "a dialect defining gr.mirror(kd, r) and a node method :lift(h), and a scene using both") {
         const std::string dialect =

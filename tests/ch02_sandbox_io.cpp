@@ -113,7 +113,7 @@ std::string oneLine(const std::string& body) {
 
 // [ch02-sandbox-readobj]
 SCENARIO("a readobj-style helper reads an OBJ beside the scene with io.open and file:lines",
-         "[ch02][ex2.3]") {
+         "[ch02][ex2.2]") {
     GIVEN("square.obj (a quad and a triangle) beside a scene that reads it with read_obj") {
         SceneFolder folder;
         folder.write("square.obj", kSquareAndTriangle);

@@ -71,7 +71,7 @@ __attribute__((noinline)) void scribbleStack() {
 // ---- The scene graph --------------------------------------------------------------------------
 
 // [ch02-transform-order]
-SCENARIO("transforms apply in the order they are written", "[ch02][ex2.3]") {
+SCENARIO("transforms apply in the order they are written", "[ch02][ex2.2]") {
     GIVEN("a unit sphere that is scaled by 2 and then translated by (1, 0, 0)") {
         const auto world = rbtest::worldFromLua(
             "local root = gr.node('root')\n"
@@ -139,7 +139,7 @@ SCENARIO("transforms apply in the order they are written", "[ch02][ex2.3]") {
 }
 // [ch02-transform-order]
 
-SCENARIO("legacy scenes post-multiply, so they list their transforms in reverse", "[ch02][ex2.3]") {
+SCENARIO("legacy scenes post-multiply, so they list their transforms in reverse", "[ch02][ex2.2]") {
     GIVEN("the calls scale(2, 2, 2); translate(1, 0, 0) in a legacy (pre-2015) scene") {
         const auto renders = rbtest::loadSceneText(
             "local root = gr.node('root')\n"
@@ -158,7 +158,7 @@ SCENARIO("legacy scenes post-multiply, so they list their transforms in reverse"
     }
 }
 
-SCENARIO("one node under several parents becomes several instances of one shape", "[ch02][ex2.3]") {
+SCENARIO("one node under several parents becomes several instances of one shape", "[ch02][ex2.2]") {
     GIVEN("a sphere added under three parents translated by (2i, 0, 0)") {
         const auto renders = loadSceneText(
             "local root = gr.node('root')\n"
@@ -203,7 +203,7 @@ SCENARIO("one node under several parents becomes several instances of one shape"
 }
 
 SCENARIO("a node without a material takes its nearest ancestor's, or the default grey",
-         "[ch02][ex2.3]") {
+         "[ch02][ex2.2]") {
     GIVEN("a red group holding a bare sphere, and a bare cube under the plain root") {
         auto renders = loadSceneText(
             "local red = gr.material({0.9, 0.1, 0.1}, {0, 0, 0}, 1)\n"
@@ -235,7 +235,7 @@ SCENARIO("a node without a material takes its nearest ancestor's, or the default
 }
 
 SCENARIO("gr.nh_box's tuple is its minimum corner and gr.nh_sphere's is its centre",
-         "[ch02][ex2.3]") {
+         "[ch02][ex2.2]") {
     GIVEN("gr.nh_box('b', {1, 2, 3}, 2) and gr.nh_sphere('s', {-1, -2, -3}, 0.5)") {
         const auto world = rbtest::worldFromLua(
             "local root = gr.node('root')\n"
@@ -269,7 +269,7 @@ SCENARIO("gr.nh_box's tuple is its minimum corner and gr.nh_sphere's is its cent
 }
 
 // [ch02-normal-inverse-transpose]
-SCENARIO("normals under non-uniform scale follow the inverse transpose", "[ch02][ex2.3]") {
+SCENARIO("normals under non-uniform scale follow the inverse transpose", "[ch02][ex2.2]") {
     GIVEN("the ellipsoid x² + (y/2)² + (z/3)² = 1, made as sphere:scale(1, 2, 3)") {
         const auto world = rbtest::worldFromLua(
             "local root = gr.node('root')\n"
@@ -367,7 +367,8 @@ SCENARIO("Phong's diffuse and specular terms follow the cosines of known angles"
 }
 // [ch02-phong-terms]
 
-SCENARIO("a point light's intensity falls off as 1/(c0 + c1·r + c2·r²)", "[ch02][ex2.2][ex2.3]") {
+SCENARIO("a point light's intensity falls off as 1/(c0 + c1·r + c2·r²)",
+         "[ch02][ex2.1][ex2.2][ex2.3]") {
     GIVEN("lights of colour (1, 2, 4) with different falloffs") {
         rb::PointLight light;
         light.colour = Colour(1, 2, 4);
@@ -408,7 +409,8 @@ SCENARIO("a point light's intensity falls off as 1/(c0 + c1·r + c2·r²)", "[ch
     }
 }
 
-SCENARIO("a point behind an occluder receives only ambient light", "[ch02][ex2.2][ex2.3]") {
+SCENARIO("a point behind an occluder receives only ambient light",
+         "[ch02][ex2.1][ex2.2][ex2.3]") {
     GIVEN("a floor with top y = 0, a light at (0, 4, 0) and a ball of radius 0.5 at (0, 2, 0)") {
         const auto world = rbtest::worldFromLua(
             "local grey = gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 1)\n"
@@ -444,7 +446,7 @@ SCENARIO("a point behind an occluder receives only ambient light", "[ch02][ex2.2
 }
 
 SCENARIO("nothing is culled: a ray from inside a sphere hits it and is shaded",
-         "[ch02][ex2.2][ex2.3]") {
+         "[ch02][ex2.1][ex2.2][ex2.3]") {
     GIVEN("a sphere of radius 2 at the origin with a light inside it at (0.5, 0, 0)") {
         const auto world = rbtest::worldFromLua(
             "local m = gr.material({0.3, 0.3, 0.3}, {0.2, 0.2, 0.2}, 7)\n"
@@ -474,7 +476,7 @@ SCENARIO("nothing is culled: a ray from inside a sphere hits it and is shaded",
 }
 
 SCENARIO("a pixel's colour is kd·ambient + Σ visible·I(r)·(kd·max(0,n·l) + ks·max(0,r·v)^s)",
-         "[ch02][ex2.2][ex2.3]") {
+         "[ch02][ex2.1][ex2.2][ex2.3]") {
     GIVEN(
         "a 1 × 1 image of a unit sphere seen from (0, 0, 5), and three lights: one in view, "
         "one behind the sphere, and one hidden by a second ball") {
@@ -521,7 +523,7 @@ SCENARIO("a pixel's colour is kd·ambient + Σ visible·I(r)·(kd·max(0,n·l) +
 
 // [ch02-no-acne]
 SCENARIO("spawned rays never re-hit their own surface, at scene scales from 1e-3 to 1e4",
-         "[ch02][ex2.3]") {
+         "[ch02][ex2.2]") {
     // A sphere, a box (stretched unevenly) and a single triangle, each turned about a skew axis
     // and placed a few sizes from the origin, at every scale s. At 300 random surface points
     // (fixed seed) we spawn rays the way shading does, with rb::offsetRayOrigin, and count

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <cstring>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -134,42 +135,83 @@ const rb::ThinLens* installed(const rb::World& w) {
     return dynamic_cast<const rb::ThinLens*>(w.pipeline.cameraRays.get());
 }
 
+/// The lens position of ray s of n² rays through one image position: a uniform point in cell s
+/// of an n × n grid over the unit square (the test's own stratification, so that the thin-lens
+/// ray is checked before exercise 13.3's pairing is written).
+Vec2 lensCell(int s, int n, rb::Sampler& sampler) {
+    const Vec2 xi = sampler.next2D();
+    return {((s % n) + xi.x) / n, ((s / n) + xi.y) / n};
+}
+
+/// The outcome of a chi-square test, in words for a failure message.
+std::string uniformity(const std::string& what, double p) {
+    std::ostringstream out;
+    out << "expected " << what << " to be uniform: the chi-square test gives p = " << p
+        << ", below the level " << kPerTestAlpha << ", which a uniform density falls under in "
+        << "only 1 run in " << static_cast<int>(1.0 / kPerTestAlpha);
+    return out.str();
+}
+
 }  // namespace
 
 // [ch13-focal-plane]
-SCENARIO("every lens sample through one image position meets the others on the focal plane",
-         "[ch13][ex13.1][ex13.2][ex13.3]") {
-    GIVEN("a tilted camera and thin lenses focused at 7 units, a disk and a square") {
-        const rb::PinholeCamera camera = tiltedCamera();
-        WHEN("64 stratified lens samples go through each of several image positions") {
-            int missed = 0, pinholeMissed = 0, distinctOrigins = 0, positions = 0;
-            for (const auto shape : {rb::ApertureShape::Disk, rb::ApertureShape::Square}) {
-                const rb::ThinLens thin = lens(0.8, 7.0, 64, shape);
-                for (const Vec2 film :
-                     {Vec2(0.5, 0.5), Vec2(32.0, 24.0), Vec2(63.7, 2.2), Vec2(5.0, 47.9)}) {
-                    const Vec3 focus = rb::focalPlanePoint(camera, film, 7.0);
-                    const rb::Ray pinhole = camera.generateRay(film.x, film.y);
-                    pinholeMissed += glm::length(atDepth(camera, pinhole, 7.0) - focus) > 1e-12 * 7;
-                    std::set<std::pair<double, double>> origins;
-                    for (int s = 0; s < 64; ++s) {
-                        rb::Sampler sampler(seed(), 5, s);
-                        const rb::Ray ray =
-                            thin.generate(camera, film, {seed(), 5, s, 64}, sampler);
-                        origins.insert({ray.o.x, ray.o.y});
-                        missed += glm::length(atDepth(camera, ray, 7.0) - focus) > 1e-12 * 7.0;
-                    }
-                    distinctOrigins += origins.size() == 64;
-                    ++positions;
-                }
+namespace {
+
+/// Every ray of a lens through four image positions of the tilted camera, 64 lens positions
+/// each (one per cell of an 8 × 8 grid), reaches depth 7 at the pinhole ray's point and starts
+/// from 64 different lens points.
+void checkFocalPlane(rb::ApertureShape shape) {
+    const rb::PinholeCamera camera = tiltedCamera();
+    const rb::ThinLens thin = lens(0.8, 7.0, 64, shape);
+    int missed = 0, pinholeMissed = 0, distinctOrigins = 0, positions = 0;
+    for (const Vec2 film : {Vec2(0.5, 0.5), Vec2(32.0, 24.0), Vec2(63.7, 2.2), Vec2(5.0, 47.9)}) {
+        const Vec3 focus = rb::focalPlanePoint(camera, film, 7.0);
+        const rb::Ray pinhole = camera.generateRay(film.x, film.y);
+        pinholeMissed += glm::length(atDepth(camera, pinhole, 7.0) - focus) > 1e-12 * 7;
+        std::set<std::pair<double, double>> origins;
+        for (int s = 0; s < 64; ++s) {
+            rb::Sampler sampler(seed(), 5, s);
+            const rb::Ray ray = thin.rayThrough(camera, film, lensCell(s, 8, sampler));
+            origins.insert({ray.o.x, ray.o.y});
+            missed += glm::length(atDepth(camera, ray, 7.0) - focus) > 1e-12 * 7.0;
+        }
+        distinctOrigins += origins.size() == 64;
+        ++positions;
+    }
+    // Source: a thin lens focuses every ray from a point of the focal plane to one image
+    // point (Gauss); the construction aims each ray at that point.
+    INFO("expected every ray to reach depth 7 at the pinhole ray's point there (eye + 7·d): "
+         << missed << " of " << 64 * positions << " lens rays miss it by more than 7e-12");
+    CHECK(pinholeMissed == 0);
+    CHECK(missed == 0);
+    INFO("expected 64 different ray origins on the lens for each image position: "
+         << distinctOrigins << " of " << positions << " positions have them");
+    CHECK(distinctOrigins == positions);
+}
+
+}  // namespace
+
+SCENARIO("every lens ray through one image position meets the others on the focal plane: square",
+         "[ch13][ex13.1]") {
+    GIVEN("a tilted camera and a thin lens with a square aperture, focused at 7 units") {
+        WHEN("64 lens positions go through each of several image positions") {
+            THEN(
+                "every ray reaches depth 7 at the pinhole ray's point, within rounding, "
+                "from 64 different points of the lens") {
+                checkFocalPlane(rb::ApertureShape::Square);
             }
-            THEN("every ray reaches depth 7 at the pinhole ray's point, within rounding") {
-                // Source: a thin lens focuses every ray from a point of the focal plane to one
-                // image point (Gauss); the construction aims each ray at that point.
-                CHECK(pinholeMissed == 0);
-                CHECK(missed == 0);
-            }
-            THEN("the rays of each position start from 64 different points of the lens") {
-                CHECK(distinctOrigins == positions);
+        }
+    }
+}
+
+SCENARIO("every lens ray through one image position meets the others on the focal plane: disk",
+         "[ch13][ex13.1][ex13.2]") {
+    GIVEN("a tilted camera and a thin lens with a disk aperture, focused at 7 units") {
+        WHEN("64 lens positions go through each of several image positions") {
+            THEN(
+                "every ray reaches depth 7 at the pinhole ray's point, within rounding, "
+                "from 64 different points of the lens") {
+                checkFocalPlane(rb::ApertureShape::Disk);
             }
         }
     }
@@ -177,59 +219,78 @@ SCENARIO("every lens sample through one image position meets the others on the f
 // [ch13-focal-plane]
 
 // [ch13-blur-circle]
-SCENARIO("the rays through one image position spread over the thin-lens blur circle", "[ch13][ex13.1][ex13.2][ex13.3]") {
-    GIVEN("a lens of aperture A = 0.5 focused at S1 = 8, and points at S2 = 3, 5, 12, 40") {
-        const rb::PinholeCamera camera = tiltedCamera();
-        const double A = 0.5, S1 = 8.0;
-        const Vec2 centre(32.0, 24.0);
-        WHEN("4096 lens samples through the image centre reach each depth S2") {
+namespace {
+
+/// 4096 lens rays through the image centre of the tilted camera, one per cell of a 64 × 64
+/// grid, followed to depths S2 = 3, 5, 12, 40 with the focus at S1 = 8 and aperture A = 0.5:
+/// seen from the eye they spread over the thin-lens blur circle of each depth, uniformly.
+void checkBlurCircle(rb::ApertureShape shape) {
+    const rb::PinholeCamera camera = tiltedCamera();
+    const double A = 0.5, S1 = 8.0;
+    const Vec2 centre(32.0, 24.0);
+    const bool disk = shape == rb::ApertureShape::Disk;
+    const rb::ThinLens thin = lens(A, S1, 4096, shape);
+    for (const double S2 : {3.0, 5.0, 12.0, 40.0}) {
+        // Source: the thin lens of focal length F focuses S1 at v = F·S1/(S1 − F) (the
+        // lens equation 1/F = 1/S1 + 1/v); a point at S2 blurs into a circle of
+        // diameter c = A·v·|S2 − S1| / (S1·S2) on that sensor. Scaled by 1/v to the
+        // image plane at distance 1: c/v = A·|S2 − S1| / (S1·S2), for any F (here
+        // F = 0.05, to show it drops out).
+        const double F = 0.05, v = F * S1 / (S1 - F);
+        const double c = A * v * std::abs(S2 - S1) / (S1 * S2);
+        const double expected = c / v;
+        CHECK(rb::blurCircleDiameter(A, S1, S2) == Approx(expected).epsilon(1e-12));
+        // The rays meet the plane at S2 around the pinhole ray's point; seen from
+        // the eye, their spread on the image plane is (spread in the world) / S2.
+        const Vec3 middle = atDepth(camera, camera.generateRay(centre.x, centre.y), S2);
+        double reach = 0.0, sumSquares = 0.0;
+        for (int s = 0; s < 4096; ++s) {
+            rb::Sampler sampler(seed(), 7, s);
+            const rb::Ray ray = thin.rayThrough(camera, centre, lensCell(s, 64, sampler));
+            const Vec3 q = atDepth(camera, ray, S2) - middle;
+            const Vec2 image(glm::dot(q, camera.right()) / S2, glm::dot(q, camera.upVector()) / S2);
+            reach = std::max(
+                reach, disk ? glm::length(image) : std::max(std::abs(image.x), std::abs(image.y)));
+            sumSquares += glm::dot(image, image);
+        }
+        const double R = 0.5 * expected;
+        INFO("depth " << S2 << (disk ? ", disk" : ", square") << ": expected the rays to spread "
+                      << "over a " << (disk ? "circle of radius" : "square of half side")
+                      << " A·|S2 − S1|/(2·S1·S2) = " << R << " (seen from the eye), the "
+                      << "farthest reaching its rim and none beyond; the farthest reaches " << reach
+                      << ", the mean squared distance is " << sumSquares / 4096 << ", expected "
+                      << (disk ? 0.5 : 2.0 / 3.0) * R * R);
+        // The farthest ray lies on the circle of that diameter (the square's half
+        // side), none beyond: with 64 × 64 strata the outermost cells reach within
+        // 2/64 of the rim.
+        CHECK(reach <= R * (1.0 + 1e-9));
+        CHECK(reach >= R * (1.0 - 2.0 / 64.0));
+        // The mean squared distance is the uniform disk's R²/2 (the square's
+        // 2h²/3). Source: ∫ r² dA / π over the unit disk = 1/2; x² + y² averages
+        // 2/3 over [-1,1]².
+        CHECK(sumSquares / 4096 == Approx((disk ? 0.5 : 2.0 / 3.0) * R * R).epsilon(0.01));
+    }
+}
+
+}  // namespace
+
+SCENARIO("the rays through one image position spread over the thin-lens blur square",
+         "[ch13][ex13.1]") {
+    GIVEN("a square lens of aperture A = 0.5 focused at S1 = 8, and points at S2 = 3, 5, 12, 40") {
+        WHEN("4096 stratified lens rays through the image centre reach each depth S2") {
+            THEN("they spread over the thin-lens square of each depth, uniformly") {
+                checkBlurCircle(rb::ApertureShape::Square);
+            }
+        }
+    }
+}
+
+SCENARIO("the rays through one image position spread over the thin-lens blur circle",
+         "[ch13][ex13.1][ex13.2]") {
+    GIVEN("a disk lens of aperture A = 0.5 focused at S1 = 8, and points at S2 = 3, 5, 12, 40") {
+        WHEN("4096 stratified lens rays through the image centre reach each depth S2") {
             THEN("they spread over the thin-lens circle of each depth, uniformly") {
-                for (const double S2 : {3.0, 5.0, 12.0, 40.0}) {
-                    // Source: the thin lens of focal length F focuses S1 at v = F·S1/(S1 − F) (the
-                    // lens equation 1/F = 1/S1 + 1/v); a point at S2 blurs into a circle of
-                    // diameter c = A·v·|S2 − S1| / (S1·S2) on that sensor. Scaled by 1/v to the
-                    // image plane at distance 1: c/v = A·|S2 − S1| / (S1·S2), for any F (here
-                    // F = 0.05, to show it drops out).
-                    const double F = 0.05, v = F * S1 / (S1 - F);
-                    const double c = A * v * std::abs(S2 - S1) / (S1 * S2);
-                    const double expected = c / v;
-                    CHECK(rb::blurCircleDiameter(A, S1, S2) == Approx(expected).epsilon(1e-12));
-                    for (const auto shape : {rb::ApertureShape::Disk, rb::ApertureShape::Square}) {
-                        const bool disk = shape == rb::ApertureShape::Disk;
-                        const rb::ThinLens thin = lens(A, S1, 4096, shape);
-                        // The rays meet the plane at S2 around the pinhole ray's point; seen from
-                        // the eye, their spread on the image plane is (spread in the world) / S2.
-                        const Vec3 middle =
-                            atDepth(camera, camera.generateRay(centre.x, centre.y), S2);
-                        double reach = 0.0, sumSquares = 0.0;
-                        for (int s = 0; s < 4096; ++s) {
-                            rb::Sampler sampler(seed(), 7, s);
-                            const rb::Ray ray =
-                                thin.generate(camera, centre, {seed(), 7, s, 4096}, sampler);
-                            const Vec3 q = atDepth(camera, ray, S2) - middle;
-                            const Vec2 image(glm::dot(q, camera.right()) / S2,
-                                             glm::dot(q, camera.upVector()) / S2);
-                            reach = std::max(reach,
-                                             disk ? glm::length(image)
-                                                  : std::max(std::abs(image.x), std::abs(image.y)));
-                            sumSquares += glm::dot(image, image);
-                        }
-                        INFO("S2 = " << S2 << (disk ? ", disk" : ", square") << ": expected "
-                                     << expected << ", reach " << reach);
-                        // The farthest ray lies on the circle of that diameter (the square's half
-                        // side), none beyond: with 64 × 64 strata the outermost cells reach within
-                        // 2/64 of the rim.
-                        CHECK(reach <= 0.5 * expected * (1.0 + 1e-9));
-                        CHECK(reach >= 0.5 * expected * (1.0 - 2.0 / 64.0));
-                        // The mean squared distance is the uniform disk's R²/2 (the square's
-                        // 2h²/3). Source: ∫ r² dA / π over the unit disk = 1/2; x² + y² averages
-                        // 2/3 over
-                        // [-1,1]².
-                        const double R = 0.5 * expected;
-                        CHECK(sumSquares / 4096 ==
-                              Approx((disk ? 0.5 : 2.0 / 3.0) * R * R).epsilon(0.01));
-                    }
-                }
+                checkBlurCircle(rb::ApertureShape::Disk);
             }
         }
     }
@@ -237,25 +298,30 @@ SCENARIO("the rays through one image position spread over the thin-lens blur cir
 // [ch13-blur-circle]
 
 // [ch13-pinhole]
-SCENARIO("a lens of aperture 0 is the pinhole camera, bit for bit", "[ch13][ex13.1][ex13.2][ex13.3]") {
+SCENARIO("a lens of aperture 0 gives the pinhole camera's rays, bit for bit", "[ch13][ex13.1]") {
     GIVEN("a tilted camera and a lens of aperture 0 focused anywhere") {
         const rb::PinholeCamera camera = tiltedCamera();
-        const rb::ThinLens thin = lens(0.0, 3.7, 16);
-        THEN("its rays through every pixel corner, for every lens sample, are the pinhole's") {
+        const rb::ThinLens thin = lens(0.0, 3.7, 16, rb::ApertureShape::Square);
+        THEN("its rays through every pixel corner, for 16 lens positions, are the pinhole's") {
             int differing = 0;
             for (int y = 0; y <= 48; ++y)
                 for (int x = 0; x <= 64; ++x)
                     for (int s = 0; s < 16; ++s) {
                         rb::Sampler sampler(seed(), y * 65 + x, s);
                         const rb::Ray a =
-                            thin.generate(camera, Vec2(x, y),
-                                          {seed(), std::uint64_t(y * 65 + x), s, 16}, sampler);
+                            thin.rayThrough(camera, Vec2(x, y), lensCell(s, 4, sampler));
                         const rb::Ray b = camera.generateRay(x, y);
                         differing += std::memcmp(&a, &b, sizeof a) != 0;
                     }
+            INFO("expected aperture 0 to give exactly the pinhole's rays: "
+                 << differing << " of " << 65 * 49 * 16 << " rays differ in some bit");
             CHECK(differing == 0);
         }
     }
+}
+
+SCENARIO("a lens of aperture 0 renders the pinhole camera's image, bit for bit",
+         "[ch13][ex13.1][ex13.2][ex13.3]") {
     GIVEN("the three-ball scene with jittered antialiasing (4 rays a pixel)") {
         const std::string lua =
             "gr.antialias{sampler = 'jittered', samples = 4}\n" + kBalls + kBallsRender + ")";
@@ -281,7 +347,7 @@ SCENARIO("a lens of aperture 0 is the pinhole camera, bit for bit", "[ch13][ex13
 // [ch13-pinhole]
 
 // [ch13-chi-square]
-SCENARIO("the lens samples are uniform over the aperture", "[ch13][ex13.1][ex13.3]") {
+SCENARIO("the concentric map and the square aperture are uniform", "[ch13][ex13.2]") {
     GIVEN("the concentric map of the unit square onto the disk") {
         rbtest::Rng rng(seed());
         WHEN("it maps 64000 independent uniform points") {
@@ -292,21 +358,7 @@ SCENARIO("the lens samples are uniform over the aperture", "[ch13][ex13.1][ex13.
             }
             THEN("a chi-square test over 160 equal-area cells accepts the density 1/π") {
                 const double p = diskChiSquareP(points);
-                INFO("p = " << p);
-                CHECK(p > kPerTestAlpha);
-            }
-        }
-        WHEN("it maps the stratified lens samples of 4000 pixels, 16 rays each") {
-            std::vector<Vec2> points;
-            for (std::uint64_t pixel = 0; pixel < 4000; ++pixel)
-                for (int s = 0; s < 16; ++s) {
-                    rb::Sampler sampler(seed(), pixel, s);
-                    points.push_back(rb::concentricDisk(
-                        rb::stratifiedLensSample({seed(), pixel, s, 16}, sampler)));
-                }
-            THEN("they are uniform on the disk too (the pairing changes no density)") {
-                const double p = diskChiSquareP(points);
-                INFO("p = " << p);
+                INFO(uniformity("the concentric map's points over the unit disk", p));
                 CHECK(p > kPerTestAlpha);
             }
         }
@@ -329,10 +381,28 @@ SCENARIO("the lens samples are uniform over the aperture", "[ch13][ex13.1][ex13.
                 double chi2 = 0.0;
                 for (double o : observed) chi2 += (o - 250.0) * (o - 250.0) / 250.0;
                 const double p = rbtest::upperGammaQ(0.5 * 255, 0.5 * chi2);
-                INFO("p = " << p);
+                INFO(uniformity("the square aperture's points over [-1,1]²", p));
                 CHECK(inside);
                 CHECK(p > kPerTestAlpha);
             }
+        }
+    }
+}
+
+SCENARIO("the stratified, paired lens samples are uniform over the disk",
+         "[ch13][ex13.2][ex13.3]") {
+    GIVEN("the concentric map of the stratified lens samples of 4000 pixels, 16 rays each") {
+        std::vector<Vec2> points;
+        for (std::uint64_t pixel = 0; pixel < 4000; ++pixel)
+            for (int s = 0; s < 16; ++s) {
+                rb::Sampler sampler(seed(), pixel, s);
+                points.push_back(
+                    rb::concentricDisk(rb::stratifiedLensSample({seed(), pixel, s, 16}, sampler)));
+            }
+        THEN("they are uniform on the disk too (the pairing changes no density)") {
+            const double p = diskChiSquareP(points);
+            INFO(uniformity("the stratified lens samples over the unit disk", p));
+            CHECK(p > kPerTestAlpha);
         }
     }
 }
@@ -391,7 +461,8 @@ SCENARIO("each of a pixel's rays gets a lens stratum of its own", "[ch13][ex13.3
 // [ch13-strata]
 
 // [ch13-stratified-error]
-SCENARIO("stratified lens samples blur an edge with less error than independent ones", "[ch13][ex13.1][ex13.3]") {
+SCENARIO("stratified lens samples blur an edge with less error than independent ones",
+         "[ch13][ex13.2][ex13.3]") {
     GIVEN("an edge that covers the part x > 0.3 of the unit lens disk, seen from 2000 pixels") {
         // Source: the disk's area beyond x = a is acos(a) − a·√(1 − a²); over π it is the
         // exact fraction of the lens that sees the bright side.
@@ -456,7 +527,8 @@ SCENARIO("lens and pixel samples share rays: a pixel traces the larger count, no
 }
 // [ch13-rays-per-pixel]
 
-SCENARIO("depth-of-field images are the same for any thread count", "[ch13][ex13.1][ex13.2][ex13.3]") {
+SCENARIO("depth-of-field images are the same for any thread count",
+         "[ch13][ex13.1][ex13.2][ex13.3]") {
     GIVEN("the three-ball scene with a lens and jittered antialiasing") {
         const auto w = world(
             "gr.lens{aperture = 0.4, samples = 9}\n"
@@ -588,7 +660,8 @@ SCENARIO("the lens is set by the command line, gr.lens, gr.option or seed 001's 
 // [ch13-settings]
 
 // [ch13-stability]
-SCENARIO("extreme lenses give finite rays and images", "[ch13][stability][ex13.1][ex13.2][ex13.3]") {
+SCENARIO("extreme lenses give finite rays and images",
+         "[ch13][stability][ex13.1][ex13.2][ex13.3]") {
     GIVEN(
         "lenses from a pinhole-thin aperture to one far wider than the scene, focused from "
         "1e-6 to 1e8 units") {

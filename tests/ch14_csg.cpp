@@ -88,7 +88,7 @@ CrossingList worldCrossings(const rb::Instance& instance, const Ray& ray) {
 }  // namespace
 
 // [ch14-interval-tests]
-SCENARIO("the interval algebra: union, intersection and difference of [1,4] and [2,6]", "[ch14][ex14.2][ex14.3]") {
+SCENARIO("the interval algebra: union, intersection and difference of [1,4] and [2,6]", "[ch14][ex14.1][ex14.3][ex14.4]") {
     GIVEN("A = [1, 4] and B = [2, 6] along a line") {
         const CrossingList a = intervals({{1, 4}}, &kMatA), b = intervals({{2, 6}}, &kMatB);
         // Source: hand computation on the number line.
@@ -153,7 +153,86 @@ SCENARIO("the membership rule of each operation is its Boolean", "[ch14][ex14.1]
         }
 }
 
-SCENARIO("a hollow shell, a difference of two transformed spheres, has four crossings", "[ch14][ex14.2][ex14.4]") {
+// [ch14-sphere-crossings]
+SCENARIO("a line crosses the unit sphere twice, entering then leaving, with outward normals",
+         "[ch14][ex14.2]") {
+    GIVEN("the line (0.3, −0.2, −5) + t·(0, 0, 2)") {
+        const Ray ray{Vec3(0.3, -0.2, -5.0), Vec3(0.0, 0.0, 2.0)};
+        CrossingList out;
+        rb::sphereCrossings(ray, out);
+        THEN("it enters at t = (5 − √0.87)/2 and leaves at t = (5 + √0.87)/2") {
+            // Source: x² + y² = 0.13 along the line, so z = −5 + 2t = ±√0.87 on the sphere;
+            // the point on the unit sphere is its own outward normal.
+            const double z = std::sqrt(0.87);
+            INFO("expected two crossings, entering then leaving, at t = "
+                 << (5.0 - z) / 2.0 << " and " << (5.0 + z) / 2.0 << "; got " << out.size());
+            REQUIRE(out.size() == 2);
+            CHECK(out[0].entering);
+            CHECK_FALSE(out[1].entering);
+            CHECK(out[0].hit.t == Approx((5.0 - z) / 2.0).epsilon(1e-14));
+            CHECK(out[1].hit.t == Approx((5.0 + z) / 2.0).epsilon(1e-14));
+            CHECK(glm::length(out[0].hit.n - Vec3(0.3, -0.2, -z)) < 1e-14);
+            CHECK(glm::length(out[1].hit.n - Vec3(0.3, -0.2, z)) < 1e-14);
+        }
+    }
+    GIVEN("a line from inside the sphere, (0, 0, 0.5) + t·(1, 0, 0)") {
+        CrossingList out;
+        rb::sphereCrossings(Ray{Vec3(0.0, 0.0, 0.5), Vec3(1.0, 0.0, 0.0)}, out);
+        THEN("the whole line counts: it entered behind the origin, at t = −√0.75") {
+            // Source: x² = 1 − 0.25 on the sphere.
+            INFO("expected crossings at t = ±√0.75 = ±" << std::sqrt(0.75) << "; got " << out.size()
+                                                        << " crossings");
+            REQUIRE(out.size() == 2);
+            CHECK(out[0].entering);
+            CHECK(out[0].hit.t == Approx(-std::sqrt(0.75)).epsilon(1e-14));
+            CHECK(out[1].hit.t == Approx(std::sqrt(0.75)).epsilon(1e-14));
+        }
+    }
+    GIVEN("a line that misses the sphere and one that only touches it") {
+        CrossingList missed, touched;
+        rb::sphereCrossings(Ray{Vec3(0.0, 2.0, -5.0), Vec3(0.0, 0.0, 1.0)}, missed);
+        rb::sphereCrossings(Ray{Vec3(0.0, 1.0, -5.0), Vec3(0.0, 0.0, 1.0)}, touched);
+        THEN("neither crosses it: a double root touches the solid without entering it") {
+            CHECK(missed.empty());
+            CHECK(touched.empty());
+        }
+    }
+}
+// [ch14-sphere-crossings]
+
+// [ch14-orient-alone]
+SCENARIO("a kept crossing's normal turns round where operand and result differ in direction",
+         "[ch14][ex14.3]") {
+    GIVEN("B's leaving crossing at t = 2 with its outward normal +z") {
+        Crossing c;
+        c.hit.t = 2.0;
+        c.hit.n = Vec3(0.0, 0.0, 1.0);
+        c.entering = false;
+        WHEN("it is where A − B is entered (B left, A still inside)") {
+            Crossing kept = c;
+            rb::orientToResult(kept, true);
+            THEN("the result is entered there, and its normal is −z: B's turned round") {
+                // Source: the chapter's rule n_result = −n where the directions differ.
+                INFO("expected entering with the normal (0, 0, −1), got the normal ("
+                     << kept.hit.n.x << ", " << kept.hit.n.y << ", " << kept.hit.n.z << ")");
+                CHECK(kept.entering);
+                CHECK(kept.hit.n == Vec3(0.0, 0.0, -1.0));
+            }
+        }
+        WHEN("it is where a union is left (B left, A outside)") {
+            Crossing kept = c;
+            rb::orientToResult(kept, false);
+            THEN("the directions agree, and the normal stays +z") {
+                CHECK_FALSE(kept.entering);
+                CHECK(kept.hit.n == Vec3(0.0, 0.0, 1.0));
+                CHECK(kept.hit.t == 2.0);
+            }
+        }
+    }
+}
+// [ch14-orient-alone]
+
+SCENARIO("a hollow shell, a difference of two transformed spheres, has four crossings", "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     GIVEN("gr.difference of a sphere of radius 2 and one of radius 1, both centred at (1, 0, 0)") {
         auto world = csgWorld(R"(
             local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
@@ -260,7 +339,7 @@ std::pair<std::shared_ptr<Solid>, rb::CsgLeaf> randomTree(
 
 // [ch14-membership-test]
 SCENARIO("crossings agree with point membership on random lines through random CSG trees",
-         "[ch14][ex14.2][ex14.4]") {
+         "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     rbtest::Rng rng(rbtest::seedFromEnv("RB_CH14_SEED"));
     int checkedPoints = 0, checkedNormals = 0, nonEmpty = 0;
     for (int tree = 0; tree < 40; ++tree) {
@@ -317,7 +396,7 @@ SCENARIO("crossings agree with point membership on random lines through random C
 }
 // [ch14-membership-test]
 
-SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes", "[ch14][ex14.2][ex14.4]") {
+SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes", "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     GIVEN("a group of two unit cubes side by side, minus a nested CSG node") {
         // Operand A: cubes [0,1]³ and [1,2]×[0,1]² in a group moved by (−1, 0, 0).
         // Operand B: (sphere r=0.5 at (0.5, 0.5, 0.5)) ∪ (sphere r=0.5 at (−0.5, 0.5, 0.5)),
@@ -382,7 +461,7 @@ SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes", 
 }
 
 SCENARIO("each operand keeps its own material, and inherits the node's when it has none",
-         "[ch14][ex14.2][ex14.4]") {
+         "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     auto world = csgWorld(R"(
         local red = gr.material({1, 0, 0}, {0, 0, 0}, 1)
         local blue = gr.material({0, 0, 1}, {0, 0, 0}, 1)
@@ -411,7 +490,7 @@ SCENARIO("each operand keeps its own material, and inherits the node's when it h
 }
 
 // [ch14-lens-test]
-SCENARIO("a lens made as the intersection of two spheres focuses like a thick lens", "[ch14][ex14.2][ex14.4]") {
+SCENARIO("a lens made as the intersection of two spheres focuses like a thick lens", "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     GIVEN("two unit spheres centred at z = ±0.8 intersected, of glass n = 1.5") {
         // The lens is biconvex with R₁ = 1, R₂ = −1 and thickness d = 2·(1 − 0.8) = 0.4.
         auto world = csgWorld(R"(
@@ -455,7 +534,7 @@ SCENARIO("a lens made as the intersection of two spheres focuses like a thick le
 // [ch14-lens-test]
 
 SCENARIO("a hollow glass shell enters and leaves the medium stack at each of its surfaces",
-         "[ch14][ex14.2][ex14.4]") {
+         "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     auto world = csgWorld(R"(
         local glass = gr.material{kd = {0, 0, 0}, transparency = 1, ior = 1.5}
         local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
@@ -484,7 +563,7 @@ SCENARIO("a hollow glass shell enters and leaves the medium stack at each of its
     CHECK(media.size == 0);
 }
 
-SCENARIO("shadows see the result as one solid", "[ch14][ex14.2][ex14.4]") {
+SCENARIO("shadows see the result as one solid", "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     auto world = csgWorld(R"(
         local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
         local shell = gr.difference(outer, gr.sphere('inner'))
@@ -508,7 +587,7 @@ SCENARIO("shadows see the result as one solid", "[ch14][ex14.2][ex14.4]") {
     }
 }
 
-SCENARIO("a ray that starts inside an operand finds the result's surface", "[ch14][stability][ex14.2][ex14.4]") {
+SCENARIO("a ray that starts inside an operand finds the result's surface", "[ch14][stability][ex14.1][ex14.2][ex14.3][ex14.4]") {
     auto world = csgWorld(R"(
         local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
         local shell = gr.difference(outer, gr.sphere('inner'))
@@ -540,7 +619,7 @@ SCENARIO("a ray that starts inside an operand finds the result's surface", "[ch1
 
 // [ch14-coplanar-test]
 SCENARIO("coplanar faces make no surface inside the result, under any rotation",
-         "[ch14][stability][ex14.2][ex14.3]") {
+         "[ch14][stability][ex14.1][ex14.3][ex14.4]") {
     rbtest::Rng rng(rbtest::seedFromEnv("RB_CH14_SEED") + 1);
     int spurious = 0, lines = 0, flush = 0;
     for (int trial = 0; trial < 200; ++trial) {

@@ -111,7 +111,7 @@ std::string scaledScene(double s) {
 SCENARIO(
     "shadow rays from a convex mesh are never blocked by the mesh itself, at scales from "
     "1e-3 to 1e4",
-    "[stability][ch02][ex2.3]") {
+    "[stability][ch02][ex2.2]") {
     // A convex polyhedron (a latitude–longitude sphere of 16 × 32 quads), stretched, turned and
     // placed a few sizes from the origin, in a two-level BVH. A light anywhere in the outer
     // half-space of the face a point lies on cannot be hidden by a convex solid: the solid lies

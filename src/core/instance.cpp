@@ -7,7 +7,7 @@ void Instance::setTransform(const Mat4& m) {
     objectToWorld = m;
     worldToObject = glm::inverse(m);
     // [exercise-normal-transform]
-    // Exercise 2.3, transforming normals: read ch02-equations.
+    // Exercise 2.2, transforming normals: read ch02-equations.
     // Blank: normalToWorld = Mat3(objectToWorld);
     // Normals transform by the inverse transpose, so they stay perpendicular to the surface
     // under non-uniform scale.

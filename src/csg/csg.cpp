@@ -44,7 +44,7 @@ void orientToResult(Crossing& c, bool enteringResult) {
 void combineCrossings(CsgOp op, const CrossingList& a, const CrossingList& b, CrossingList& out) {
     out.clear();
     // [exercise-csg-combine]
-    // Exercise 14.2, merging two lists of crossings into the result's: read ch14-intervals.
+    // Exercise 14.4, merging two lists of crossings into the result's: read ch14-intervals.
     // Blank: for (size_t i = 0; i < a.size(); ++i) out.push(a[i]);
     // Walk both lists in t order from t = −∞, where the line is outside both solids.
     bool insideA = false, insideB = false, inside = false;
@@ -81,7 +81,7 @@ void combineCrossings(CsgOp op, const CrossingList& a, const CrossingList& b, Cr
 // [csg-sphere-crossings]
 void sphereCrossings(const Ray& ray, CrossingList& out) {
     // [exercise-csg-sphere-crossings]
-    // Exercise 14.4, both crossings of the unit sphere: read ch14-intervals.
+    // Exercise 14.2, both crossings of the unit sphere: read ch14-intervals.
     // Blank: (void)ray; (void)out;
     if (isDegenerateDirection(ray.d)) return;
     // The quadratic |o + t·d|² = 1 of the unit sphere, as in chapter 1, keeping both roots.

@@ -8,7 +8,7 @@ namespace rb {
 // [concentric-disk]
 Vec2 concentricDisk(const Vec2& u) {
     // [exercise-concentric-disk]
-    // Exercise 13.1, the concentric disk map: read ch13-disk.
+    // Exercise 13.2, the concentric disk map: read ch13-disk.
     // Blank: return Vec2(0.0);
     // Map u to [-1,1]²; the centre of the square is the centre of the disk.
     const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;

@@ -24,7 +24,7 @@ Ray ThinLens::generate(const PinholeCamera& camera, const Vec2& film, const RayS
 // [thin-lens-ray]
 Ray ThinLens::rayThrough(const PinholeCamera& camera, const Vec2& film, const Vec2& u) const {
     // [exercise-thin-lens-ray]
-    // Exercise 13.2, the thin-lens ray: read ch13-thin-lens.
+    // Exercise 13.1, the thin-lens ray: read ch13-thin-lens.
     // Blank: return camera.generateRay(film.x, film.y);
     // The lens point: the aperture shape scaled to its radius, in the camera's right/up plane.
     const Vec2 lens = 0.5 * settings_.aperture * aperturePoint(settings_.shape, u);

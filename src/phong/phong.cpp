@@ -35,7 +35,7 @@ Colour lightFromPoint(const ShadeContext& ctx, const Hit& hit, const Material& m
     const Vec3 l = toLight / r;
     if (glm::dot(n, l) <= 0.0) return Colour(0.0);  // light behind the shading normal
     // [exercise-shadow-ray]
-    // Exercise 2.2, the shadow ray: read ch02-equations.
+    // Exercise 2.3, the shadow ray: read ch02-equations.
     // Blank: 
     // Cast a shadow ray from the (offset) hit point to the light: t in (0, 1). (A smooth
     // mesh, chapter 9, may move where shadow rays start: hit.shadowOffset.)

@@ -4,7 +4,7 @@
 #   untouched  the export as handed out: every exercise fails, and so does the golden image;
 #   solved     raybook's own code put back: every exercise and the golden image pass;
 #   buggy      solved, then the last exercise replaced by its blank (compiles, wrong): only
-#              that exercise fails, the ones before it pass, the golden image fails;
+#              that exercise fails, the ones before it pass and score, the golden image fails;
 #   broken     solved, then a syntax error: reported as a build failure with score 0, never
 #              a crash of the grader.
 # Checks the printed table and the CSV. The four builds share objects through objcache.py.
@@ -80,6 +80,11 @@ for e in exercises:
         expect(int(p) < int(t), f"buggy: {e} fails ({p}/{t})")
     elif e < "ex" + bug:
         expect(p == t, f"buggy: {e}, before the bug, passes ({p}/{t})")
+K = len(exercises)
+expect(u["score"] == f"0/{K}" and s["score"] == f"{K}/{K}",
+       f"score per exercise: untouched 0/{K}, solved {K}/{K} ({u['score']}, {s['score']})")
+expect(b["score"] == f"{K - 1}/{K}",
+       f"buggy: every exercise but the bugged one scores ({b['score']})")
 expect(x["build"] == "failed" and x["score"] == "0", "broken: a build failure, score 0")
 expect(all(r["tests changed"] == "" for r in rows.values()),
        "no project's tests, goldens or scenes differ from a fresh export")
