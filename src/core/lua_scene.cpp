@@ -445,7 +445,10 @@ int sandboxLoad(lua_State* L) {
     return 1;
 }
 
-/// Calls of later chapters that also tell a scene's era.
+/// Calls of later chapters that also tell a scene's era, by their name alone. gr.cone and
+/// gr.texture are not among them: raybook has forms of its own under the same names, so only a
+/// built chapter, which sees the arguments, can tell seed 001's gr.cone(name) or seed 000's
+/// gr.texture(material, file) from them.
 struct EraCall {
     const char* name;
     Era era;
@@ -453,9 +456,7 @@ struct EraCall {
 };
 constexpr EraCall kEraCalls[] = {
     {"cyllinder", Era::Legacy, "seed 001's gr.cyllinder"},
-    {"cone", Era::Legacy, "seed 001's gr.cone"},
     {"csg", Era::Legacy, "seed 001's node:csg"},
-    {"texture", Era::Modern, "seed 000's gr.texture"},
     {"set_texture_map", Era::Modern, "seed 002's set_texture_map"},
     {"set_bump_map", Era::Modern, "seed 002's set_bump_map"},
 };

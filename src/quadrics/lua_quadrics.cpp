@@ -107,7 +107,7 @@ int grCone(lua_State* L) {
     const QuadricRequest r =
         readRequest(L, "gr.cone", "cone", {"name", "open", "top_radius"},
                     "(name) or {name = ..., open = true|false, top_radius = 0..1}");
-    if (lua_type(L, 1) != LUA_TTABLE) noteEraSign(L, Era::Legacy, "seed 001's gr.cone");
+    // gr.cone(name) is seed 001's call and raybook's own first form: no sign of an era.
     auto node = std::make_shared<SceneNode>();
     node->name = r.name;
     node->shape = std::make_shared<const Cone>(r.topRadius, !r.open);

@@ -193,6 +193,7 @@ int textureTable(lua_State* L) {
 int grTexture(lua_State* L) {
     if (lua_gettop(L) == 1 && lua_type(L, 1) == LUA_TTABLE) return textureTable(L);
     checkArgCount(L, "gr.texture", 2, 2, "{image = 'file', ...} or (material, 'file.jpg')");
+    noteEraSign(L, Era::Modern, "seed 000's gr.texture");
     auto material = checkMaterial(L, 1, "gr.texture", "material");
     const std::string file = checkString(L, 2, "gr.texture", "file");
     material->textures["kd"] = defaultImageTexture(L, file, "gr.texture");
