@@ -92,8 +92,102 @@ std::string writeRampPng(const rbtest::TempDir& dir) {
 
 }  // namespace
 
+// [ch11-bumped-normal-alone]
+SCENARIO("the bumped normal is n − a·g, normalised, and tends to −g as the strength grows",
+         "[ch11][ex11.1]") {
+    GIVEN("the normal n = +y and a tangential gradient g = (s, 0, 0)") {
+        const Vec3 n(0, 1, 0);
+        THEN("strength a tilts it to (−a·s, 1, 0) / √(1 + (a·s)²)") {
+            // Source: the chapter's equation n' = (n − a·g) / |n − a·g|.
+            for (const double s : {0.1, 1.0, 3.0})
+                for (const double a : {0.5, 1.0, -2.0}) {
+                    const Vec3 expected = Vec3(-a * s, 1.0, 0.0) / std::sqrt(1.0 + a * a * s * s);
+                    const Vec3 bumped = rb::bumpedNormal(n, Vec3(s, 0, 0), a);
+                    INFO("s = " << s << ", a = " << a << ": expected the normal (" << expected.x
+                                << ", " << expected.y << ", 0), got (" << bumped.x << ", "
+                                << bumped.y << ", " << bumped.z << ")");
+                    CHECK(glm::length(bumped - expected) < 1e-14);
+                }
+        }
+        THEN("a strength of 1e300 gives the direction of −g, finite, not an overflow") {
+            const Vec3 bumped = rb::bumpedNormal(n, Vec3(0.5, 0, 0), 1e300);
+            INFO("expected (−1, 0, 0), got (" << bumped.x << ", " << bumped.y << ", " << bumped.z
+                                              << ")");
+            CHECK(glm::length(bumped - Vec3(-1, 0, 0)) < 1e-12);
+        }
+        THEN("a zero gradient leaves the normal as it was") {
+            CHECK(rb::bumpedNormal(n, Vec3(0.0), 5.0) == n);
+        }
+    }
+}
+// [ch11-bumped-normal-alone]
+
+namespace {
+
+/// A plane wave h(x) = sin(k·(x·d)) of wavelength λ along the unit direction d: the test's own
+/// height field, with a gradient known in closed form, so that the numerical gradient is
+/// checked without exercise 11.4's ripples.
+class PlaneWave final : public rb::HeightField {
+  public:
+    PlaneWave(const Vec3& d, double lambda)
+        : d_(glm::normalize(d)), k_(2.0 * glm::pi<double>() / lambda), lambda_(lambda) {}
+    double height(const Vec3& x) const override { return std::sin(k_ * glm::dot(x, d_)); }
+    double featureSize() const override { return lambda_; }
+    /// Source: ∇ sin(k·(x·d)) = k·cos(k·(x·d))·d.
+    Vec3 exactGradient(const Vec3& x) const { return k_ * std::cos(k_ * glm::dot(x, d_)) * d_; }
+    double k() const { return k_; }
+
+  private:
+    Vec3 d_;
+    double k_, lambda_;
+};
+
+}  // namespace
+
+SCENARIO("the numerical gradient of a plane wave converges to its slope as the step squared",
+         "[ch11][ex11.2]") {
+    GIVEN("a plane wave of wavelength 0.2 across a tilted direction, 100 points on y = 0.5") {
+        const PlaneWave wave(Vec3(1.0, 0.5, 2.0), 0.2);
+        rbtest::Rng rng(11);
+        std::vector<Vec3> points;
+        for (int i = 0; i < 100; ++i)
+            points.emplace_back(rng.uniform(-1, 1), 0.5, rng.uniform(-1, 1));
+        const Vec3 n(0, 1, 0);
+        // The largest error of the numerical gradient against the exact one's part along the
+        // surface (the tangent plane of n), at one step.
+        const auto worstError = [&](double step) {
+            double worst = 0.0;
+            for (const Vec3& x : points) {
+                const Vec3 exact = wave.exactGradient(x);
+                const Vec3 tangential = exact - glm::dot(exact, n) * n;
+                worst = std::max(worst,
+                                 glm::length(rb::surfaceGradient(wave, x, n, step) - tangential));
+            }
+            return worst;
+        };
+        WHEN("the step halves from λ/20 to λ/40") {
+            const double coarse = worstError(0.2 / 20), fine = worstError(0.2 / 40);
+            THEN("the error falls by about 4") {
+                // Source: Taylor's theorem: (h(x+ε) − h(x−ε)) / 2ε = h'(x) + ε² h'''(x) / 6 +
+                // O(ε⁴), so halving ε quarters the leading error.
+                INFO("expected central differences, whose error falls 4-fold as the step halves: "
+                     << coarse << " to " << fine);
+                CHECK(coarse / fine == Approx(4.0).epsilon(0.05));
+            }
+        }
+        WHEN("the default step, λ/1000, is used") {
+            const double error = worstError(rb::kDefaultStepFraction * 0.2);
+            THEN("the gradient is right to a few parts in 10⁶ of its size") {
+                INFO("expected the gradient within 1e-5·k of the exact one: the error is "
+                     << error << ", k = " << wave.k());
+                CHECK(error < 1e-5 * wave.k());
+            }
+        }
+    }
+}
+
 // [ch11-ramp]
-SCENARIO("a planar height ramp tilts the normal by atan(slope)", "[ch11][ex11.1][ex11.2][ex11.4]") {
+SCENARIO("a planar height ramp tilts the normal by atan(slope)", "[ch11][ex11.1][ex11.2][ex11.3]") {
     GIVEN("the top face (y = 1) of the unit cube, with the ramp h = s·x at strength a") {
         rb::Box box;
         for (const double s : {0.1, 0.5, 1.0, 3.0, 20.0})
@@ -146,7 +240,7 @@ SCENARIO("a planar height ramp tilts the normal by atan(slope)", "[ch11][ex11.1]
 // [ch11-ramp]
 
 // [ch11-lit-ramp]
-SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11][ex11.1][ex11.2][ex11.4]") {
+SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11][ex11.1][ex11.2][ex11.3]") {
     GIVEN(
         "a white floor stretched 10 × in x and z, a ramp of slope s in object space, a light "
         "straight above the point the camera sees") {
@@ -183,7 +277,8 @@ SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11][e
 // [ch11-lit-ramp]
 
 // [ch11-zero]
-SCENARIO("a zero bump leaves every normal unchanged", "[ch11][ex11.1][ex11.2][ex11.4]") {
+SCENARIO("a zero bump leaves every normal unchanged",
+         "[ch11][ex11.1][ex11.2][ex11.3][ex11.4]") {
     GIVEN("a stretched, turned sphere with ripples and with noise") {
         rb::Sphere sphere;
         rbtest::Rng rng(11);
@@ -232,7 +327,8 @@ SCENARIO("a zero bump leaves every normal unchanged", "[ch11][ex11.1][ex11.2][ex
 // [ch11-zero]
 
 // [ch11-facing]
-SCENARIO("the bumped normal never faces away from the viewer, at any strength", "[ch11][ex11.1][ex11.2][ex11.4]") {
+SCENARIO("the bumped normal never faces away from the viewer, at any strength",
+         "[ch11][ex11.1][ex11.2][ex11.3][ex11.4]") {
     GIVEN("a sphere and a box, with ripples and noise, seen from random points outside") {
         rb::Sphere sphere;
         rb::Box box;
@@ -281,7 +377,7 @@ SCENARIO("the bumped normal never faces away from the viewer, at any strength", 
 // [ch11-facing]
 
 // [ch11-gradient]
-SCENARIO("the numerical gradient converges to the exact one as the step squared", "[ch11][ex11.1][ex11.3]") {
+SCENARIO("the numerical gradient converges to the exact one as the step squared", "[ch11][ex11.2][ex11.4]") {
     GIVEN("ripples of wavelength 0.2 around two centres, and 100 points on the plane y = 0.5") {
         const double lambda = 0.2;
         const rb::RippleHeight ripples({Vec3(0.1, 0.0, 0.2), Vec3(-0.6, 0.1, 0.4)}, lambda);
@@ -323,7 +419,8 @@ SCENARIO("the numerical gradient converges to the exact one as the step squared"
 // [ch11-gradient]
 
 // [ch11-ripples]
-SCENARIO("ripples tilt the normal of a flat pond by their exact slope", "[ch11][ex11.1][ex11.2][ex11.4]") {
+SCENARIO("ripples tilt the normal of a flat pond by their exact slope",
+         "[ch11][ex11.1][ex11.2][ex11.3][ex11.4]") {
     GIVEN("a pond: the unit cube's top face with ripples around (0.5, 1, 0.5)") {
         rb::Box box;
         const double lambda = 0.1, a = 0.02;
@@ -399,7 +496,7 @@ SCENARIO("gradient noise is zero on the lattice, bounded and smooth", "[ch11]") 
 
 // [ch11-stability]
 SCENARIO("a strength that would flip the normal is held on the viewer's side",
-         "[ch11][stability][ex11.1][ex11.2][ex11.4]") {
+         "[ch11][stability][ex11.1][ex11.2][ex11.3]") {
     GIVEN("a ramp of slope 1 on the unit cube's top face, seen at 60° from the normal") {
         rb::Box box;
         const rb::Instance cube = rbtest::makeInstance(box, rb::Mat4(1.0));
@@ -462,7 +559,7 @@ SCENARIO("a strength that would flip the normal is held on the viewer's side",
 // [ch11-stability]
 
 // [ch11-lua]
-SCENARIO("material:set_bump reads raybook's bump table, and refuses what it cannot use", "[ch11][ex11.3]") {
+SCENARIO("material:set_bump reads raybook's bump table, and refuses what it cannot use", "[ch11][ex11.4]") {
     GIVEN("materials with each pattern") {
         const auto bumpOf = [](const std::string& call) {
             const rb::Material m = rbtest::materialOf(
@@ -528,7 +625,8 @@ SCENARIO("material:set_bump reads raybook's bump table, and refuses what it cann
 // [ch11-lua]
 
 // [ch11-costs-nothing]
-SCENARIO("without bumps, or with the feature off, the chapter changes nothing", "[ch11][ex11.1][ex11.2][ex11.4]") {
+SCENARIO("without bumps, or with the feature off, the chapter changes nothing",
+         "[ch11][ex11.1][ex11.2][ex11.3][ex11.4]") {
     const std::string body =
         "root = gr.node('root')\n"
         "local b = gr.nh_sphere('b', {0, 0, -3}, 1)\n"
@@ -577,7 +675,7 @@ SCENARIO("without bumps, or with the feature off, the chapter changes nothing", 
 // [ch11-costs-nothing]
 
 // [ch11-height-map]
-SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11][ex11.2][ex11.4]") {
+SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11][ex11.1][ex11.3]") {
     rbtest::TempDir dir;
     const std::string ramp = writeRampPng(dir);
     const auto heights = std::make_shared<rb::HeightImage>(*rb::loadTextureImage(ramp));
@@ -728,7 +826,7 @@ SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11
 
 // [ch11-height-map-stability]
 SCENARIO("a height map steep enough to flip the normal is held on the viewer's side",
-         "[ch11][stability][ex11.2][ex11.4]") {
+         "[ch11][stability][ex11.1][ex11.3]") {
     rbtest::TempDir dir;
     const auto heights =
         std::make_shared<rb::HeightImage>(*rb::loadTextureImage(writeRampPng(dir)));

@@ -33,7 +33,7 @@ Vec3 surfaceGradient(const HeightField& field, const Vec3& x, const Vec3& n, dou
     Vec3 t, b;
     tangentFrame(n, t, b);
     // [exercise-surface-gradient]
-    // Exercise 11.1, the numerical surface gradient: read ch11-gradient.
+    // Exercise 11.2, the numerical surface gradient: read ch11-gradient.
     // Blank: return Vec3(0.0);
     // Central differences along each tangent: the error falls as step², until rounding in
     // the two heights' difference takes over.
@@ -48,7 +48,7 @@ Vec3 surfaceGradient(const HeightField& field, const Vec3& x, const Vec3& n, dou
 Vec3 bumpedNormal(const Vec3& n, const Vec3& g, double strength) {
     if (!isFinite(g)) return n;
     // [exercise-bumped-normal]
-    // Exercise 11.2, the bumped normal: read ch11-equations.
+    // Exercise 11.1, the bumped normal: read ch11-equations.
     // Blank: return n;
     // n − strength · g, divided through by max(1, |strength|) so a huge strength cannot
     // overflow: the direction is the same, and tends to −g as the strength grows.
@@ -64,7 +64,7 @@ Vec3 keepViewerSide(const Vec3& bumped, const Vec3& original, const Vec3& v) {
     const double side = glm::dot(original, v) < 0.0 ? -1.0 : 1.0;
     Vec3 n = side * bumped;
     // [exercise-keep-viewer-side]
-    // Exercise 11.4, keeping the bumped normal on the viewer's side: read ch11-facing.
+    // Exercise 11.3, keeping the bumped normal on the viewer's side: read ch11-facing.
     // Blank: return bumped;
     const double cosView = glm::dot(n, v);
     // A normal tipped past (or nearly onto) the tangent plane would light the surface from

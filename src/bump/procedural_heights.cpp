@@ -14,7 +14,7 @@ double RampHeight::height(const Vec3& x) const {
 // [ripples]
 double RippleHeight::height(const Vec3& x) const {
     // [exercise-ripples]
-    // Exercise 11.3, ripples on water: read ch11-procedural.
+    // Exercise 11.4, ripples on water: read ch11-procedural.
     // Blank: return 0.0;
     const double k = 2.0 * glm::pi<double>() / lambda_;  // wave number
     double h = 0.0;

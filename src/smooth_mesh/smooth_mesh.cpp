@@ -42,7 +42,7 @@ Vec3 interpolateNormal(const std::array<double, 3>& b, const std::array<Vec3, 3>
 // [adapt-normal]
 Vec3 adaptShadingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
     // [exercise-adapt-normal]
-    // Exercise 9.4, keeping mirror rays above the surface: read ch09-geometry.
+    // Exercise 9.3, keeping mirror rays above the surface: read ch09-geometry.
     // Blank: return ns;
     // The mirror image of wo about ns, and its elevation above the flat surface.
     const Vec3 r = 2.0 * glm::dot(wo, ns) * ns - wo;
@@ -64,7 +64,7 @@ Vec3 adaptShadingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
 Vec3 terminatorOffset(const Vec3& p, const std::array<double, 3>& b, const std::array<Vec3, 3>& v,
                       const std::array<Vec3, 3>& n) {
     // [exercise-terminator]
-    // Exercise 9.3, the shadow terminator: read ch09-terminator.
+    // Exercise 9.4, the shadow terminator: read ch09-terminator.
     // Blank: return Vec3(0.0);
     Vec3 curved(0.0);
     for (int k = 0; k < 3; ++k) {
