@@ -3,8 +3,8 @@
 // The batch runs in four steps. It finds every Lua file under DIR and sets aside the helpers
 // (modules that never call gr.render). It runs each scene as a child process of this same
 // binary, in the scene's own folder, a few at a time, killing any child that outlives the
-// per-scene time limit. It reads what each child printed on stderr (errors, warnings, the era
-// line and the --stats block, which names every image written) into a SceneResult. And it
+// per-scene time limit. It reads what each child printed on stderr (errors, warnings, and the
+// --stats block, which names the era and every image written) into a SceneResult. And it
 // writes DIR/raybook-report.html, one self-contained page with a card per scene, while the
 // children's full logs stay in DIR/raybook-report/.
 //
@@ -98,7 +98,7 @@ struct SceneResult {
     double renderSeconds = 0;  ///< The sum of --stats' "render X s" over its images.
     unsigned long long rays = 0;        ///< The sum of --stats' "(total N)" over its images.
     bool haveStats = false;             ///< At least one --stats block was printed.
-    std::string era;                    ///< The "rt: era:" line, without its prefix.
+    std::string era;                    ///< The era --stats names ("  era  current ...").
     std::vector<std::string> errors;    ///< "rt: error:" lines, without the prefix.
     std::vector<std::string> warnings;  ///< "rt: warning:" lines, without the prefix.
     std::vector<std::string> other;     ///< Every other stderr line outside the stats.
@@ -311,6 +311,8 @@ std::vector<std::string> readStderr(const std::string& text, SceneResult* result
         } else if (inStats && line.starts_with("  ")) {
             if (line.find("(total ") != std::string::npos)
                 result->rays += std::strtoull(line.c_str() + line.find("(total ") + 7, nullptr, 10);
+            if (afterPrefix(line, "  era", &rest) && result->era.empty())
+                result->era = rest.substr(std::min(rest.size(), rest.find_first_not_of(' ')));
             if (line.starts_with("  time") && numberAfter(line, "render ") >= 0)
                 result->renderSeconds += numberAfter(line, "render ");
         } else {
@@ -319,10 +321,6 @@ std::vector<std::string> readStderr(const std::string& text, SceneResult* result
                 result->errors.push_back(rest);
             else if (afterPrefix(line, "rt: warning: ", &rest))
                 result->warnings.push_back(rest);
-            else if (afterPrefix(line, "rt: era:", &rest))
-                result->era = rest.substr(rest.find_first_not_of(' ') == std::string::npos
-                                              ? rest.size()
-                                              : rest.find_first_not_of(' '));
             else if (!line.empty())
                 result->other.push_back(line);
         }

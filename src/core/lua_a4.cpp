@@ -237,6 +237,7 @@ int nodeScale(lua_State* L) {
                  checkNumber(L, 4, "node:scale", "z"));
     if (s.x == 0.0 || s.y == 0.0 || s.z == 0.0)
         throw InputError("node:scale: scale factors must be non-zero");
+    notePlacement(L, node, 'S', glm::scale(Mat4(1.0), s));
     applyTransform(L, *node, glm::scale(Mat4(1.0), s));
     return 0;
 }
@@ -245,6 +246,7 @@ int nodeTranslate(lua_State* L) {
     auto node = checkSelf(L, "node:translate", 3, "(x, y, z)");
     const Vec3 t(checkNumber(L, 2, "node:translate", "x"), checkNumber(L, 3, "node:translate", "y"),
                  checkNumber(L, 4, "node:translate", "z"));
+    notePlacement(L, node, 'T', glm::translate(Mat4(1.0), t));
     applyTransform(L, *node, glm::translate(Mat4(1.0), t));
     return 0;
 }
@@ -262,6 +264,7 @@ int nodeRotate(lua_State* L) {
         axis.z = 1.0;
     else
         throw InputError("node:rotate: the axis must be 'x', 'y' or 'z', got '" + axisName + "'");
+    notePlacement(L, node, 'R', glm::rotate(Mat4(1.0), glm::radians(degrees), axis));
     applyTransform(L, *node, glm::rotate(Mat4(1.0), glm::radians(degrees), axis));
     return 0;
 }
@@ -431,6 +434,77 @@ void bindA4(LuaBindings& lua) {
     lua.nodeMethod("scale", luaGuard<nodeScale>);
     lua.nodeMethod("translate", luaGuard<nodeTranslate>);
     lua.nodeMethod("rotate", luaGuard<nodeRotate>);
+}
+
+// ---- The era's idiom -----------------------------------------------------------------------
+
+namespace {
+
+/// Add a run of `kind` to `order` (a run of the same kind only grows the run); note where
+/// the second run began. Three runs tell no more than an ambiguous order: stop there.
+void addRun(std::string& order, std::string& where, char kind, lua_State* L) {
+    if (!order.empty() && order.back() == kind) return;
+    if (order.size() >= 3) return;
+    order += kind;
+    if (order.size() == 2) where = luaCaller(L);
+}
+
+}  // namespace
+
+void notePlacement(lua_State* L, const std::shared_ptr<SceneNode>& node, char kind, const Mat4& m) {
+    // A dialect's calls are the TA's, not the student's: they tell nothing of the era.
+    if (calledFromDialect(L)) return;
+    SceneBuilder& builder = sceneBuilder(L);
+    auto [it, added] = builder.placements.try_emplace(node.get());
+    SceneBuilder::Placement& p = it->second;
+    if (!added && p.node.lock() != node) {
+        // A new node at a collected one's address: keep the old one's vote.
+        builder.pastPlacements.push_back(std::move(p));
+        p = SceneBuilder::Placement{};
+        added = true;
+    }
+    if (added) {
+        p.node = node;
+        p.first = builder.placingCalls;
+    }
+    ++builder.placingCalls;
+    if (kind != 'R') addRun(p.translateScale, p.whereTS, kind, L);
+    if (kind != 'T') addRun(p.rotateScale, p.whereRS, kind, L);
+    Mat4& product = kind == 'S' ? p.scale : kind == 'R' ? p.rotation : p.translation;
+    product *= m;
+}
+
+void restartPlacement(lua_State* L, const SceneNode* node) {
+    SceneBuilder& builder = sceneBuilder(L);
+    auto it = builder.placements.find(node);
+    if (it == builder.placements.end()) return;
+    builder.pastPlacements.push_back(std::move(it->second));
+    builder.placements.erase(it);
+}
+
+EraIdiom placementIdiom(const SceneBuilder& builder) {
+    std::vector<const SceneBuilder::Placement*> all;
+    for (const auto& p : builder.pastPlacements) all.push_back(&p);
+    for (const auto& [node, p] : builder.placements) all.push_back(&p);
+    // In the order the nodes were first placed, so the first place named is the script's first.
+    std::sort(all.begin(), all.end(), [](auto* a, auto* b) { return a->first < b->first; });
+    EraIdiom idiom;
+    const auto vote = [&](bool legacy, const std::string& where) {
+        if ((legacy ? idiom.legacyVotes : idiom.modernVotes)++ == 0)
+            (legacy ? idiom.firstLegacy : idiom.firstModern) = where;
+    };
+    for (const SceneBuilder::Placement* p : all) {
+        const std::string& rs = p->rotateScale;
+        const std::string& ts = p->translateScale;
+        if (!nearlyEqual(p->rotation * p->scale, p->scale * p->rotation)) {
+            // A non-uniform scale and a rotation: which came first decides, if one did.
+            if (rs == "RS" || rs == "SR") vote(rs == "RS", p->whereRS);
+        } else if ((ts == "TS" || ts == "ST") &&
+                   !nearlyEqual(p->translation * p->scale, p->scale * p->translation)) {
+            vote(ts == "TS", p->whereTS);
+        }
+    }
+    return idiom;
 }
 
 }  // namespace rb

@@ -733,7 +733,8 @@ std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& f
     runScene(path, features, options.era == EraChoice::Legacy, *builder);
     // What the scene used decides its era; a pre-2015 scene runs again with its transforms
     // post-multiplied (scripts are cheap).
-    const EraDecision era = decideEra(options.era, builder->eraSigns, builder->orderMatters);
+    const EraDecision era =
+        decideEra(options.era, builder->eraSigns, builder->orderMatters, placementIdiom(*builder));
     if ((era.era == Era::Legacy) != builder->legacy) {
         builder = std::make_unique<SceneBuilder>();
         builder->options = options;

@@ -86,6 +86,18 @@ struct SceneBuilder {
     bool legacy = false;  ///< This run's era: transforms post-multiply (pre-2015 framework).
     std::vector<EraSign> eraSigns;  ///< What the scene used that belongs to one era.
     std::string orderMatters;       ///< Where a transform first did not commute with the node's.
+    /// A node's translations and scales so far, for the era's idiom (see EraIdiom).
+    struct Placement {
+        std::weak_ptr<const SceneNode> node;  ///< Which node: an address may be reused.
+        /// Runs of translates and scales ("TS", "STS"), and of rotations and scales ("SR").
+        std::string translateScale, rotateScale;
+        Mat4 translation{1.0}, scale{1.0}, rotation{1.0};  ///< The products of each kind.
+        std::string whereTS, whereRS;  ///< The calls that began each string's second run.
+        long first = 0;                ///< When the node was first placed.
+    };
+    std::map<const SceneNode*, Placement> placements;
+    std::vector<Placement> pastPlacements;  ///< Of nodes whose placement restarted.
+    long placingCalls = 0;
     /// Warnings by kind: the first message (with its line) and how often the kind occurred.
     std::vector<std::pair<std::string, std::string>> warningKinds;
     std::map<std::string, int> warningCounts;
@@ -156,6 +168,18 @@ std::string luaCaller(lua_State* L);
 void sceneWarning(lua_State* L, const std::string& kind, const std::string& message);
 /// True when the running C function was called from a --dialect file, not the scene.
 bool calledFromDialect(lua_State* L);
+/// Record a translate ('T'), scale ('S') or rotate ('R') of `node` by `m`, for the era's idiom.
+void notePlacement(lua_State* L, const std::shared_ptr<SceneNode>& node, char kind, const Mat4& m);
+
+/// Start `node`'s placement afresh: node:csg made its transforms so far an operand's.
+void restartPlacement(lua_State* L, const SceneNode* node);
+
+/// The nodes' votes for an era's idiom. A node whose scale does not commute with its rotation
+/// votes by which it wrote first: rotate, then scale is pre-2015 (post-multiplied, the scale
+/// acts first), scale, then rotate current. Otherwise a node written translate, then scale
+/// (pre-2015) or scale, then translate (current), with no further run, votes by that.
+EraIdiom placementIdiom(const SceneBuilder& builder);
+
 /// Record that the scene used `what`, a sign of `era` (the first use of each is kept).
 void noteEraSign(lua_State* L, Era era, const std::string& what);
 /// Throw unless the call received at least min arguments. More than max is what the course

@@ -126,9 +126,9 @@ int run(int argc, char** argv) {
     SceneLoadReport load;
     std::vector<LoadedRender> renders = loadScene(cl.scene, features, loadOptions, &load);
     const SceneLoadTimes& loadTimes = load.times;
-    // The era, when it matters, and what the scene did that the course framework would
-    // have let pass.
-    if (!load.era.line.empty()) std::fprintf(stderr, "rt: era: %s\n", load.era.line.c_str());
+    // The era, when the scene renders pre-2015 or the order was guessed and matters (--stats
+    // always names it), and what the scene did that the course framework would have let pass.
+    if (load.era.show && !cl.quiet) std::fprintf(stderr, "rt: era: %s\n", load.era.line.c_str());
     for (const std::string& warning : load.warnings)
         std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());
 
@@ -262,12 +262,14 @@ int run(int argc, char** argv) {
                                  static_cast<unsigned long long>(counters.count[i]));
             std::fprintf(stderr, " (total %llu)\n",
                          static_cast<unsigned long long>(counters.total()));
-            if (k == 0)
+            if (k == 0) {
+                std::fprintf(stderr, "  era        %s\n", load.era.line.c_str());
                 std::fprintf(
                     stderr,
                     "  time       threads %.3f s, lua %.3f s, load %.3f s, mesh bvh %.3f s\n",
                     threadSeconds, loadTimes.total - loadTimes.meshLoad - loadTimes.meshBvh,
                     loadTimes.meshLoad, loadTimes.meshBvh);
+            }
             std::fprintf(stderr, "  time       build %.3f s, render %.4f s, write %.3f s\n",
                          buildSeconds, renderSeconds, writeSeconds);
             if (pipeline.postProcess)

@@ -25,16 +25,26 @@ struct EraSign {
     std::string where;  ///< "scene.lua:12".
 };
 
-/// The era a scene is rendered in, and the one line that says why ("" when nothing to say).
-struct EraDecision {
-    Era era = Era::Modern;
-    std::string line;
+/// How the scene places scaled objects, when it has no sign: on one node, a translate written
+/// before a scale it does not commute with is the pre-2015 idiom (post-multiplied, the scale
+/// acts first); a scale written before a translate is the current one. One vote per node.
+struct EraIdiom {
+    int legacyVotes = 0, modernVotes = 0;
+    std::string firstLegacy, firstModern;  ///< Where each idiom was first seen ("scene.lua:7").
 };
 
-/// Decide the era: forced, else the only era with signs, else modern (saying so when the signs
-/// conflict, or when there are none and `orderMatters` names the first transform whose order
-/// changes the picture).
+/// The era a scene is rendered in, and the line that says why.
+struct EraDecision {
+    Era era = Era::Modern;
+    std::string line;   ///< What was decided and why; never empty (--stats shows it).
+    bool show = false;  ///< Worth a line on stderr: pre-2015, or a guess whose order matters.
+};
+
+/// Decide the era: forced, else the only era with signs, else, with no sign at all, the
+/// transform idiom when only one era's is seen, else current. `show` is set when the scene
+/// renders pre-2015, or when the order was guessed (conflicting signs, or none and no idiom)
+/// and `orderMatters` names the first transform whose order changes the picture.
 EraDecision decideEra(EraChoice choice, const std::vector<EraSign>& signs,
-                      const std::string& orderMatters);
+                      const std::string& orderMatters, const EraIdiom& idiom = {});
 
 }  // namespace rb

@@ -65,6 +65,8 @@ int nodeCsg(lua_State* L) {
     self->shape.reset();
     self->transform = Mat4(1.0);
     self->shapeTransform = Mat4(1.0);
+    // Its transforms so far place operand A, not the result: the era's idiom starts afresh.
+    restartPlacement(L, self.get());
     self->compound = result->compound;
     self->children = std::move(result->children);
     return 0;

@@ -14,9 +14,8 @@
 #   -- rt-same-as: FILE.lua   the image must be byte-identical to that of FILE.lua, a path
 #                             relative to the scene's folder (../a4/simple.lua names a scene in
 #                             another folder); default for --legacy scenes: equivalent.lua
-#   -- rt-era: legacy|modern  the era rt decides (its one "rt: era:" line on stderr, printed
-#                             even with --quiet) must be this one: "pre-2015" for legacy,
-#                             "current framework" for modern
+#   -- rt-era: legacy|modern  the era rt decides (the "era" line of its --stats block) must
+#                             be this one: "pre-2015" for legacy, "current framework" for modern
 #   -- rt-not-black: X0 Y0 X1 Y1
 #                             the first image must have a non-black pixel in this region
 #                             (fractions of the width and height from the top left)
@@ -176,9 +175,9 @@ render_scene() {
         [ -z "$pattern" ] && continue
         grep -Eq -- "$pattern" "$OUT/$rel.log" || problems+=" --stats shows no match for '$pattern' (rt-stats);"
     done < <(header "$scene" rt-stats)
-    # The era rt decided, from its one "rt: era:" line.
+    # The era rt decided, from the era line of its --stats block.
     local era want
-    era=$(grep -m 1 '^rt: era:' "$OUT/$rel.log")
+    era=$(grep -m 1 '^  era ' "$OUT/$rel.log")
     while IFS= read -r want; do
         [ -z "$want" ] && continue
         case "$want" in
