@@ -7,8 +7,9 @@
 -- What differs from the legacy files:
 --  * transforms are listed in the order they apply (the legacy files list them in reverse);
 --  * table.unpack instead of unpack;
---  * the house comes from scenes/assets/house.obj (1-based) instead of Lua tables (0-based)
---    or readobj.lua.
+--  * the house comes from house.obj beside this file (1-based; the same polygons as
+--    ../assets/house.obj) instead of Lua tables (0-based) or readobj.lua, so a copy of this
+--    folder renders on its own.
 -- Every node has at most two non-translation transforms, followed by at most one translation,
 -- so the matrix products are exactly the same in either order of multiplication.
 --
@@ -35,7 +36,7 @@ pond:set_material(water)
 root:add_child(pond)
 
 -- The house mesh, painted as a whole.
-house = gr.mesh('house', '../assets/house.obj')
+house = gr.mesh('house', 'house.obj')
 house:set_material(wall)
 
 -- Three houses along a lane.
