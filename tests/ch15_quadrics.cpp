@@ -84,6 +84,70 @@ rb::Mat4 randomTransform(rbtest::Rng& rng) {
 
 }  // namespace
 
+// [ch15-side-spans]
+SCENARIO("the cylinder's side quadratic gives where a line is inside the infinite tube",
+         "[ch15][ex15.1]") {
+    GIVEN("the line (−5, 0.3, 0.2) + t·(2, 0.1, 0)") {
+        const rb::SideSpans spans = rb::cylinderSideSpans(Ray{Vec3(-5, 0.3, 0.2), Vec3(2, 0.1, 0)});
+        THEN("it is inside for t in [(5 − √0.96)/2, (5 + √0.96)/2]") {
+            // Source: x² + z² = 1 with z = 0.2 gives x = ±√0.96, and x = −5 + 2t.
+            const double x = std::sqrt(0.96);
+            INFO("expected one span [" << (5 - x) / 2 << ", " << (5 + x) / 2 << "], got "
+                                       << spans.count << " spans");
+            REQUIRE(spans.count == 1);
+            CHECK(spans.lo[0] == Approx((5 - x) / 2).epsilon(1e-14));
+            CHECK(spans.hi[0] == Approx((5 + x) / 2).epsilon(1e-14));
+        }
+    }
+    GIVEN("lines parallel to the axis inside and outside the tube, and a line passing by") {
+        const rb::SideSpans in = rb::cylinderSideSpans(Ray{Vec3(0.5, 0, 0), Vec3(0, 1, 0)});
+        const rb::SideSpans out = rb::cylinderSideSpans(Ray{Vec3(2, 0, 0), Vec3(0, 1, 0)});
+        const rb::SideSpans by = rb::cylinderSideSpans(Ray{Vec3(-5, 0, 2), Vec3(1, 0, 0)});
+        THEN("the inside one is inside along the whole line, the others never") {
+            REQUIRE(in.count == 1);
+            CHECK(in.lo[0] == -std::numeric_limits<double>::infinity());
+            CHECK(in.hi[0] == std::numeric_limits<double>::infinity());
+            CHECK(out.count == 0);
+            CHECK(by.count == 0);
+        }
+    }
+}
+
+SCENARIO("the cone's quadratic gives where a line is inside the double cone", "[ch15][ex15.2]") {
+    GIVEN("the cone of radius 1 at y = −1 and its apex at y = 1: r(y) = 0.5 − 0.5·y") {
+        const rb::ConeProfile apex(0.0);
+        WHEN("a line crosses it level at y = 0, (−5, 0, 0) + t·(1, 0, 0)") {
+            const rb::SideSpans spans = rb::coneSideSpans(Ray{Vec3(-5, 0, 0), Vec3(1, 0, 0)}, apex);
+            THEN("it is inside for t in [4.5, 5.5], where the radius is 0.5") {
+                // Source: x² ≤ r(0)² = 0.25 and x = −5 + t.
+                INFO("expected one span [4.5, 5.5], got " << spans.count << " spans");
+                REQUIRE(spans.count == 1);
+                CHECK(spans.lo[0] == Approx(4.5).epsilon(1e-14));
+                CHECK(spans.hi[0] == Approx(5.5).epsilon(1e-14));
+            }
+        }
+        WHEN("a line parallel to the axis, 0.2 off it, runs up through both nappes") {
+            const rb::SideSpans spans =
+                rb::coneSideSpans(Ray{Vec3(0.2, -3, 0), Vec3(0, 1, 0)}, apex);
+            THEN("it is inside up to t = 3.6 (y = 0.6) and again from t = 4.4 (y = 1.4)") {
+                // Source: 0.2² = (0.5 − 0.5·(−3 + t))² gives 2 − 0.5·t = ±0.2.
+                INFO("expected the spans (−∞, 3.6] and [4.4, ∞), got " << spans.count << " spans");
+                REQUIRE(spans.count == 2);
+                CHECK(spans.lo[0] == -std::numeric_limits<double>::infinity());
+                CHECK(spans.hi[0] == Approx(3.6).epsilon(1e-14));
+                CHECK(spans.lo[1] == Approx(4.4).epsilon(1e-14));
+                CHECK(spans.hi[1] == std::numeric_limits<double>::infinity());
+            }
+        }
+        WHEN("a level line passes beside it, (−5, 0, 2) + t·(1, 0, 0)") {
+            THEN("it is never inside") {
+                CHECK(rb::coneSideSpans(Ray{Vec3(-5, 0, 2), Vec3(1, 0, 0)}, apex).count == 0);
+            }
+        }
+    }
+}
+// [ch15-side-spans]
+
 // [cylinder-closed-form]
 SCENARIO("a ray meets the cylinder's side and caps where the closed form puts them",
          "[ch15][ex15.1][ex15.3]") {
@@ -142,7 +206,7 @@ SCENARIO("a ray meets the cylinder's side and caps where the closed form puts th
 
 // [cone-closed-form]
 SCENARIO("a ray meets the cone and the frustum where the closed form puts them",
-         "[ch15][ex15.2][ex15.4]") {
+         "[ch15][ex15.2][ex15.3][ex15.4]") {
     GIVEN("the capped unit cone: radius 1 at y = −1, apex at y = 1, so r(y) = (1 − y)/2") {
         const Cone cone;
         WHEN("a ray from (5, y₀, 0) travels along −x, for several heights y₀") {
@@ -195,7 +259,7 @@ SCENARIO("a ray meets the cone and the frustum where the closed form puts them",
 // [cone-closed-form]
 
 SCENARIO("on random rays every hit lies on the surface with the gradient as its normal",
-         "[ch15][ex15.1][ex15.2][ex15.4]") {
+         "[ch15][ex15.1][ex15.2][ex15.3][ex15.4]") {
     rbtest::Rng rng(seed());
     const Cylinder cylinder, tube(false);
     const Cone cone, openCone(0.0, false), frustum(0.35), openFrustum(0.35, false);
@@ -240,7 +304,7 @@ SCENARIO("on random rays every hit lies on the surface with the gradient as its 
 }
 
 SCENARIO("a solid's crossings are an entry with the normal against the ray and an exit with it",
-         "[ch15][ex15.1][ex15.2][ex15.4]") {
+         "[ch15][ex15.1][ex15.2][ex15.3][ex15.4]") {
     rbtest::Rng rng(seed() + 1);
     const Cylinder cylinder;
     const Cone frustum(0.5);
@@ -267,7 +331,8 @@ SCENARIO("a solid's crossings are an entry with the normal against the ray and a
 }
 
 // [seam-watertight]
-SCENARIO("no ray slips between a cap and the side", "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
+SCENARIO("no ray slips between a cap and the side",
+         "[ch15][stability][ex15.1][ex15.2][ex15.3][ex15.4]") {
     rbtest::Rng rng(seed() + 2);
     const Cylinder cylinder;
     const Cone frustum(0.6);
@@ -314,7 +379,7 @@ SCENARIO("no ray slips between a cap and the side", "[ch15][stability][ex15.1][e
 
 // [apex]
 SCENARIO("the cone's apex gives a hit with a finite unit normal, never NaN",
-         "[ch15][stability][ex15.2][ex15.4]") {
+         "[ch15][stability][ex15.2][ex15.3][ex15.4]") {
     rbtest::Rng rng(seed() + 3);
     const Cone cone, openCone(0.0, false);
     GIVEN("rays aimed exactly at the apex (0, 1, 0) from every direction") {
@@ -360,7 +425,7 @@ SCENARIO("the cone's apex gives a hit with a finite unit normal, never NaN",
 // [apex]
 
 SCENARIO("rays along the axis meet the caps, and miss an open tube",
-         "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
+         "[ch15][stability][ex15.1][ex15.2][ex15.3][ex15.4]") {
     const Cylinder cylinder, tube(false);
     const Cone cone, openCone(0.0, false), frustum(0.5, true);
     WHEN("a ray runs down the axis from above") {
@@ -394,7 +459,7 @@ SCENARIO("rays along the axis meet the caps, and miss an open tube",
 }
 
 SCENARIO("grazing rays and rays parallel to the cone's slope give exact or no hits",
-         "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
+         "[ch15][stability][ex15.1][ex15.2][ex15.3][ex15.4]") {
     const Cylinder cylinder, tube(false);
     const Cone cone;
     WHEN("a ray runs parallel to a line on the cone (A = 0: the quadratic is linear)") {
@@ -445,7 +510,7 @@ SCENARIO("grazing rays and rays parallel to the cone's slope give exact or no hi
 }
 
 SCENARIO("rays from far away find the surface to the accuracy of their origin",
-         "[ch15][stability][ex15.1][ex15.2][ex15.4]") {
+         "[ch15][stability][ex15.1][ex15.2][ex15.3][ex15.4]") {
     // The cancellation-free discriminant keeps the hit on the surface when |o| is large: the
     // textbook h² − a·c would lose about |o|²·ε = 1e-4 at |o| = 1e6 before the square root.
     const Cylinder cylinder;
