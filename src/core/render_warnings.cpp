@@ -1,6 +1,7 @@
 #include "core/render_warnings.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <string>
 
@@ -32,6 +33,30 @@ std::string whyAbsent(const FeatureSet& features, const char* feature, int chapt
                     [&](const Feature& f) { return std::string(feature) == f.name; });
     if (built) return "--features switched it off";
     return "this build does not have it; " + chapterAdvice(chapter);
+}
+
+/// Whether `node` leaves anything solid to draw: a shape, a group with such a child, or a
+/// compound (CSG) node whose own rule keeps some of its children; each compound node that
+/// keeps nothing adds a warning. Memoised, since the graph may share subgraphs.
+bool leavesShapes(const SceneNode& node, const FeatureSet& features, const std::string& where,
+                  std::map<const SceneNode*, bool>& done, std::vector<std::string>& warnings) {
+    if (auto it = done.find(&node); it != done.end()) return it->second;
+    done[&node] = false;  // the graph is acyclic; this only guards the recursion
+    std::vector<bool> childHasShapes;
+    for (const auto& child : node.children)
+        childHasShapes.push_back(leavesShapes(*child, features, where, done, warnings));
+    bool result = node.shape != nullptr;
+    if (node.compound && features.enabled(node.compound->feature())) {
+        const std::string why = node.compound->whyEmpty(childHasShapes);
+        if (!why.empty())
+            warnings.push_back(where + ": the CSG node '" + node.name + "' is empty, so it " +
+                               "draws nothing: " + why + " (did you add_child to its operands?)");
+        result = result || why.empty();
+    } else {
+        result = result || std::find(childHasShapes.begin(), childHasShapes.end(), true) !=
+                               childHasShapes.end();
+    }
+    return done[&node] = result;
 }
 
 }  // namespace
@@ -114,6 +139,9 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
                 offFeatures.insert(node->compound->feature());
             for (const auto& child : node->children) stack.push_back(child.get());
         }
+        // Compound nodes that are surely empty (a difference of empty groups).
+        std::map<const SceneNode*, bool> done;
+        leavesShapes(*job.root, features, job.where, done, warnings);
         if (offFeatures.count("csg"))
             warnings.push_back(job.where + ": the scene's CSG nodes (gr.union, gr.intersection, " +
                                "gr.difference, node:csg) are drawn as plain groups of their " +

@@ -25,6 +25,12 @@ class CompoundShape {
         const std::vector<std::vector<Instance>>& operands) const = 0;
     /// The feature that provides it: when that feature is off, the node is a plain group.
     virtual const char* feature() const = 0;
+    /// Why the shape is surely empty, given which children have shapes under them ("" when it
+    /// need not be): a render warning, since an empty solid draws nothing without an error.
+    virtual std::string whyEmpty(const std::vector<bool>& childHasShapes) const {
+        (void)childHasShapes;
+        return "";
+    }
 };
 
 /// A node of the scene graph. A group (gr.node, gr.joint) only transforms its children; a

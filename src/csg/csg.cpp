@@ -357,4 +357,16 @@ std::shared_ptr<const Shape> CsgCompound::build(
                                             std::move(owned));
 }
 
+std::string CsgCompound::whyEmpty(const std::vector<bool>& childHasShapes) const {
+    const bool a = childHasShapes.size() > 0 && childHasShapes[0];
+    const bool b = childHasShapes.size() > 1 && childHasShapes[1];
+    // A ∪ B needs one solid, A ∩ B both, A − B its first.
+    if (!a && !b) return "neither operand has a shape under it";
+    if (op_ == CsgOp::Intersection && !a) return "its first operand has no shape under it";
+    if (op_ == CsgOp::Intersection && !b) return "its second operand has no shape under it";
+    if (op_ == CsgOp::Difference && !a)
+        return "its first operand, the solid subtracted from, has no shape under it";
+    return "";
+}
+
 }  // namespace rb

@@ -92,6 +92,7 @@ class CsgCompound final : public CompoundShape {
     std::shared_ptr<const Shape> build(
         const std::vector<std::vector<Instance>>& operands) const override;
     const char* feature() const override { return "csg"; }
+    std::string whyEmpty(const std::vector<bool>& childHasShapes) const override;
 
   private:
     CsgOp op_;
