@@ -335,6 +335,55 @@ SCENARIO("a glass ball focuses parallel light n R / (2 (n - 1)) behind its centr
 }
 // [ball-focus]
 
+// [caustic-flux]
+SCENARIO("a half-silvered ceiling's caustic is half the light of the lamp's mirror image",
+         "[ch16]") {
+    GIVEN(
+        "a lamp of intensity 1 at y = 1 between a grey floor (y = 0) and a ceiling mirror "
+        "(y = 2) of reflectivity 0.5, and a full mirror hidden under the floor") {
+        // Two targets of different specular shares (0.5 and 1): caustic photons are aimed at
+        // them in proportion to Ω·s, and carry s through the bounce; the hidden mirror takes
+        // its share of the photons and sends none to the floor's top.
+        const std::string scene = std::string(kBoxes) + R"(
+local grey = gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 1)
+box('floor', grey, -20, -1, -20, 20, 0, 20)
+box('ceiling', gr.material{kd = {0, 0, 0}, ks = {0, 0, 0}, shininess = 1, reflect = 0.5},
+    -20, 2, -20, 20, 2.1, 20)
+box('hidden', gr.material{kd = {0, 0, 0}, ks = {0, 0, 0}, shininess = 1, reflect = 1},
+    -1, -3, -1, 1, -2, 1)
+gr.render(root, 'x.png', 16, 16, {0, 1, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0, 0, 0},
+          {gr.light({0, 1, 0}, {1, 1, 1}, {0, 0, 1})})
+)";
+        const double r = 0.5;
+        const std::vector<rb::Photon> photons = causticPhotons(scene, 1u << 21);
+        WHEN("the caustic photons within r = 0.5 of the lamp's foot are gathered") {
+            const rb::PhotonGrid grid(photons, r);
+            const double e =
+                rb::irradianceEstimate(grid.gatherFlux(Vec3(0.0), Vec3(0, 1, 0), r), r).g;
+            int inside = 0;
+            for (const rb::Photon& p : photons)
+                inside += std::hypot(p.position[0], p.position[2]) < r && p.position[1] < 0.01;
+            THEN("the estimate matches 0.5 times the image lamp's disk mean, by a z-test at 1%") {
+                // Source: a plane mirror makes an image of the lamp mirrored in it, at height
+                // h' = 2·2 − 1 = 3 over the floor, whose light on the floor is
+                // E = h'/(h'² + ρ²)^(3/2), times the reflectivity 0.5. Its mean over a disk
+                // of radius r is 2(1 − h'/√(h'² + r²))/r² (the integral of E·2πρ dρ over
+                // πr²). Every stored photon carries the same flux, so the count in the disk
+                // is binomial: relative standard error 1/√count.
+                const double h = 3.0;
+                const double expected = 0.5 * 2.0 * (1.0 - h / std::sqrt(h * h + r * r)) / (r * r);
+                const double z =
+                    (e - expected) / (expected / std::sqrt(static_cast<double>(inside)));
+                INFO("estimate " << e << ", expected " << expected << ", " << inside
+                                 << " photons in the disk, z = " << z);
+                CHECK(inside > 5000);
+                CHECK(std::abs(z) < rbtest::zCritical(0.01));
+            }
+        }
+    }
+}
+// [caustic-flux]
+
 // [nephroid]
 SCENARIO("light inside a mirror ring draws a nephroid with its cusp at R / 2", "[ch16]") {
     GIVEN(

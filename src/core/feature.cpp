@@ -132,6 +132,7 @@ constexpr LaterCall kLaterCalls[] = {
     {"cyllinder", 15, "quadrics"},
     {"photon_map", 16, "photon_map"},
     {"photons", 16, "photon_map"},
+    {"caustics", 16, "photon_map"},
     {"media", 17, "media"},
 };
 }  // namespace

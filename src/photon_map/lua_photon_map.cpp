@@ -95,6 +95,7 @@ int grPhotons(lua_State* L) {
 
 void bindPhotonMap(LuaBindings& lua) {
     lua.function("photons", luaGuard<grPhotons>);
+    lua.materialField("caustics", 16);
     lua.option("photons", 16, 0, 1, true);
     lua.option("photon_count", 16, 1, 1e12, true);
     lua.option("photon_passes", 16, 1, 100000, true);

@@ -25,7 +25,20 @@ PhotonScattering PhotonScattering::of(const Pipeline& pipeline) {
 }
 
 bool PhotonScattering::specular(const Material& m) const {
-    return (mirrors && m.param("reflect") > 0.0) || (refraction && m.param("transparency") > 0.0);
+    return specularShare(m) > 0.0;
+}
+
+double PhotonScattering::causticShare(const Material& m) const {
+    return m.param("caustics", 1.0) != 0.0 ? specularShare(m) : 0.0;
+}
+
+double PhotonScattering::specularShare(const Material& m) const {
+    // The shares tracePhoton's Russian roulette uses: glass takes τ; of the opaque rest, a
+    // mirror takes reflect / max(1, reflect + mean(kd)).
+    const double transparency = refraction ? std::clamp(m.param("transparency"), 0.0, 1.0) : 0.0;
+    const double mirror = mirrors ? std::max(0.0, m.param("reflect")) : 0.0;
+    const double scatter = std::clamp((m.kd.r + m.kd.g + m.kd.b) / 3.0, 0.0, 1.0);
+    return transparency + (1.0 - transparency) * mirror / std::max(1.0, mirror + scatter);
 }
 
 namespace {
@@ -67,25 +80,77 @@ std::vector<Emitter> emittersOf(const Scene& scene) {
 }
 // [emitters]
 
-/// A sphere around a specular object, for aiming caustic photons (Jensen's projection map).
+/// A sphere around specular objects, for aiming caustic photons (Jensen's projection map),
+/// and the share of the photons that reach them that go on specularly.
 struct Target {
     Vec3 centre{0.0};
     double radius = 0.0;
+    double share = 0.0;
 };
 
-/// Bounding spheres of the instances that send photons on specularly.
+/// Specular instances: their world bounds and the largest specular share of their materials.
+struct SpecularPart {
+    AABB bounds;
+    double share = 0.0;
+};
+
+/// The bounding sphere of parts [first, last).
+Target boundingTarget(const std::vector<SpecularPart>& parts, std::size_t first, std::size_t last) {
+    AABB box;
+    for (std::size_t p = first; p < last; ++p) box.extend(parts[p].bounds);
+    return {0.5 * (box.lo + box.hi), 0.5 * glm::length(box.hi - box.lo), parts[first].share};
+}
+
+/// At most this many targets for the parts of one specular share: a floor of 600 polished
+/// tiles is aimed at as 8 patches, not 600 cones (each photon tests every cone).
+constexpr std::size_t kTargetsPerShare = 8;
+
+/// Split parts [first, last), all of one share, at the median of their centres along the
+/// widest axis, until `leaves` groups remain; each group becomes one target.
+void clusterTargets(std::vector<SpecularPart>& parts, std::size_t first, std::size_t last,
+                    std::size_t leaves, std::vector<Target>& out) {
+    if (leaves <= 1 || last - first <= 1) {
+        out.push_back(boundingTarget(parts, first, last));
+        return;
+    }
+    AABB centres;
+    for (std::size_t p = first; p < last; ++p) centres.extend(parts[p].bounds.centre());
+    const Vec3 extent = centres.hi - centres.lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                     : extent.y >= extent.z                       ? 1
+                                                                  : 2;
+    const std::size_t middle = first + (last - first) / 2;
+    std::nth_element(parts.begin() + first, parts.begin() + middle, parts.begin() + last,
+                     [axis](const SpecularPart& a, const SpecularPart& b) {
+                         return a.bounds.centre()[axis] < b.bounds.centre()[axis];
+                     });
+    clusterTargets(parts, first, middle, leaves / 2, out);
+    clusterTargets(parts, middle, last, leaves - leaves / 2, out);
+}
+
+/// The targets of caustic photons: the specular instances, grouped by specular share, each
+/// share's instances in at most kTargetsPerShare bounding spheres.
 std::vector<Target> specularTargets(const Scene& scene, const PhotonScattering& scattering) {
-    std::vector<Target> targets;
-    std::vector<const Material*> parts;
+    std::vector<SpecularPart> parts;
+    std::vector<const Material*> materials;
     for (const Instance& i : scene.instances) {
-        parts.assign(1, i.material);
-        i.shape->materials(parts);
-        const bool specular = std::any_of(parts.begin(), parts.end(), [&](const Material* m) {
-            return m && scattering.specular(*m);
-        });
-        if (!specular) continue;
-        const Vec3 lo = i.worldBounds.lo, hi = i.worldBounds.hi;
-        targets.push_back({0.5 * (lo + hi), 0.5 * glm::length(hi - lo)});
+        materials.assign(1, i.material);
+        i.shape->materials(materials);
+        double share = 0.0;
+        for (const Material* m : materials)
+            if (m) share = std::max(share, scattering.causticShare(*m));
+        if (share > 0.0) parts.push_back({i.worldBounds, share});
+    }
+    // In scene order within a share, so the targets are the same on every run.
+    std::stable_sort(parts.begin(), parts.end(), [](const SpecularPart& a, const SpecularPart& b) {
+        return a.share > b.share;
+    });
+    std::vector<Target> targets;
+    for (std::size_t first = 0; first < parts.size();) {
+        std::size_t last = first;
+        while (last < parts.size() && parts[last].share == parts[first].share) ++last;
+        clusterTargets(parts, first, last, kTargetsPerShare, targets);
+        first = last;
     }
     return targets;
 }
@@ -140,32 +205,36 @@ bool emitPhoton(const EmissionPlan& plan, PhotonPaths paths, std::uint64_t index
     Vec3 direction;
     double pdf = 0.0;
     if (paths == PhotonPaths::Caustic) {
-        // Jensen's projection map: towards the specular objects only, a cone to each.
-        std::vector<double> cosMax(plan.targets.size());
+        // Jensen's projection map: towards the specular objects only, a cone to each, chosen
+        // in proportion to its solid angle Ω times its specular share s (the photons that
+        // reach a faint mirror mostly end there; they get fewer of the budget).
+        std::vector<double> cosMax(plan.targets.size()), weight(plan.targets.size());
         double total = 0.0;
         for (std::size_t t = 0; t < plan.targets.size(); ++t) {
             const double d = glm::length(plan.targets[t].centre - origin);
             const double sinMax = d > plan.targets[t].radius ? plan.targets[t].radius / d : 1.0;
             cosMax[t] = d > plan.targets[t].radius ? std::sqrt(1.0 - sinMax * sinMax) : -1.0;
-            total += coneSolidAngle(cosMax[t]);
+            weight[t] = coneSolidAngle(cosMax[t]) * plan.targets[t].share;
+            total += weight[t];
         }
         double pick = sampler.next1D() * total;
         std::size_t t = 0;
-        while (t + 1 < plan.targets.size() && pick >= coneSolidAngle(cosMax[t]))
-            pick -= coneSolidAngle(cosMax[t++]);
+        while (t + 1 < plan.targets.size() && pick >= weight[t]) pick -= weight[t++];
         const Vec3 towards = plan.targets[t].centre - origin;
         const Vec3 axis =
             glm::dot(towards, towards) > 0.0 ? glm::normalize(towards) : Vec3(0.0, 0.0, 1.0);
         direction = sampleUniformCone(axis, cosMax[t], uDir.x, uDir.y);
-        // The mixture's density: every cone that holds the direction contributes.
-        int holding = 0;
+        // The mixture's density: Σ over the cones that hold the direction of (w_k / W)(1/Ω_k)
+        // = Σ s_k / W.
+        double holding = 0.0;
         for (std::size_t k = 0; k < plan.targets.size(); ++k) {
             const Vec3 to = plan.targets[k].centre - origin;
             const double len = glm::length(to);
-            if (cosMax[k] <= -1.0 || (len > 0.0 && glm::dot(direction, to) / len >= cosMax[k]))
-                ++holding;
+            if (k == t || cosMax[k] <= -1.0 ||
+                (len > 0.0 && glm::dot(direction, to) / len >= cosMax[k]))
+                holding += plan.targets[k].share;
         }
-        pdf = std::max(1, holding) / total;
+        pdf = holding / total;
     } else if (e.rectangle || e.ball) {
         direction = sampleCosineHemisphere(normal, uDir.x, uDir.y);
         pdf = cosineHemispherePdf(glm::dot(direction, normal));
@@ -245,13 +314,28 @@ void tracePhoton(const Scene& scene, const PhotonScattering& s, PhotonPaths path
             out.push_back(p);
             if (paths == PhotonPaths::Direct || ++stored == kMaxStoredPerPhoton) return;
         }
-        // Step 2: Russian roulette picks what happens next, in the shares the shading uses:
-        // the transparent part τ is glass (chapter 5); the opaque part reflects `reflect`
-        // (chapter 4) and scatters kd diffusely (chapter 2).
+        // Step 2: what happens next, in the shares the shading uses: the transparent part τ
+        // is glass (chapter 5); the opaque part reflects `reflect` (chapter 4) and scatters
+        // kd diffusely (chapter 2). Shares that add up past 1 (a bright mirror that is also
+        // white) are scaled down together.
         const Vec3 incident = faceForward(hit.ng, -d);
+        const double mirror = s.mirrors ? m.param("reflect") : 0.0;
+        const double scatter = std::clamp(mean(m.kd), 0.0, 1.0);
+        const double scale = std::max(1.0, mirror + scatter);
+        double u = sampler.next1D();
+        if (paths == PhotonPaths::Caustic) {
+            // A caustic path ends at its first diffuse bounce, so it always goes on
+            // specularly, its flux scaled by the specular share s (not Russian roulette, which
+            // would end it with probability 1 − s): with emission in proportion to s too,
+            // every stored caustic photon carries the same flux.
+            const double share = s.causticShare(m);
+            if (!(share > 0.0)) return;
+            flux *= share;
+            u *= share;
+        }
         Vec3 direction;
         Vec3 side = incident;
-        if (sampler.next1D() < transparency) {
+        if (u < transparency) {
             const DielectricSplit split =
                 splitAtDielectric(d, hit, m.param("ior", 1.0), media, s.refraction->formulaFor(m));
             if (split.F >= 1.0 || sampler.next1D() < split.F) {
@@ -264,25 +348,21 @@ void tracePhoton(const Scene& scene, const PhotonScattering& s, PhotonPaths path
             if (!spread(s, m, side, sampler, direction)) return;
             specular = true;
         } else {
-            const double mirror = s.mirrors ? m.param("reflect") : 0.0;
-            const double scatter = std::clamp(mean(m.kd), 0.0, 1.0);
-            // Shares that add up past 1 (a bright mirror that is also white) are scaled down
-            // together; the flux is scaled up to match.
-            const double scale = std::max(1.0, mirror + scatter);
-            const double u = sampler.next1D() * scale;
-            if (u < mirror) {
+            // The opaque part: u, rescaled to [0, scale), picks mirror, diffuse or absorbed.
+            const double v = (u - transparency) / (1.0 - transparency) * scale;
+            if (v < mirror) {
                 direction = glm::normalize(reflect(d, faceForward(hit.ns, -d)));
                 if (!spread(s, m, side, sampler, direction)) return;
                 flux *= scale;
                 specular = true;
-            } else if (u < mirror + scatter && paths != PhotonPaths::Caustic) {
+            } else if (v < mirror + scatter) {
                 direction = sampleCosineHemisphere(faceForward(hit.ns, -d), sampler.next1D(),
                                                    sampler.next1D());
                 if (glm::dot(direction, incident) <= 0.0) return;  // below the true surface
                 flux *= m.kd * (scale / scatter);
                 ++diffuse;
             } else {
-                return;  // absorbed (or a caustic photon's path turned diffuse: its map is done)
+                return;  // absorbed
             }
         }
         ray = Ray{offsetRayOrigin(hit.p, hit.ng, side), direction};

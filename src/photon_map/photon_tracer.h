@@ -33,6 +33,11 @@ struct PhotonScattering {
     static PhotonScattering of(const Pipeline& pipeline);
     /// True when material m sends photons on specularly (a mirror or glass here).
     bool specular(const Material& m) const;
+    /// The share of the photons arriving at m that go on specularly (0 when none do).
+    double specularShare(const Material& m) const;
+    /// The same for caustic paths: 0 where the material says `caustics = false` (a faint,
+    /// broad mirror such as a polished floor, whose caustic is a dim glow, not a focus).
+    double causticShare(const Material& m) const;
 };
 
 /// One pass of one map.
