@@ -6,12 +6,14 @@
 -- Chapters used: 1-3 (A4 scene), 4 ("reflect"), 5 ("refract"), 6 (the roof window is an
 -- area light), 7 ("glossy": the polished deck and the brushed basin), 8 (10x supersampling),
 -- 10 (gr.texture: the wood), 11 (ripples on the water), 13 (depth of field, focused on the
--- robot), 14 (the roof's window opening, the robot's shell and the hollow bucket are CSG) and
--- 15 (cylinders: the robot's legs and horn fork, the bucket, the post; a cone: the horn).
+-- robot), 14 (the roof's window opening, the robot's shell and the hollow bucket are CSG),
+-- 15 (cylinders: the robot's legs and horn fork, the bucket, the post; a cone: the horn) and
+-- 16 (a caustic map: the window's light refracted by the rippled water draws bright ripples on
+-- the basin's floor, and the light the water reflects plays on the walls, seed 000's
+-- objective 8, which it gave up on).
 -- Chapters 9 and 12 are not used: the scene has no meshes, and seed 000 asked for no tone map.
 -- Parts of the seed's scene that wait for later chapters:
 --   * steam above the water (volume scattering)                  chapter 17 (media)
---   * light bouncing off the water onto the walls (photon map)   chapter 16 (photon_map)
 -- Seed 000 documented no call for CSG, quadrics, bump or the lens, so those use raybook's own
 -- calls (gr.difference, gr.cylinder, gr.cone, set_bump, gr.lens); the focus distance is seed
 -- 000's rule, |target - eye|.
@@ -49,6 +51,11 @@ gr.texture(deck, '../assets/textures/wood.jpg')
 -- from two drops; in the water box's object space, a unit cube.
 water:set_bump{pattern = 'ripples', strength = 0.003, wavelength = 0.06,
                centres = {{0.35, 1, 0.45}, {0.7, 1, 0.7}}}
+
+-- Chapter 16 (raybook's gr.photons; seed 000 named no call): one pass of a million caustic
+-- photons. The water reflects a few percent of what reaches it, so the walls' share of the
+-- photons is sparse; fewer photons draw that glow as speckle.
+gr.photons{count = 1000000, passes = 1}
 
 local scene = gr.node('bathhouse')
 

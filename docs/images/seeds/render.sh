@@ -3,14 +3,14 @@
 # docs/seeds.md, into docs/images/seeds/NNN-name-full.png, and print each render's time.
 #
 # usage: docs/images/seeds/render.sh [RT_BINARY] [SIZE] [THREADS]
-#        defaults: build/rt_ch15, 640x480, 2 threads
+#        defaults: build/rt_ch16, 640x480, 2 threads
 #
 # The scenes' own gr.render size is 320x240 and the golden tests render them at 192x144; the
 # docs show them at twice the scenes' size. The render time is rt's own "render" phase from
 # --stats (wall clock, scene loading and PNG writing excluded).
 set -euo pipefail
 repo_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)
-rt=${1:-build/rt_ch15}
+rt=${1:-build/rt_ch16}
 size=${2:-640x480}
 threads=${3:-2}
 case "$rt" in /*) ;; *) rt=$repo_root/$rt ;; esac
