@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <tuple>
 
 #include "core/batch.h"
 #include "core/error.h"
@@ -135,10 +136,20 @@ int run(int argc, char** argv) {
     for (size_t k = 0; k < renders.size(); ++k) {
         LoadedRender& r = renders[k];
         RenderJob& job = r.job;
+        const std::string requested = std::to_string(job.width) + "x" + std::to_string(job.height);
         if (cl.width > 0) {
             job.width = cl.width;
             job.height = cl.height;
+        } else if (cl.preview) {
+            std::tie(job.width, job.height) = previewSize(job.width, job.height);
         }
+        // A preview says what it is, with the settings it rendered with.
+        if (cl.preview && !cl.quiet)
+            std::fprintf(stderr,
+                         "rt: preview: %dx%d (%s), %s; drop --preview for the full render\n",
+                         job.width, job.height,
+                         cl.width > 0 ? "--size" : ("a quarter of " + requested).c_str(),
+                         previewSettings(cl).c_str());
         checkImageSize(job.width, job.height, job.where + ": ");
         // The film and the PNG encoder's buffers must fit beside the scene, before they exist.
         cl.memory.require(saturatingProduct(static_cast<std::uint64_t>(job.width) * job.height,

@@ -107,6 +107,8 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             cl.memory = memoryBudgetFromOption(next());
         else if (name == "--partial")
             cl.partial = true;
+        else if (name == "--preview")
+            cl.preview = true;
         else if (name == "--unsafe-lua")
             cl.unsafeLua = true;
         else if (findFeatureOption(built, name))
@@ -123,11 +125,31 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             throw InputError("unexpected argument '" + arg + "'");
     }
     if (cl.legacy && cl.modern) throw InputError("--legacy and --modern contradict each other");
+    // --preview: one ray per pixel and one sample of everything, unless asked otherwise (its
+    // size is applied per render: see previewSize).
+    if (cl.preview) {
+        if (cl.samplesPerPixel == 0) cl.samplesPerPixel = 1;
+        for (const auto& [option, value] : kPreviewOptions)
+            if (findFeatureOption(built, std::string("--") + option))
+                cl.featureOptions.try_emplace(option, value);
+    }
     if (!cl.batchDir.empty() && !cl.scene.empty())
         throw InputError("--batch renders a folder of scenes; give either --batch DIR or a scene");
     if (cl.scene.empty() && cl.batchDir.empty() && !cl.help && !cl.version && !cl.listFeatures)
         throw InputError("no scene file given (usage: ./rt [options] scene.lua)");
     return cl;
+}
+
+std::pair<int, int> previewSize(int width, int height) {
+    return {std::max(1, (width + 2) / 4), std::max(1, (height + 2) / 4)};
+}
+
+std::string previewSettings(const CommandLine& cl) {
+    std::string text = "--spp " + std::to_string(cl.samplesPerPixel);
+    for (const auto& [option, value] : kPreviewOptions)
+        if (auto it = cl.featureOptions.find(option); it != cl.featureOptions.end())
+            text += " --" + it->first + "=" + it->second;
+    return text;
 }
 
 std::string usage(const std::vector<Feature>& built) {
@@ -161,6 +183,9 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --max-memory SIZE  refuse, before allocating, a mesh or image that would take the
                      run past SIZE bytes (K, M, G, T: powers of 1024)
                                                    default: half of the machine's memory
+  --preview          a quick look: a quarter of the width and height (unless --size),
+                     one ray per pixel, no antialiasing, one sample of each area light,
+                     glossy lobe and lens, one photon pass (options given win)
   --stats            print ray counts, phase times, Mrays/s and memory
   --quiet            no progress bar or messages
   --legacy           treat the scene as pre-2015 (transforms post-multiply)

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/feature.h"
@@ -37,6 +38,7 @@ struct CommandLine {
     bool unsafeLua = false;  ///< --unsafe-lua: allow os and io.
     MemoryBudget memory;     ///< --max-memory SIZE (parseCommandLine: half the machine).
     bool partial = false;    ///< --partial: a stopped render writes NAME.partial.png.
+    bool preview = false;    ///< --preview: a quarter of the size, one sample of everything.
     bool help = false;       ///< --help.
     bool version = false;    ///< --version.
     std::map<std::string, std::string> featureOptions;  ///< --name=value added by chapters.
@@ -46,6 +48,20 @@ struct CommandLine {
 /// Throws InputError for an unknown option or a bad value.
 CommandLine parseCommandLine(int argc, const char* const* argv,
                              const std::vector<Feature>& built = {});
+
+/// The chapter options --preview sets, unless the command line set them: no antialiasing, and
+/// one sample of each distribution (area lights, glossy lobes, the lens) and one photon pass.
+inline constexpr std::pair<const char*, const char*> kPreviewOptions[] = {
+    {"aa", "none"},       {"light-samples", "1"}, {"glossy-samples", "1"},
+    {"dof-samples", "1"}, {"photon-passes", "1"},
+};
+
+/// The size --preview renders a width x height request at: a quarter of each side (rounded,
+/// at least 1 pixel), a sixteenth of the pixels.
+std::pair<int, int> previewSize(int width, int height);
+
+/// The sampling settings of a --preview run, as options: "--spp 1 --aa=none ...".
+std::string previewSettings(const CommandLine& cl);
 
 /// The --help text, with the options of the built features.
 std::string usage(const std::vector<Feature>& built = {});
