@@ -115,6 +115,50 @@ printf 'local t = {}\nfor i = 1, 1e8 do t[i] = {i} end\n' >"$work/scene.lua"
 run_rt "$work" --max-memory 64M scene.lua
 expect_refusal script-over-limit "scene.lua: the scene script exceeded the memory limit of .* MiB for scripts (.*--max-memory 64M)" 200000
 
+# An 8192×8192 texture, an 8-bit PNG of under 1 MiB (a checker of 64-texel squares): its
+# decoded size is checked against the limit, from the header, before anything is decoded; and
+# within the limit its texels are kept as the file's sRGB bytes, 3 per texel (float texels
+# alone took 12, and the load peaked at 965 MiB). Decoding adds stb's inflated rows (3 bytes a
+# texel more) and a few MiB: 8 bytes a texel (512 MiB) is a bound the 8-bit store meets (it
+# measured 389 MiB) and float texels cannot.
+work="$OUT/texture-over-limit"
+rm -rf "$work" && mkdir -p "$work/textures"  # the texture beside, not among, the outputs
+python3 - "$work/textures/big.png" <<'PY'
+import struct, sys, zlib
+n = 8192
+rows = [bytes([0]) + (b'\xc8\x32\x32' * 64 + b'\x32\x32\xc8' * 64) * (n // 128),
+        bytes([0]) + (b'\x32\x32\xc8' * 64 + b'\xc8\x32\x32' * 64) * (n // 128)]
+data = zlib.compress(b''.join(rows[(y // 64) % 2] for y in range(n)), 9)
+chunk = lambda t, d: struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d))
+header = struct.pack('>IIBBBBB', n, n, 8, 2, 0, 0, 0)
+open(sys.argv[1], 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', header) +
+                              chunk(b'IDAT', data) + chunk(b'IEND', b''))
+PY
+cat >"$work/scene.lua" <<'EOF'
+root = gr.node('root')
+local m = gr.material({1, 1, 1}, {0, 0, 0}, 1)
+m:set_texture('kd', 'textures/big.png')
+local s = gr.sphere('s')
+s:set_material(m)
+root:add_child(s)
+gr.render(root, 'out.png', 32, 24, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.3, 0.3, 0.3},
+          {gr.light({5, 5, 5}, {1, 1, 1}, {1, 0, 0})})
+EOF
+if "$RT" --list-features | grep -q texture; then
+    run_rt "$work" --max-memory 512M scene.lua
+    expect_refusal texture-over-limit "scene.lua:3: material:set_texture: textures/big.png: the 8192x8192 texture image needs about 1.0 GiB, but only .* of the memory limit of 512 MiB (--max-memory 512M)" 100000
+    run_rt "$work" --max-memory 2G scene.lua
+    peak=$(tail -n 1 "$work/peak" 2>/dev/null)
+    if [ "$rc" -ne 0 ] || [ ! -s "$work/out.png" ]; then
+        fail texture-within-limit "exit code $rc: $(head -c 300 "$work/stderr")"
+    elif [ "${RB_SANITIZE:-0}" != 1 ] && [ "${peak:-999999999}" -gt 524288 ]; then
+        fail texture-within-limit "peak memory ${peak:-unknown} KiB, expected at most 524288 KiB (8 bytes a texel)"
+    else
+        ok "texture-within-limit (peak ${peak:-unchecked} KiB)"
+    fi
+    rm -f "$work/out.png" "$work/textures/big.png"
+fi
+
 # A size rt cannot read.
 work="$OUT/bad-size"
 rm -rf "$work" && mkdir -p "$work"

@@ -9,9 +9,12 @@ namespace rb {
 
 HeightImage::HeightImage(const TextureImage& image) : width_(image.width), height_(image.height) {
     heights_.reserve(static_cast<size_t>(width_) * static_cast<size_t>(height_));
-    for (const glm::vec3& t : image.texels)
-        heights_.push_back(
-            static_cast<float>((linearToSrgb(t.r) + linearToSrgb(t.g) + linearToSrgb(t.b)) / 3.0));
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) {
+            const Colour t = image.texel(x, y);
+            heights_.push_back(static_cast<float>(
+                (linearToSrgb(t.r) + linearToSrgb(t.g) + linearToSrgb(t.b)) / 3.0));
+        }
 }
 
 double HeightImage::texel(long long x, long long y) const {

@@ -99,8 +99,8 @@ Colour sampleBilinear(const TextureImage& image, const Vec2& st, Wrap wrap) {
 }
 // [bilinear]
 
-std::uint64_t textureImageBytes(std::uint64_t width, std::uint64_t height) {
-    return saturatingProduct(saturatingProduct(width, height), 12 + 12);
+std::uint64_t textureImageBytes(std::uint64_t width, std::uint64_t height, bool hdr) {
+    return saturatingProduct(saturatingProduct(width, height), hdr ? 12 + 12 : 16);
 }
 
 std::shared_ptr<const TextureImage> loadTextureImage(const std::string& path,
@@ -128,7 +128,8 @@ std::shared_ptr<const TextureImage> loadTextureImage(const std::string& path,
         throw InputError(path + ": the image is empty (" + std::to_string(width) + "x" +
                          std::to_string(height) + ")");
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
-    budget.require(textureImageBytes(width, height), path, "the " + size + " texture image");
+    const bool hdr = stbi_is_hdr_from_file(file.get()) != 0;
+    budget.require(textureImageBytes(width, height, hdr), path, "the " + size + " texture image");
     // Decode to RGB: floats for a Radiance .hdr (already linear), else 8 bits (sRGB).
     auto image = std::make_shared<TextureImage>();
     image->width = width;
@@ -136,7 +137,7 @@ std::shared_ptr<const TextureImage> loadTextureImage(const std::string& path,
     image->name = path;
     const size_t count = static_cast<size_t>(width) * static_cast<size_t>(height);
     int w = 0, h = 0, n = 0;
-    if (stbi_is_hdr_from_file(file.get())) {
+    if (hdr) {
         std::unique_ptr<float, void (*)(void*)> pixels(
             stbi_loadf_from_file(file.get(), &w, &h, &n, 3), stbi_image_free);
         if (!pixels || w != width || h != height)
@@ -156,14 +157,10 @@ std::shared_ptr<const TextureImage> loadTextureImage(const std::string& path,
     if (!pixels || w != width || h != height)
         throw InputError(path + ": the image is truncated or corrupt (" + stbi_failure_reason() +
                          ")");
-    // Decode each 8-bit sRGB level once.
-    std::array<float, 256> linear;
-    for (int k = 0; k < 256; ++k) linear[k] = static_cast<float>(srgbToLinear(k / 255.0));
-    image->texels.resize(count);
-    for (size_t k = 0; k < count; ++k) {
-        const stbi_uc* p = pixels.get() + 3 * k;
-        image->texels[k] = glm::vec3(linear[p[0]], linear[p[1]], linear[p[2]]);
-    }
+    // Keep stb's sRGB bytes as they are, and decode each of the 256 levels once.
+    for (int k = 0; k < 256; ++k)
+        image->srgbToLinearTable[k] = static_cast<float>(srgbToLinear(k / 255.0));
+    image->srgb = std::shared_ptr<const std::uint8_t>(pixels.release(), stbi_image_free);
     return image;
 }
 
