@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "core/error.h"
@@ -105,6 +106,10 @@ std::uint64_t textureImageBytes(std::uint64_t width, std::uint64_t height, bool 
 
 std::shared_ptr<const TextureImage> loadTextureImage(const std::string& path,
                                                      const MemoryBudget& budget) {
+    // A folder opens like a file on Linux, and then reads as nothing: say what it is.
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path + ": is a directory, not an image file");
     // Read the header first: an absurd size is refused before anything is decoded.
     std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
     if (!file) throw InputError(path + ": cannot open the texture image");
