@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include "core/error.h"
 
@@ -66,6 +67,34 @@ bool pngHeaderSize(FILE* file, std::uint64_t& width, std::uint64_t& height) {
     width = bigEndian(16);
     height = bigEndian(20);
     return true;
+}
+
+/// Why stb_image could not decode a file whose header it read, in words: its failure reasons
+/// are terse codes ("outofdata", "zlib corrupt"), and for a PNG cut off inside a chunk it
+/// reports the chunk type it misread ("IDA").
+std::string decodeFailure(const std::string& reason) {
+    static constexpr std::pair<const char*, const char*> kReasons[] = {
+        {"outofdata", "the file ends before its pixel data does"},
+        {"read past buffer", "the file ends before its pixel data does"},
+        {"not enough pixels", "the file ends before its pixel data does"},
+        {"no IDAT", "the file has no pixel data"},
+        {"zlib corrupt", "its compressed pixel data is damaged"},
+        {"bad zlib header", "its compressed pixel data is damaged"},
+        {"bad codelengths", "its compressed pixel data is damaged"},
+        {"bad huffman code", "its compressed pixel data is damaged"},
+        {"bad code lengths", "its compressed pixel data is damaged"},
+        {"bad dist", "its compressed pixel data is damaged"},
+        {"invalid filter", "its pixel rows are damaged"},
+        {"expected marker", "the JPEG data ends, or is damaged, before its end marker"},
+        {"outofmem", "out of memory while decoding"},
+    };
+    for (const auto& [code, words] : kReasons)
+        if (reason == code) return words;
+    // A PNG cut off or damaged inside a chunk's header: stb reads a chunk type it does not
+    // know and reports it by the bytes it got ("IDA", "", "XyZw PNG chunk not known").
+    if (reason.size() < 5 || reason.find("chunk not known") != std::string::npos)
+        return "the file ends, or is damaged, inside a PNG chunk";
+    return "stb_image: " + reason;
 }
 
 }  // namespace
@@ -147,7 +176,7 @@ std::shared_ptr<const TextureImage> loadTextureImage(const std::string& path,
             stbi_loadf_from_file(file.get(), &w, &h, &n, 3), stbi_image_free);
         if (!pixels || w != width || h != height)
             throw InputError(path + ": the image is truncated or corrupt (" +
-                             stbi_failure_reason() + ")");
+                             decodeFailure(stbi_failure_reason()) + ")");
         image->texels.resize(count);
         for (size_t k = 0; k < count; ++k) {
             const float* p = pixels.get() + 3 * k;
@@ -160,8 +189,8 @@ std::shared_ptr<const TextureImage> loadTextureImage(const std::string& path,
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load_from_file(file.get(), &w, &h, &n, 3),
                                                      stbi_image_free);
     if (!pixels || w != width || h != height)
-        throw InputError(path + ": the image is truncated or corrupt (" + stbi_failure_reason() +
-                         ")");
+        throw InputError(path + ": the image is truncated or corrupt (" +
+                         decodeFailure(stbi_failure_reason()) + ")");
     // Keep stb's sRGB bytes as they are, and decode each of the 256 levels once.
     for (int k = 0; k < 256; ++k)
         image->srgbToLinearTable[k] = static_cast<float>(srgbToLinear(k / 255.0));
