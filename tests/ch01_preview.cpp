@@ -15,19 +15,14 @@
 #include "core/options.h"
 #include "test_helpers.h"
 
-namespace {
-
-/// Parse `args` (after the program name) as the chapter-16 build's rt does.
-rb::CommandLine parse(std::vector<const char*> args) {
-    args.insert(args.begin(), "rt");
-    return rb::parseCommandLine(static_cast<int>(args.size()), args.data(),
-                                rbtest::chapters(16).built());
-}
-
-}  // namespace
-
 SCENARIO("--preview renders a quarter of each side with one sample of everything",
          "[ch01][front-door][needs-ch16]") {
+    // Parse `args` (after the program name) as the chapter-16 build's rt does.
+    const auto parse = [](std::vector<const char*> args) {
+        args.insert(args.begin(), "rt");
+        return rb::parseCommandLine(static_cast<int>(args.size()), args.data(),
+                                    rbtest::chapters(16).built());
+    };
     GIVEN("rt --preview scene.lua in the chapter-16 build") {
         const rb::CommandLine cl = parse({"--preview", "scene.lua"});
         THEN("one ray per pixel, no antialiasing, one light, lobe and lens sample, one pass") {
