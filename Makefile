@@ -87,8 +87,10 @@ grade:
 	python3 tests/exercises/assignment.py grade $(DIR) $(if $(CSV),--csv $(CSV))
 
 # The assignments' round trip (every chapter: export, make check fails every exercise; restore
-# the regions, make check passes) and make grade over an untouched, a solved and a buggy
-# project. One export folder and one build folder with a compiler cache serve every chapter.
+# the regions one at a time, and after each its row and the earlier ones pass, the later ones
+# fail; solved, everything passes; each exercise's blank planted as a bug reddens its own row
+# and only rows that need it) and make grade over an untouched, a solved and a buggy project.
+# One export folder and one build folder with a compiler cache serve every chapter.
 test-assignments:
 	python3 tests/exercises/assignment.py roundtrip $(BUILD)/assignments
 	bash tests/exercises/grade_test.sh $(BUILD)/grade-test

@@ -98,8 +98,12 @@ def left_out(path: str) -> bool:
     prefixes = ("scenes/seeds/", "scenes/showcase", ".ci/", "docs/", "tests/ladder.sh",
                 "tests/docs_warnings.sh", "tests/scenes/seeds.sh", "tests/perf/", "tests/fuzz/",
                 "tests/exercises/README.md")
+    # Build folders and exported projects in the working tree are nobody's source, even when
+    # .gitignore does not name them (build-ex/, assignment-ch05/): an export would copy them.
+    top = path.split("/", 1)[0]
     return (path.startswith(prefixes) or re.match(r"^golden/\d\d\d-", path) is not None
-            or path in ("Makefile", "README.md"))
+            or path in ("Makefile", "README.md")
+            or ("/" in path and top.startswith(("build", "assignment"))))
 
 
 def shared_test_fits(root: Path, path: str, chapters: dict[int, dict], last: int) -> bool:
