@@ -7,7 +7,8 @@
 #   rb_golden_compare             static library: image_compare.cpp (PNG I/O, thresholds, metric);
 #                                 carries its include directory and PkgConfig::STB
 #   rb_imgdiff                    the comparison CLI used by run_golden.sh
-#   RB_GOLDEN_COMPARE_SOURCES     path of image_compare.cpp, for unit tests that compile it in
+#   rb_blockstats                 writes a Monte Carlo golden's reference block statistics
+#   RB_GOLDEN_COMPARE_SOURCES     image_compare.cpp and block_stats.cpp, for unit tests
 #   RB_GOLDEN_INCLUDE_DIR         directory holding image_compare.h
 #   RB_GOLDEN_TEST_SOURCES        the Catch2 tests of the metric (golden_compare.cpp, no main)
 #   rb_add_golden_test(TEST_NAME RT_TARGET SCENE_PATH [rt args...])
@@ -16,13 +17,18 @@
 #       under the test's name, so several tests of one scene can run in parallel
 
 set(RB_GOLDEN_INCLUDE_DIR ${CMAKE_CURRENT_LIST_DIR})
-set(RB_GOLDEN_COMPARE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/image_compare.cpp)
-set(RB_GOLDEN_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/golden_compare.cpp)
+set(RB_GOLDEN_COMPARE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/image_compare.cpp
+                              ${CMAKE_CURRENT_LIST_DIR}/block_stats.cpp)
+set(RB_GOLDEN_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/golden_compare.cpp
+                           ${CMAKE_CURRENT_LIST_DIR}/block_stats_test.cpp)
 set(RB_GOLDEN_RUNNER ${CMAKE_CURRENT_LIST_DIR}/run_golden.sh)
 
 add_library(rb_golden_compare STATIC ${RB_GOLDEN_COMPARE_SOURCES})
 target_include_directories(rb_golden_compare PUBLIC ${RB_GOLDEN_INCLUDE_DIR})
 target_link_libraries(rb_golden_compare PUBLIC PkgConfig::STB)
+
+add_executable(rb_blockstats ${CMAKE_CURRENT_LIST_DIR}/blockstats_main.cpp)
+target_link_libraries(rb_blockstats PRIVATE rb_golden_compare)
 
 add_executable(rb_imgdiff ${CMAKE_CURRENT_LIST_DIR}/imgdiff.cpp)
 target_link_libraries(rb_imgdiff PRIVATE rb_golden_compare)

@@ -3,7 +3,10 @@
 /// failure writes an HTML report (expected, actual and magnified diff side by side).
 ///
 /// Usage: rb_imgdiff --expected E.png --actual A.png --thresholds T.txt --name NAME
-///                   --report-dir DIR
+///                   --report-dir DIR [--stats NAME.stats]
+/// With --stats, a render that is not the golden image's bits may still pass: when its block
+/// means are statistically those of the reference renders (block_stats.h), as a correct Monte
+/// Carlo solution that draws other random numbers gives.
 /// Exit status: 0 pass, 1 fail, 2 usage or I/O error.
 #include <fcntl.h>
 #include <sys/file.h>
@@ -23,6 +26,7 @@
 #include <system_error>
 #include <vector>
 
+#include "block_stats.h"
 #include "core/html.h"
 #include "image_compare.h"
 
@@ -44,11 +48,12 @@ struct Options {
     fs::path thresholds;  ///< NAME.txt next to the golden image.
     std::string name;     ///< Test name; prefixes the verdict and names the report files.
     fs::path report_dir;  ///< Where failure reports and index.html go.
+    fs::path stats;       ///< Optional: reference block statistics (the statistical check).
 };
 
 constexpr const char* kUsage =
     "usage: rb_imgdiff --expected E.png --actual A.png --thresholds T.txt --name NAME "
-    "--report-dir DIR\n"
+    "--report-dir DIR [--stats NAME.stats]\n"
     "Compares a render with its golden image; prints one line; exit 0 pass, 1 fail, 2 error.\n";
 
 /// Parses `--key value` and `--key=value` options; returns nullopt (and sets error) when wrong.
@@ -67,8 +72,8 @@ std::optional<Options> parse_options(int argc, char** argv, std::string& error) 
             error = "missing value after " + arg;
             return std::nullopt;
         }
-        static const char* const kKeys[] = {"--expected", "--actual", "--thresholds", "--name",
-                                            "--report-dir"};
+        static const char* const kKeys[] = {"--expected", "--actual",     "--thresholds",
+                                            "--name",     "--report-dir", "--stats"};
         if (std::find(std::begin(kKeys), std::end(kKeys), arg) == std::end(kKeys)) {
             error = "unknown option " + arg;
             return std::nullopt;
@@ -81,8 +86,8 @@ std::optional<Options> parse_options(int argc, char** argv, std::string& error) 
             return std::nullopt;
         }
     }
-    Options o{values["--expected"], values["--actual"], values["--thresholds"], values["--name"],
-              values["--report-dir"]};
+    Options o{values["--expected"], values["--actual"],     values["--thresholds"],
+              values["--name"],     values["--report-dir"], values["--stats"]};
     // The name becomes part of file names in the report directory
     if (o.name.find_first_of("/\\") != std::string::npos || o.name == "index") {
         error = "--name must be a plain file name other than 'index'";
@@ -366,9 +371,19 @@ int main(int argc, char** argv) {
         return error_line(e.what());
     }
 
-    // Compare
-    const Comparison comparison = compare(expected, actual, thresholds);
-    const std::string summary = describe(comparison, thresholds);
+    // Compare: the same bits (within the thresholds), or else, with --stats, the same estimate
+    Comparison comparison = compare(expected, actual, thresholds);
+    std::string summary = describe(comparison, thresholds);
+    if (!comparison.passed && !comparison.size_mismatch && !o.stats.empty()) {
+        StatisticalComparison statistical;
+        try {
+            statistical = compare_statistically(load_block_stats(o.stats), actual);
+        } catch (const std::exception& e) {
+            return error_line(e.what());
+        }
+        summary = "not raybook's bits (" + summary + "), " + describe(statistical);
+        comparison.passed = statistical.passed;
+    }
 
     // Write or clear this test's report, then refresh the index
     try {
