@@ -14,7 +14,7 @@ double luminance(const Colour& c) {
 // [log-average]
 double logAverageLuminance(const std::vector<double>& values, double delta) {
     // [exercise-log-average]
-    // Exercise 12.2, the log-average luminance: read ch12-key.
+    // Exercise 12.1, the log-average luminance: read ch12-key.
     // Blank: return 1.0;
     if (values.empty()) return delta;
     // Average the logarithms (a sum in a fixed order, so any thread count gives the same key);
@@ -29,7 +29,7 @@ double logAverageLuminance(const std::vector<double>& values, double delta) {
 // [global-operator]
 double reinhardGlobal(double L, double Lwhite) {
     // [exercise-global-operator]
-    // Exercise 12.1, the global operator with L_white: read ch12-global.
+    // Exercise 12.2, the global operator with L_white: read ch12-global.
     // Blank: return std::min(L, 1.0);
     // L / (1 + L) compresses every luminance into [0, 1); the factor (1 + L / L_white²) lifts
     // the top of the curve so that L_white itself lands on 1. An infinite L_white drops it.
