@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""The Monte Carlo golden images' round trip (issue 21): make check and make grade compare a
+chapter whose image depends on sampling choices statistically (tests/golden/block_stats.h), so
+that any correct solution passes, however it draws its random numbers, and a biased one fails.
+
+For each chapter below, a project is exported (chapters 1..N), solved with raybook's code, and
+each planted solution put into its exercise region in turn: its rt_chN is rebuilt and the
+chapter's golden image checked as make check does (run_golden.sh --statistical). A correct
+solution that draws differently must pass; each biased one must fail. Builds share objects
+through objcache.py, as the assignments' round trip does.
+
+usage: python3 tests/exercises/mc_golden.py WORK_DIR [--chapters 13 ...]
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent.parent
+sys.path.insert(0, str(HERE))
+import regions as rg  # noqa: E402
+
+# Planted solutions: (what it is, should it pass, exercise region id, its code). Each is a
+# student's own way of writing the exercise, not raybook's code.
+PLANTED = {
+    13: [
+        ("13.3 with another per-pixel key and a rotation for its shuffle", True,
+         "stratified-lens",
+         "const int rows = strataRows(slot.count), cols = slot.count / rows; "
+         "const std::uint64_t key = mix64(slot.pixel * 0x9e3779b97f4a7c15ULL + slot.seed + 17); "
+         "const auto cell = static_cast<std::uint32_t>((slot.index + key % slot.count) % slot.count); "
+         "const Vec2 xi = sampler.next2D(); "
+         "return {((cell % cols) + xi.x) / cols, ((cell / cols) + xi.y) / rows};"),
+        ("13.2 as the polar map r = sqrt(u), phi = 2 pi v (uniform, other strata)", True,
+         "concentric-disk",
+         "const double r = std::sqrt(u.x), phi = 2.0 * glm::pi<double>() * u.y; "
+         "return {r * std::cos(phi), r * std::sin(phi)};"),
+        ("13.1 with the aperture's diameter used as its radius", False, "thin-lens-ray",
+         "const Vec2 lens = settings_.aperture * aperturePoint(settings_.shape, u); "
+         "const Vec3 offset = lens.x * camera.right() + lens.y * camera.upVector(); "
+         "const Vec3 d = camera.filmDirection(film.x, film.y); "
+         "return Ray{camera.eye() + offset, glm::normalize(d - offset / settings_.focusDistance)};"),
+        ("13.2 without 2u - 1 (the concentric map of [0, 1]^2: a quarter of the disk)", False,
+         "concentric-disk",
+         "const double a = u.x, b = u.y; if (a == 0.0 && b == 0.0) return Vec2(0.0); "
+         "const double q = 0.25 * glm::pi<double>(); double r, phi; "
+         "if (std::abs(a) > std::abs(b)) { r = a; phi = q * (b / a); } "
+         "else { r = b; phi = 2.0 * q - q * (a / b); } "
+         "return {r * std::cos(phi), r * std::sin(phi)};"),
+        ("13.2 as the polar map with r = u (not uniform: crowded at the centre)", False,
+         "concentric-disk",
+         "const double r = u.x, phi = 2.0 * glm::pi<double>() * u.y; "
+         "return {r * std::cos(phi), r * std::sin(phi)};"),
+        ("13.3 with every ray in the pixel's first lens stratum", False, "stratified-lens",
+         "const int rows = strataRows(slot.count), cols = slot.count / rows; "
+         "const Vec2 xi = sampler.next2D(); return {xi.x / cols, xi.y / rows};"),
+    ],
+}
+
+
+def run(command, cwd=None, env=None, timeout=1800):
+    p = subprocess.run(command, cwd=cwd, env=env, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True, timeout=timeout)
+    return p.returncode, p.stdout
+
+
+def plant(project: Path, region_id: str, code: str | None) -> None:
+    """Put `code` into the project's region (None: raybook's own code back)."""
+    sys.path.insert(0, str(HERE))
+    import assignment  # noqa: E402
+    assignment.solve_regions(project, {region_id})
+    if code is not None:
+        region = next(r for r in rg.find_regions(project) if r.id == region_id)
+        region.path.write_text(rg.replaced(region, code))
+
+
+def check_chapter(n: int, work: Path) -> list[str]:
+    project, build = work / f"ch{n:02d}", work / f"build-ch{n:02d}"
+    shutil.rmtree(project, ignore_errors=True)
+    env = dict(os.environ)
+    script = str(HERE / "assignment.py")
+    code, out = run([sys.executable, script, "export", str(n), str(project)], env=env)
+    if code != 0:
+        return [f"chapter {n}: export failed:\n{out[-1500:]}"]
+    run([sys.executable, script, "solve", str(project)], env=env)
+    configure = ["cmake", "-S", str(project), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"]
+    if env.get("RB_COMPILER_LAUNCHER"):
+        configure.append(f"-DCMAKE_CXX_COMPILER_LAUNCHER={env['RB_COMPILER_LAUNCHER']}")
+    code, out = run(configure, env=env)
+    if code != 0:
+        return [f"chapter {n}: configure failed:\n{out[-1500:]}"]
+    scene = json.loads((project / ".assignment.json").read_text())["scene"]
+    problems = []
+    cases = [("raybook's own solution", True, None, None)] + PLANTED[n]
+    for what, should_pass, region_id, code_text in cases:
+        if region_id:
+            plant(project, region_id, code_text)
+        code, out = run(["cmake", "--build", str(build), "-j", str(os.cpu_count() or 2),
+                         "--target", f"rt_ch{n}", "rb_imgdiff"], env=env)
+        if code != 0:
+            problems.append(f"{what}: does not build:\n{out[-1500:]}")
+        else:
+            code, out = run(["bash", str(project / "tests/golden/run_golden.sh"),
+                             str(build / f"rt_ch{n}"), scene, str(project / "golden"),
+                             str(build / "golden-report"), str(build / "tests" / "rb_imgdiff"),
+                             "--report-name=planted", "--statistical"], cwd=project, env=env)
+            passed = code == 0
+            verdict = out.strip().splitlines()[0] if out.strip() else "(no output)"
+            ok = passed == should_pass
+            print(f"  {'ok  ' if ok else 'FAIL'} {what}: {'passes' if passed else 'fails'}"
+                  f" (should {'pass' if should_pass else 'fail'}): {verdict}", flush=True)
+            if not ok:
+                problems.append(f"{what}: {'passed' if passed else 'failed'}, should not")
+        if region_id:
+            plant(project, region_id, None)
+    return problems
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("work")
+    parser.add_argument("--chapters", type=int, nargs="*", default=sorted(PLANTED))
+    args = parser.parse_args()
+    work = Path(args.work).resolve()
+    work.mkdir(parents=True, exist_ok=True)
+    launcher = f"{sys.executable};{HERE / 'objcache.py'}"
+    os.environ.setdefault("RB_COMPILER_LAUNCHER", launcher)
+    os.environ.setdefault("RB_OBJCACHE", str(work / "objcache"))
+    failures = 0
+    for n in args.chapters:
+        start = time.monotonic()
+        print(f"chapter {n}: Monte Carlo golden, planted solutions", flush=True)
+        problems = check_chapter(n, work)
+        for p in problems:
+            print("  " + p.replace("\n", "\n  "))
+        print(f"chapter {n}: {'ok' if not problems else 'FAIL'} "
+              f"({time.monotonic() - start:.0f} s)", flush=True)
+        failures += bool(problems)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
