@@ -27,7 +27,64 @@ import regions as rg  # noqa: E402
 
 # Planted solutions: (what it is, should it pass, exercise region id, its code). Each is a
 # student's own way of writing the exercise, not raybook's code.
+BALL_CONE = (
+    "const double sin2ThetaMax = (R / d) * (R / d); "
+    "const double cosThetaMax = std::sqrt(std::max(0.0, 1.0 - sin2ThetaMax)); "
+    "const double oneMinusCosThetaMax = sin2ThetaMax / (1.0 + cosThetaMax); "
+    "const double oneMinusCosTheta = {ONE_MINUS_COS}; "
+    "const double cosTheta = 1.0 - oneMinusCosTheta; "
+    "const double sin2Theta = oneMinusCosTheta * (2.0 - oneMinusCosTheta); "
+    "const double cosAlpha = sin2Theta / (R / d) + cosTheta * std::sqrt(std::max(0.0, 1.0 - "
+    "sin2Theta / sin2ThetaMax)); "
+    "const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha)); "
+    "const double phi = 2.0 * glm::pi<double>() * {PHI}; "
+    "const Vec3 w = toP / d; Vec3 t, b; orthonormalBasis(w, t, b); "
+    "const Vec3 x = centre + R * (sinAlpha * std::cos(phi) * t + sinAlpha * std::sin(phi) * b + "
+    "cosAlpha * w); "
+    "const Vec3 fromP = x - p; "
+    "weight = {FACTOR} * oneMinusCosThetaMax * glm::dot(fromP, fromP) / (R * R); return x;")
+
+
+def ball_cone(one_minus_cos: str, phi: str, factor: str) -> str:
+    """Exercise 6.2 written out, with the cone's draw and the weight's factor as given."""
+    return (BALL_CONE.replace("{ONE_MINUS_COS}", one_minus_cos).replace("{PHI}", phi)
+            .replace("{FACTOR}", factor))
+
+
 PLANTED = {
+    6: [
+        ("6.1 with the panel's strata turned a quarter (uniform, stratified)", True,
+         "rectangle-sample",
+         "const Vec2 q = unitSquareSample(k, n, u, sampling_); const Vec2 s(1.0 - q.y, q.x); "
+         "const Vec3 x = centre + ((s.x - 0.5) * length_) * left_ + ((s.y - 0.5) * width_) * up_; "
+         "const Vec3 toP = p - x; const double r = glm::length(toP); "
+         "weight = r > 0.0 ? std::max(0.0, glm::dot(normal_, toP) / r) : 0.0; return x;"),
+        ("6.2 drawing the cone's angle from the second number and the turn from the first",
+         True, "ball-sample", ball_cone("s.y * oneMinusCosThetaMax", "s.x", "2.0")),
+        ("6.1 without the panel's cos theta (every point weighs 1)", False, "rectangle-sample",
+         "const Vec2 s = unitSquareSample(k, n, u, sampling_); "
+         "weight = 1.0; return centre + ((s.x - 0.5) * length_) * left_ + "
+         "((s.y - 0.5) * width_) * up_;"),
+        ("6.2 with the cone's solid angle 2 pi (1 - cos) taken as pi (1 - cos)", False,
+         "ball-sample", ball_cone("s.x * oneMinusCosThetaMax", "s.y", "1.0")),
+    ],
+    # Chapter 7's scene draws its lobes with the Phong sampler (7.1); the fuzz ball (7.2, seed
+    # 000's "glossy") does not change its image, so only the unit tests see 7.2.
+    7: [
+        ("7.1 inverting the CDF with u1 in place of 1 - u1 (uniform the same)", True,
+         "phong-lobe",
+         "const double cosAlpha = std::pow(std::max(u1, 1e-300), 1.0 / (exponent + 1.0)); "
+         "const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha)); "
+         "const double phi = 2.0 * kPi * (1.0 - u2); "
+         "return Frame(axis).toWorld(Vec3(sinAlpha * std::cos(phi), sinAlpha * std::sin(phi), "
+         "cosAlpha));"),
+        ("7.1 with cos alpha uniform (the lobe's exponent forgotten)", False, "phong-lobe",
+         "const double cosAlpha = 1.0 - u1; "
+         "const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha)); "
+         "const double phi = 2.0 * kPi * u2; "
+         "return Frame(axis).toWorld(Vec3(sinAlpha * std::cos(phi), sinAlpha * std::sin(phi), "
+         "cosAlpha));"),
+    ],
     13: [
         ("13.3 with another per-pixel key and a rotation for its shuffle", True,
          "stratified-lens",
