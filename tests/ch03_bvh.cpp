@@ -430,7 +430,8 @@ SCENARIO("a degenerate triangle is never hit", "[ch03][ex3.1]") {
 // ---- The BVH ----------------------------------------------------------------------------------
 
 // [ch03-fast-equals-simple]
-SCENARIO("the wide traversal finds exactly what the binary traversal finds", "[ch03][ex3.2]") {
+SCENARIO("the wide traversal finds exactly what the binary traversal finds",
+         "[ch03][ex3.1][ex3.2]") {
     GIVEN("binary and wide BVHs over the bunny's triangles and 5 000 random rays into its bounds") {
         const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
         const auto triangles = bunny.triangles();
@@ -526,7 +527,7 @@ rb::ObjData cubeObj(int side) {
 
 // [ch03-robust-traversal]
 SCENARIO("the float traversal never misses a hit that the exact double test finds",
-         "[ch03][stability][ex3.2]") {
+         "[ch03][stability][ex3.1][ex3.2]") {
     // The wide BVH tests float boxes in float arithmetic; the binary one double boxes in double.
     // Both stretch the far end of each slab interval (kFarWidening; the 1 + 8ε of
     // intersectBox) so that rounding cannot make a box look missed. Random rays almost never
@@ -608,7 +609,8 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
 // [ch03-robust-traversal]
 
 // [ch03-bvh-equals-brute-force]
-SCENARIO("the BVH finds the same closest triangle as testing every triangle", "[ch03][ex3.2]") {
+SCENARIO("the BVH finds the same closest triangle as testing every triangle",
+         "[ch03][ex3.1][ex3.2]") {
     GIVEN(
         "the Stanford bunny (3 674 triangles) and 2 000 random rays aimed into its bounds "
         "(fixed seed)") {
@@ -783,7 +785,8 @@ SCENARIO("a BVH is well formed: boxes nest, and every primitive is in exactly on
 }
 
 // [ch03-log-cost]
-SCENARIO("the cost of a ray grows like log n with the number of triangles", "[ch03][ex3.2]") {
+SCENARIO("the cost of a ray grows like log n with the number of triangles",
+         "[ch03][ex3.1][ex3.2]") {
     // We count work instead of timing it. For meshes of n = 2 048, 32 768 and 524 288 triangles
     // (a wavy height field cut ever finer) we trace 2 000 rays that hit the surface (fixed
     // seed), and count per ray

@@ -171,7 +171,7 @@ SCENARIO("reflecting twice about the same normal gives the ray back", "[ch04][ex
 
 // [ch04-rk]
 SCENARIO("light that bounced k times between mirrors of reflectivity r carries r^k",
-         "[ch04][ex4.2]") {
+         "[ch04][ex4.1][ex4.2]") {
     for (const double r : {0.3, 0.5, 0.9, 1.0}) {
         for (int k = 0; k <= 8; ++k) {
             GIVEN("a corridor of two black mirrors (kd = 0, reflect = " + std::to_string(r) +
@@ -205,7 +205,8 @@ SCENARIO("light that bounced k times between mirrors of reflectivity r carries r
 }
 // [ch04-rk]
 
-SCENARIO("the depth limit cuts off images that need more bounces than it allows", "[ch04][ex4.2]") {
+SCENARIO("the depth limit cuts off images that need more bounces than it allows",
+         "[ch04][ex4.1][ex4.2]") {
     GIVEN("the corridor with r = 0.8 and the wall 5 reflections away") {
         const double r = 0.8;
         const int k = 5;
@@ -448,7 +449,7 @@ SCENARIO("with --features=all,-reflection a mirror shades as plain Phong", "[ch0
 // [ch04-feature-off]
 
 SCENARIO("a mirror seen from behind reflects like its front (no back-face culling)",
-         "[ch04][ex4.2]") {
+         "[ch04][ex4.1][ex4.2]") {
     GIVEN("a single mirror triangle in the plane z = 0, its normal along +z") {
         rb::ObjData data;
         data.positions = {Vec3(-5, -5, 0), Vec3(5, -5, 0), Vec3(0, 5, 0)};
@@ -512,7 +513,7 @@ SCENARIO("1000 bounces between perfect mirrors end, with a finite colour",
 
 // [ch04-edge]
 SCENARIO("a ray that meets a mirror exactly on its edge reflects once, cleanly",
-         "[ch04][stability][ex4.2]") {
+         "[ch04][stability][ex4.1][ex4.2]") {
     GIVEN("a black mirror cube [0,1]³ with r = 0.5 in front of a coloured background") {
         TestWorld world;
         world.addBox(Mat4(1.0), world.material(Colour(0.0), 0.5));
@@ -552,7 +553,7 @@ SCENARIO("a ray that meets a mirror exactly on its edge reflects once, cleanly",
 
 // [ch04-no-self-hit]
 SCENARIO("a reflected ray never hits the mirror it leaves, at scene scales 1e-3 to 1e4",
-         "[ch04][stability][ex4.2]") {
+         "[ch04][stability][ex4.1][ex4.2]") {
     for (const double scale : {1e-3, 1e-1, 1.0, 1e2, 1e4}) {
         for (const bool sphere : {true, false}) {
             GIVEN(std::string("a black convex mirror (") + (sphere ? "sphere" : "box") +

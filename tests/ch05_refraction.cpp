@@ -153,7 +153,7 @@ std::uint64_t refractions(const rb::RayCounters& c) {
 // ---- The Fresnel equations at known angles --------------------------------------------------
 
 // [ch05-normal-incidence]
-SCENARIO("light hitting glass head-on reflects 4%", "[ch05][ex5.2]") {
+SCENARIO("light hitting glass head-on reflects 4%", "[ch05][ex5.1][ex5.2]") {
     GIVEN("air (n = 1) and glass (n = 1.5)") {
         WHEN("the ray arrives along the normal") {
             const double F = rb::fresnelExact(/*cosTheta_i=*/1.0, /*eta_i=*/1.0, /*eta_t=*/1.5);
@@ -174,7 +174,7 @@ SCENARIO("light hitting glass head-on reflects 4%", "[ch05][ex5.2]") {
 // [ch05-normal-incidence]
 
 // [ch05-known-angles]
-SCENARIO("at 45° glass reflects 5.02% and bends the ray to 28.1255°", "[ch05][ex5.2]") {
+SCENARIO("at 45° glass reflects 5.02% and bends the ray to 28.1255°", "[ch05][ex5.1][ex5.2]") {
     GIVEN("air into glass (1 → 1.5) at θi = 45°") {
         const double cosTheta_i = std::cos(radians(45.0));
         WHEN("Snell's law and the Fresnel equations are evaluated") {
@@ -198,7 +198,7 @@ SCENARIO("at 45° glass reflects 5.02% and bends the ray to 28.1255°", "[ch05][
     }
 }
 
-SCENARIO("at 80° glass reflects 38.77% and bends the ray to 41.036°", "[ch05][ex5.2]") {
+SCENARIO("at 80° glass reflects 38.77% and bends the ray to 41.036°", "[ch05][ex5.1][ex5.2]") {
     GIVEN("air into glass (1 → 1.5) at θi = 80°") {
         const double cosTheta_i = std::cos(radians(80.0));
         WHEN("Snell's law and the Fresnel equations are evaluated") {
@@ -217,7 +217,7 @@ SCENARIO("at 80° glass reflects 38.77% and bends the ray to 41.036°", "[ch05][
 // [ch05-known-angles]
 
 SCENARIO("the reflectance the renderer uses is the Fresnel equations' everywhere",
-         "[ch05][ex5.2]") {
+         "[ch05][ex5.1][ex5.2]") {
     GIVEN("angles 0°…90° and index pairs going in and out, beyond the critical angle too") {
         THEN("fresnelExact and the record's reflectance() equal the written-out equations") {
             // Source: closedFormF above (Hecht, §4.6), evaluated with θi itself.
@@ -238,7 +238,7 @@ SCENARIO("the reflectance the renderer uses is the Fresnel equations' everywhere
 }
 
 // [ch05-brewster]
-SCENARIO("at Brewster's angle no p-polarised light is reflected", "[ch05][ex5.2]") {
+SCENARIO("at Brewster's angle no p-polarised light is reflected", "[ch05][ex5.1][ex5.2]") {
     GIVEN("air into glass at θB = atan(1.5) = 56.31°") {
         const rb::FresnelTerms t = rb::fresnelDielectricTerms(std::cos(std::atan(1.5)), 1.0, 1.5);
         THEN("Rp = 0 and Rs = ((n² − 1)/(n² + 1))² = 0.1479289940828402") {
@@ -267,7 +267,7 @@ SCENARIO("at Brewster's angle no p-polarised light is reflected", "[ch05][ex5.2]
 // [ch05-brewster]
 
 // [ch05-tir]
-SCENARIO("beyond the critical angle nothing is transmitted", "[ch05][stability][ex5.2]") {
+SCENARIO("beyond the critical angle nothing is transmitted", "[ch05][stability][ex5.1][ex5.2]") {
     GIVEN("glass into air, whose critical angle is asin(1/1.5) = 41.8103148957786°") {
         const double critical = std::asin(1.0 / 1.5);
         // Source: Snell's law with θt = 90°: sin θc = η_t/η_i.
@@ -375,7 +375,7 @@ SCENARIO("the refracted ray obeys Snell's law in the plane of incidence", "[ch05
 
 // [ch05-slab]
 SCENARIO("a ray through a glass slab leaves parallel to how it entered, shifted sideways",
-         "[ch05][ex5.3]") {
+         "[ch05][ex5.1][ex5.3]") {
     GIVEN("a 0.4-thick glass slab (n = 1.5), tilted so no face is axis-aligned") {
         TestWorld world;
         const double thickness = 0.4;
@@ -423,7 +423,7 @@ SCENARIO("a ray through a glass slab leaves parallel to how it entered, shifted 
 SCENARIO(
     "a ray through a glass ball holding a water ball bends by the right pair of indices "
     "at each of its four surfaces",
-    "[ch05][ex5.3]") {
+    "[ch05][ex5.1][ex5.3]") {
     GIVEN(
         "a glass ball of radius 2 (n = 1.5) around a concentric water ball of radius 1 "
         "(n = 1.33)") {
@@ -524,7 +524,8 @@ SCENARIO(
 }
 // [ch05-nested]
 
-SCENARIO("a path that starts inside glass it never entered leaves it correctly", "[ch05][ex5.3]") {
+SCENARIO("a path that starts inside glass it never entered leaves it correctly",
+         "[ch05][ex5.1][ex5.3]") {
     GIVEN("a glass ball (n = 1.5) and a ray from its centre, with an empty stack") {
         TestWorld world;
         world.addSphere(sphereAt(Vec3(0.0), 1.0), world.material(dielectric(1.5)), "glass");
@@ -547,7 +548,7 @@ SCENARIO("a path that starts inside glass it never entered leaves it correctly",
 
 // [ch05-schlick-bound]
 SCENARIO("Schlick's approximation stays within 0.0357 of the exact reflectance of glass",
-         "[ch05][ex5.2]") {
+         "[ch05][ex5.1][ex5.2]") {
     GIVEN("air into glass (1 → 1.5) and 100,001 angles from 0° to 90°") {
         WHEN("Schlick's R0 + (1 − R0)(1 − cos θ)^5 is compared with the exact F") {
             double worst = 0.0, worstAngle = 0.0, mostNegative = 0.0;
@@ -641,7 +642,8 @@ void requireColour(const Colour& got, const Colour& expected) {
 }
 
 // [ch05-colour-rule]
-SCENARIO("glass shows (1 − τ)·local + τ·(F·L_reflected + (1 − F)·L_transmitted)", "[ch05][ex5.3]") {
+SCENARIO("glass shows (1 − τ)·local + τ·(F·L_reflected + (1 − F)·L_transmitted)",
+         "[ch05][ex5.1][ex5.2][ex5.3]") {
     const ColourRuleWorld setup;
     GIVEN("a block of glass with τ = 0.75, a plate inside it and a wall behind the camera") {
         TestWorld world;
@@ -695,7 +697,7 @@ SCENARIO("glass shows (1 − τ)·local + τ·(F·L_reflected + (1 − F)·L_tra
 
 // [ch05-with-mirror]
 SCENARIO("a material with both `reflect` and `transparency` gets both terms, mirror first",
-         "[ch05][ex5.3]") {
+         "[ch05][ex5.1][ex5.2][ex5.3]") {
     const ColourRuleWorld setup;
     GIVEN("the glass block with reflect = 0.5 as well") {
         TestWorld world;
@@ -731,7 +733,7 @@ SCENARIO("at the depth limit glass shows its local colour, unchanged", "[ch05]")
 
 // [ch05-deep-choice]
 SCENARIO("deep in the tree the term follows one ray, chosen so the mean is unchanged",
-         "[ch05][ex5.3]") {
+         "[ch05][ex5.1][ex5.2][ex5.3]") {
     // Below depth kFullSplitDepth both rays are traced; from there on the mirror ray is taken
     // with probability F and the refracted one with 1 − F. That is a Monte Carlo estimator of
     // F·L_r + (1 − F)·L_t, so it gets a z-test.
@@ -784,7 +786,7 @@ SCENARIO("deep in the tree the term follows one ray, chosen so the mean is uncha
 
 // ---- Switching the chapter off, and its cost when unused ------------------------------------
 
-SCENARIO("with --features=all,-refraction glass shades as plain Phong", "[ch05][ex5.3]") {
+SCENARIO("with --features=all,-refraction glass shades as plain Phong", "[ch05][ex5.1][ex5.3]") {
     GIVEN("the chapter scene, loaded by a chapter-5 build") {
         const std::string path = std::string(RB_SOURCE_DIR) + "/scenes/chapter05-refraction.lua";
         WHEN("it renders with refraction off, and with the refraction fields deleted instead") {
@@ -950,7 +952,7 @@ SCENARIO("at grazing incidence the reflectance tends to 1 without NaN",
 // [ch05-grazing]
 
 SCENARIO("with the same index on both sides nothing bends and nothing reflects",
-         "[ch05][stability][ex5.3]") {
+         "[ch05][stability][ex5.1][ex5.2][ex5.3]") {
     GIVEN("η_i = η_t = 1 (and 1.5) at every angle, grazing included") {
         THEN("F = 0, T = 1, and the refracted direction is the incoming one") {
             rbtest::Rng rng(11);
@@ -997,7 +999,7 @@ SCENARIO("with the same index on both sides nothing bends and nothing reflects",
     }
 }
 
-SCENARIO("very high and very low indices stay finite", "[ch05][stability][ex5.3]") {
+SCENARIO("very high and very low indices stay finite", "[ch05][stability][ex5.1][ex5.2][ex5.3]") {
     GIVEN("an index of 10") {
         THEN("head-on F = (9/11)² = 0.6694…, and R + T = 1 at every angle") {
             // Source: the normal-incidence formula with n = 10.
@@ -1074,7 +1076,7 @@ SCENARIO("a ray that starts exactly on a glass surface gives a finite colour",
 }
 
 SCENARIO("a refracted ray never hits the surface it leaves, at scene scales 1e-3 to 1e4",
-         "[ch05][stability][ex5.3]") {
+         "[ch05][stability][ex5.1][ex5.3]") {
     for (const double scale : {1e-3, 1e-1, 1.0, 1e2, 1e4}) {
         GIVEN("a glass ball of radius " + std::to_string(scale) + " far from the origin") {
             TestWorld world;
@@ -1110,7 +1112,7 @@ SCENARIO("a refracted ray never hits the surface it leaves, at scene scales 1e-3
 
 // [ch05-deep]
 SCENARIO("nested glass rendered with a depth limit of 1000 ends, with finite pixels",
-         "[ch05][stability][ex5.3]") {
+         "[ch05][stability][ex5.1][ex5.2][ex5.3]") {
     GIVEN(
         "four concentric balls (glass, water, glass, air) and two glass balls beside them, "
         "over a floor, with max_depth = 1000") {
@@ -1229,7 +1231,7 @@ rb::Ray upwardRay(double theta, double z0, double back = 2.0) {
 
 // [ch05-leaving]
 SCENARIO("leaving glass, and crossing from water into glass, the term uses that pair's Fresnel",
-         "[ch05][ex5.3]") {
+         "[ch05][ex5.1][ex5.2][ex5.3]") {
     // Every opaque surface shows kd · ambient (no lights), and with maxDepth = 1 the rays the
     // term traces see their surface's local colour only. The medium behind the surface is red
     // and the one ahead green, so the term's colour is exactly (F, 1 − F, 0).
@@ -1402,7 +1404,7 @@ Vec3 snellVector(const Vec3& d, const Vec3& n, double n1, double n2) {
 
 // [ch05-overlap]
 SCENARIO("overlapping glass: after leaving A while still inside B the ray is in B's medium",
-         "[ch05][ex5.3]") {
+         "[ch05][ex5.1][ex5.3]") {
     GIVEN("two objects A (n = 1.5) and B (n = 1.8) that overlap without nesting") {
         rb::Instance a, b;
         WHEN("a path enters A, enters B, leaves A, then leaves B") {

@@ -310,7 +310,8 @@ SCENARIO("a floor point inside a ball light receives the irradiance I/R² wherev
     // [ch06-ball-inside]
 }
 
-SCENARIO("the light samplers draw points with the density their pdfs state", "[ch06][ex6.2]") {
+SCENARIO("the light samplers draw points with the density their pdfs state",
+         "[ch06][ex6.1][ex6.2]") {
     // Chi-square goodness of fit on a 10 × 10 grid of equal-probability cells, 10 000 independent
     // samples (100 expected per cell, so no pooling is needed), α = 0.01 shared by two tests.
     const int cells = 10, samples = 10000;

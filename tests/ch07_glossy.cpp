@@ -408,7 +408,7 @@ SCENARIO("both pdfs integrate to 1 and agree with the closed-form CDFs of cos α
 SCENARIO(
     "the renderer weighs every lobe sample 1, so a glossy mirror shows the share of its lobe "
     "that sees a light disc",
-    "[ch07][ex7.2]") {
+    "[ch07][ex7.1][ex7.2]") {
     // The estimator of ∫ L(ω) D(ω) dω draws ω from the lobe D itself and averages L(ω): each
     // sample weighs D/p = 1. Here L is 1 inside a cone of half-angle α0 about the normal and 0
     // outside, so the renderer must return P(α < α0) under the lobe.
@@ -727,7 +727,8 @@ SCENARIO(
 // ---- Glossiness → 0 ---------------------------------------------------------------------------
 
 // [ch07-to-mirror]
-SCENARIO("as glossiness falls to 0 the image tends to chapter 4's sharp mirror", "[ch07][ex7.2]") {
+SCENARIO("as glossiness falls to 0 the image tends to chapter 4's sharp mirror",
+         "[ch07][ex7.1][ex7.2]") {
     GIVEN("a mirror ball between striped walls, rendered 48×36 with 16 directions per pixel") {
         const rb::Image sharp = renderWorld(*buildWorld(stripedRoom(""), chapters(7)));
         for (const std::string sampler : {"0", "1"}) {
@@ -1025,7 +1026,7 @@ SCENARIO("extreme glossiness and degenerate axes give finite unit directions",
 }
 
 SCENARIO("a lobe whose axis lies in the surface loses half its samples",
-         "[ch07][stability][ex7.2]") {
+         "[ch07][stability][ex7.1][ex7.2]") {
     GIVEN("a mirror direction exactly along the surface (the grazing limit)") {
         const Vec3 normal(0, 1, 0), axis(1, 0, 0);
         rb::Material m;

@@ -318,7 +318,7 @@ SCENARIO("bilinear filtering is exact on a linear ramp", "[ch10][ex10.4]") {
 // [ch10-bilinear]
 
 // [ch10-seam]
-SCENARIO("a repeating texture has no seam: u = 0 and u = 1 agree", "[ch10][ex10.4]") {
+SCENARIO("a repeating texture has no seam: u = 0 and u = 1 agree", "[ch10][ex10.1][ex10.4]") {
     GIVEN("an image of random texels") {
         rbtest::Rng rng(rbtest::seedFromEnv("RB_CH10_SEED"));
         const auto image =
@@ -719,7 +719,8 @@ SCENARIO("a one-colour image texture shades exactly like its decoded colour as k
 
 // ---- Stability ------------------------------------------------------------------------------
 
-SCENARIO("texture lookups stay finite where the mapping degenerates", "[ch10][stability][ex10.5]") {
+SCENARIO("texture lookups stay finite where the mapping degenerates",
+         "[ch10][stability][ex10.2][ex10.5]") {
     GIVEN("the sphere's poles, where φ is undefined") {
         THEN("(u, v) and the derivatives are finite") {
             for (const Vec3 d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 1, -0.0)}) {

@@ -192,7 +192,7 @@ SCENARIO("a scene scaled from 1e-3 to 1e4 renders the same picture and shows no 
 // ---- Edges, vertices and degenerate triangles ---------------------------------------------
 
 SCENARIO("rays through the edges and vertices of a closed mesh always hit it",
-         "[stability][ch03][ex3.2]") {
+         "[stability][ch03][ex3.1][ex3.2]") {
     GIVEN("the octahedron |x| + |y| + |z| = 1 as an 8-triangle mesh") {
         const auto octahedron = rbtest::makeMesh({Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0),
                                                   Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)},
@@ -411,7 +411,7 @@ SCENARIO("a degenerate ray (zero or NaN direction) never reports a hit",
 }
 
 SCENARIO("rays with zero direction components pass through boxes and BVH nodes correctly",
-         "[stability][ch03][ex3.2]") {
+         "[stability][ch03][ex3.1][ex3.2]") {
     GIVEN(
         "a flat 8 × 8 grid of 128 triangles over the unit square (z = 0), whose BVH nodes "
         "have zero thickness in z and share their x and y faces") {
