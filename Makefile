@@ -94,6 +94,7 @@ grade:
 test-assignments:
 	python3 tests/exercises/assignment.py roundtrip $(BUILD)/assignments
 	bash tests/exercises/grade_test.sh $(BUILD)/grade-test
+	python3 tests/exercises/mc_golden.py $(BUILD)/mc-golden
 
 # The same CTest suite (unit tests, golden images, determinism, bad input, scenes, batch,
 # interrupt, docs) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build

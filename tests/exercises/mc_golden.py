@@ -189,6 +189,7 @@ def main() -> int:
     launcher = f"{sys.executable};{HERE / 'objcache.py'}"
     os.environ.setdefault("RB_COMPILER_LAUNCHER", launcher)
     os.environ.setdefault("RB_OBJCACHE", str(work / "objcache"))
+    os.environ.setdefault("RB_OBJCACHE_STRIP", str(work))  # the chapters' projects share objects
     failures = 0
     for n in args.chapters:
         start = time.monotonic()
