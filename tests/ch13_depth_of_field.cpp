@@ -221,56 +221,38 @@ SCENARIO("every lens ray through one image position meets the others on the foca
 // [ch13-blur-circle]
 namespace {
 
-/// 4096 lens rays through the image centre of the tilted camera, one per cell of a 64 × 64
-/// grid, followed to depths S2 = 3, 5, 12, 40 with the focus at S1 = 8 and aperture A = 0.5:
-/// seen from the eye they spread over the thin-lens blur circle of each depth, uniformly.
-void checkBlurCircle(rb::ApertureShape shape) {
+/// How lens rays through the image centre spread at one depth, seen from the eye.
+struct Spread {
+    double reach;       ///< the farthest ray's distance (for a square, its larger coordinate)
+    double meanSquare;  ///< the mean squared distance
+};
+
+/// The spread at depth S2 of 4096 rays of `thin` through the image centre of the tilted camera,
+/// one per cell of a 64 × 64 grid of lens positions, around the pinhole ray's point.
+Spread spreadAt(const rb::ThinLens& thin, double S2) {
     const rb::PinholeCamera camera = tiltedCamera();
-    const double A = 0.5, S1 = 8.0;
     const Vec2 centre(32.0, 24.0);
-    const bool disk = shape == rb::ApertureShape::Disk;
-    const rb::ThinLens thin = lens(A, S1, 4096, shape);
-    for (const double S2 : {3.0, 5.0, 12.0, 40.0}) {
-        // Source: the thin lens of focal length F focuses S1 at v = F·S1/(S1 − F) (the
-        // lens equation 1/F = 1/S1 + 1/v); a point at S2 blurs into a circle of
-        // diameter c = A·v·|S2 − S1| / (S1·S2) on that sensor. Scaled by 1/v to the
-        // image plane at distance 1: c/v = A·|S2 − S1| / (S1·S2), for any F (here
-        // F = 0.05, to show it drops out).
-        const double F = 0.05, v = F * S1 / (S1 - F);
-        const double c = A * v * std::abs(S2 - S1) / (S1 * S2);
-        const double expected = c / v;
-        CHECK(rb::blurCircleDiameter(A, S1, S2) == Approx(expected).epsilon(1e-12));
-        // The rays meet the plane at S2 around the pinhole ray's point; seen from
-        // the eye, their spread on the image plane is (spread in the world) / S2.
-        const Vec3 middle = atDepth(camera, camera.generateRay(centre.x, centre.y), S2);
-        double reach = 0.0, sumSquares = 0.0;
-        for (int s = 0; s < 4096; ++s) {
-            rb::Sampler sampler(seed(), 7, s);
-            const rb::Ray ray = thin.rayThrough(camera, centre, lensCell(s, 64, sampler));
-            const Vec3 q = atDepth(camera, ray, S2) - middle;
-            const Vec2 image(glm::dot(q, camera.right()) / S2, glm::dot(q, camera.upVector()) / S2);
-            reach = std::max(
-                reach, disk ? glm::length(image) : std::max(std::abs(image.x), std::abs(image.y)));
-            sumSquares += glm::dot(image, image);
-        }
-        const double R = 0.5 * expected;
-        INFO("depth " << S2 << (disk ? ", disk" : ", square") << ": expected the rays to spread "
-                      << "over a " << (disk ? "circle of radius" : "square of half side")
-                      << " A·|S2 − S1|/(2·S1·S2) = " << R << " (seen from the eye), the "
-                      << "farthest reaching its rim and none beyond; the farthest reaches " << reach
-                      << ", the mean squared distance is " << sumSquares / 4096 << ", expected "
-                      << (disk ? 0.5 : 2.0 / 3.0) * R * R);
-        // The farthest ray lies on the circle of that diameter (the square's half
-        // side), none beyond: with 64 × 64 strata the outermost cells reach within
-        // 2/64 of the rim.
-        CHECK(reach <= R * (1.0 + 1e-9));
-        CHECK(reach >= R * (1.0 - 2.0 / 64.0));
-        // The mean squared distance is the uniform disk's R²/2 (the square's
-        // 2h²/3). Source: ∫ r² dA / π over the unit disk = 1/2; x² + y² averages
-        // 2/3 over [-1,1]².
-        CHECK(sumSquares / 4096 == Approx((disk ? 0.5 : 2.0 / 3.0) * R * R).epsilon(0.01));
+    const bool disk = thin.settings().shape == rb::ApertureShape::Disk;
+    // The rays meet the plane at S2 around the pinhole ray's point; seen from the eye, their
+    // spread on the image plane is (spread in the world) / S2.
+    const Vec3 middle = atDepth(camera, camera.generateRay(centre.x, centre.y), S2);
+    Spread spread{0.0, 0.0};
+    for (int s = 0; s < 4096; ++s) {
+        rb::Sampler sampler(seed(), 7, s);
+        const rb::Ray ray = thin.rayThrough(camera, centre, lensCell(s, 64, sampler));
+        const Vec3 q = atDepth(camera, ray, S2) - middle;
+        const Vec2 image(glm::dot(q, camera.right()) / S2, glm::dot(q, camera.upVector()) / S2);
+        spread.reach =
+            std::max(spread.reach,
+                     disk ? glm::length(image) : std::max(std::abs(image.x), std::abs(image.y)));
+        spread.meanSquare += glm::dot(image, image) / 4096;
     }
+    return spread;
 }
+
+/// The aperture A = 0.5, the focus S1 = 8 and the depths S2 of the blur-circle tests.
+constexpr double kBlurA = 0.5, kBlurS1 = 8.0;
+const double kBlurDepths[] = {3.0, 5.0, 12.0, 40.0};
 
 }  // namespace
 
@@ -279,7 +261,33 @@ SCENARIO("the rays through one image position spread over the thin-lens blur squ
     GIVEN("a square lens of aperture A = 0.5 focused at S1 = 8, and points at S2 = 3, 5, 12, 40") {
         WHEN("4096 stratified lens rays through the image centre reach each depth S2") {
             THEN("they spread over the thin-lens square of each depth, uniformly") {
-                checkBlurCircle(rb::ApertureShape::Square);
+                const rb::ThinLens thin = lens(kBlurA, kBlurS1, 4096, rb::ApertureShape::Square);
+                for (const double S2 : kBlurDepths) {
+                    // Source: the thin lens of focal length F focuses S1 at v = F·S1/(S1 − F)
+                    // (the lens equation 1/F = 1/S1 + 1/v); a point at S2 blurs into a circle
+                    // of diameter c = A·v·|S2 − S1| / (S1·S2) on that sensor. Scaled by 1/v to
+                    // the image plane at distance 1: c/v = A·|S2 − S1| / (S1·S2), for any F
+                    // (here F = 0.05, to show it drops out).
+                    const double F = 0.05, v = F * kBlurS1 / (kBlurS1 - F);
+                    const double c = kBlurA * v * std::abs(S2 - kBlurS1) / (kBlurS1 * S2);
+                    const double expected = c / v;
+                    CHECK(rb::blurCircleDiameter(kBlurA, kBlurS1, S2) ==
+                          Approx(expected).epsilon(1e-12));
+                    const Spread square = spreadAt(thin, S2);
+                    const double h = 0.5 * expected;
+                    INFO("depth " << S2 << ": the farthest ray reaches " << square.reach
+                                  << " and the mean squared distance is " << square.meanSquare
+                                  << "; expected a square of half side A·|S2 − S1|/(2·S1·S2) = "
+                                  << h << " seen from the eye, the farthest reaching its edge "
+                                  << "and none beyond, and the mean squared distance 2h²/3 = "
+                                  << 2.0 / 3.0 * h * h);
+                    // The farthest ray lies on the square's edge, none beyond: with 64 × 64
+                    // strata the outermost cells reach within 2/64 of it.
+                    CHECK(square.reach <= h * (1.0 + 1e-9));
+                    CHECK(square.reach >= h * (1.0 - 2.0 / 64.0));
+                    // Source: x² + y² averages 2/3 over [-1,1]².
+                    CHECK(square.meanSquare == Approx(2.0 / 3.0 * h * h).epsilon(0.01));
+                }
             }
         }
     }
@@ -289,8 +297,27 @@ SCENARIO("the rays through one image position spread over the thin-lens blur cir
          "[ch13][ex13.1][ex13.2]") {
     GIVEN("a disk lens of aperture A = 0.5 focused at S1 = 8, and points at S2 = 3, 5, 12, 40") {
         WHEN("4096 stratified lens rays through the image centre reach each depth S2") {
-            THEN("they spread over the thin-lens circle of each depth, uniformly") {
-                checkBlurCircle(rb::ApertureShape::Disk);
+            THEN("they spread over the circle inscribed in the square lens's blur, uniformly") {
+                // Measured against the square aperture's rays through the same lens, so that a
+                // wrong lens size shows in the thin-lens ray's own row (13.1), not here.
+                const rb::ThinLens disk = lens(kBlurA, kBlurS1, 4096, rb::ApertureShape::Disk);
+                const rb::ThinLens square = lens(kBlurA, kBlurS1, 4096, rb::ApertureShape::Square);
+                for (const double S2 : kBlurDepths) {
+                    const Spread d = spreadAt(disk, S2), q = spreadAt(square, S2);
+                    INFO("depth " << S2 << ": the disk's rays reach " << d.reach
+                                  << ", mean squared distance " << d.meanSquare
+                                  << "; expected them to reach as far as the square's (" << q.reach
+                                  << ") within the last ring of strata, and 3/4 of "
+                                  << "the square's mean squared distance (" << 0.75 * q.meanSquare
+                                  << ")");
+                    // The disk of radius R is inscribed in the square of half side R: the
+                    // farthest rays of both reach R, within 2/64 with 64 × 64 strata.
+                    CHECK(d.reach <= q.reach / (1.0 - 2.0 / 64.0));
+                    CHECK(d.reach >= q.reach * (1.0 - 2.0 / 64.0));
+                    // Source: ∫ r² dA / π over the unit disk = 1/2; x² + y² averages 2/3 over
+                    // [-1,1]²: the ratio is 3/4.
+                    CHECK(d.meanSquare / q.meanSquare == Approx(0.75).epsilon(0.01));
+                }
             }
         }
     }

@@ -44,6 +44,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import regions as rg  # noqa: E402
+import student_docs as sd  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 INFO = ".assignment.json"
@@ -97,7 +98,8 @@ def left_out(path: str) -> bool:
     export writes its own Makefile and README)."""
     prefixes = ("scenes/seeds/", "scenes/showcase", ".ci/", "docs/", "tests/ladder.sh",
                 "tests/docs_warnings.sh", "tests/scenes/seeds.sh", "tests/perf/", "tests/fuzz/",
-                "tests/exercises/README.md")
+                "tests/exercises/README.md", "tests/exercises/student_docs.py",
+                "tests/student_docs.sh")
     # Build folders and exported projects in the working tree are nobody's source, even when
     # .gitignore does not name them (build-ex/, assignment-ch05/): an export would copy them.
     top = path.split("/", 1)[0]
@@ -122,10 +124,9 @@ def shared_test_fits(root: Path, path: str, chapters: dict[int, dict], last: int
 
 
 def tracked_files(root: Path) -> list[str]:
-    """The repository's files: git's tracked and untracked-but-not-ignored ones."""
-    out = subprocess.run(["git", "-C", str(root), "ls-files", "-co", "--exclude-standard"],
-                         stdout=subprocess.PIPE, text=True, check=True).stdout
-    return sorted({p for p in out.split("\n") if p and (root / p).is_file()})
+    """The repository's files that git tracks (as they are in the working tree): untracked
+    work in progress never reaches an export."""
+    return sd.git_files(root)
 
 
 def page_of(root: Path, n: int) -> Path | None:
@@ -370,7 +371,10 @@ def export(args) -> int:
     # folder (make test's grade test exports into build/grade-test/class/NAME).
     if dest == root or root in dest.parents and not dest.relative_to(root).parts[0].startswith(
             ("assignment", "build")):
-        sys.exit(f"assignment: refusing to write into {dest}")
+        sys.exit(f"assignment: refusing to write into {dest}: an export inside raybook "
+                 f"would mix with raybook's own files; use a folder whose name starts with "
+                 f"'assignment' or 'build' (such as {root / f'assignment-ch{n:02d}'}), or a "
+                 f"folder outside {root}")
     files = [p for p in tracked_files(root) if not left_out(p)
              and (owner(p, chapters) or 0) <= n and shared_test_fits(root, p, chapters, n)]
     exercises = exercise_info(root, n)
@@ -405,6 +409,25 @@ def export(args) -> int:
         "@WHOLE_BOOK@", "|".join(WHOLE_BOOK_SUITES + [s for s, k in SUITES_NEEDING.items()
                                                      if k > n])).encode()
     contents["README.md"] = readme(root, n, exercises, left).encode()
+    # The golden report's advice: raybook's maintainers re-render a golden image on purpose
+    # (make golden-update); an assignment has no such target, its golden images are fixed.
+    for rel in ("tests/golden/imgdiff.cpp", "tests/golden/run_golden.sh"):
+        if rel in contents:
+            text = re.sub(r'If (?:the|a) change is intended, run <code>make(?:\s|"\s*")*'
+                          r'golden-update</code> and say(?:[^."]|"\s*")*\.',
+                          "The golden images are raybook's: change your code in src/, never "
+                          "them.", contents[rel].decode())
+            text = text.replace("; run make golden-update",
+                                "; export the assignment again (raybook's make assignment N)")
+            contents[rel] = text.encode()
+    for rel, data in contents.items():
+        if b"golden-update" in data:
+            sys.exit(f"assignment: {rel} would tell a student to run make golden-update, which "
+                     f"an assignment lacks: teach export() to reword it")
+    # The docs of chapters 1..N (make docs): chapter N's listings show the stubs, since the
+    # sources do.
+    contents.update(sd.export_docs(root, n, files, {
+        p: contents[p].decode() for p in contents if re.match(r"^chapters/\d\d-.*\.md$", p)}))
     contents[".gitignore"] = b"/build/\n/rt\n/rt.tmp*\n/*.png\n"
     scene = scene_of(root, n)
     info = {"chapter": n, "page": str(page_of(root, n).relative_to(root)),
@@ -506,10 +529,13 @@ def list_tests(program: Path, spec: str) -> list[str]:
     return [l for l in out.split("\n") if l.strip()] if code >= 0 else []
 
 
-def run_tests(program: Path, names: list[str], cwd: Path) -> list[dict]:
-    """Run each test in its own process (a crash or hang fails that test alone)."""
+def run_tests(program: Path, names: list[str], cwd: Path, fail_fast: bool = False) -> list[dict]:
+    """Run each test in its own process (a crash or hang fails that test alone); with
+    `fail_fast`, stop at the first failure."""
     results = []
     for name in names:
+        if fail_fast and results and not results[-1]["passed"]:
+            break
         code, out = run([str(program), catch_escape(name)], TEST_TIMEOUT, cwd=cwd)
         why = ""
         if code != 0:
@@ -533,11 +559,14 @@ def row_spec(exercises: list[dict], k: int) -> str:
 
 
 def check_project(project: Path, build: Path, quiet: bool = False, golden: bool = True,
-                  others: bool = True) -> dict:
+                  others: bool = True, rows: set[int] | None = None,
+                  fail_fast: bool = False) -> dict:
     """Build and check one exported project; return its results (never raises on a student's
     failure: a build failure is a result). Without `golden` the chapter's binary is neither
-    built nor rendered, without `others` the untagged tests are not run (the round trip's
-    steps between the stubbed and the solved project)."""
+    built nor rendered, without `others` the untagged tests are not run; only the exercise
+    rows in `rows` (indices from 0) are run when it is given, the others are "not run"; with
+    `fail_fast` a row stops at its first failing test (its verdict is the same). The round
+    trip's steps between the stubbed and the solved project use these."""
     info = json.loads((project / INFO).read_text())
     n = info["chapter"]
     result = {"project": str(project), "chapter": n, "build": "ok", "build_log": "",
@@ -566,7 +595,11 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
         spec = row_spec(info["exercises"], k)
         names = list_tests(program, spec)
         tagged.update(names)
-        tests = run_tests(program, names, project)
+        if rows is not None and k not in rows:
+            result["exercises"].append({**e, "spec": spec, "tests": len(names), "passed": 0,
+                                        "status": "not run", "failures": []})
+            continue
+        tests = run_tests(program, names, project, fail_fast)
         passed = sum(t["passed"] for t in tests)
         status = "pass" if names and passed == len(names) else "fail"
         result["exercises"].append({**e, "spec": spec, "tests": len(names), "passed": passed,
@@ -855,10 +888,17 @@ def list_exercises(_args) -> int:
 
 
 def rows_line(result: dict) -> str:
-    """One project state's rows, compactly: 13.1 5/5, 13.2 0/3, ..."""
+    """One project state's rows, compactly: 13.1 5/5, 13.2 red, 13.3 - (tests passed of the
+    row's tests; red: stopped at its first failing test; -: not run)."""
     if result["build"] != "ok":
         return f"build {result['build']}"
-    return ", ".join(f"{e['name']} {e['passed']}/{e['tests']}" for e in result["exercises"])
+    def cell(e: dict) -> str:
+        if e["status"] == "not run":
+            return "-"
+        if e["passed"] + len(e["failures"]) < e["tests"]:
+            return "red"  # stopped at its first failing test
+        return f"{e['passed']}/{e['tests']}"
+    return ", ".join(f"{e['name']} {cell(e)}" for e in result["exercises"])
 
 
 def step_problems(result: dict, written: int, what: str) -> list[str]:
@@ -869,6 +909,8 @@ def step_problems(result: dict, written: int, what: str) -> list[str]:
         return [f"{what}: does not build:\n{result['build_log']}"]
     problems = []
     for k, e in enumerate(result["exercises"]):
+        if e["status"] == "not run":
+            continue
         if e["tests"] == 0:
             problems.append(f"{what}: exercise {e['name']}'s row has no test ({e['spec']}: "
                             f"tagged {e['tag']} and no later exercise)")
@@ -911,13 +953,17 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
                    stdout=subprocess.DEVNULL)
     regions = [r for r in rg.find_regions(ROOT) if r.chapter == n]
     problems, log = [], []
-    result = check_project(project, build, golden=False, others=False)
+    result = check_project(project, build, golden=False, others=False, fail_fast=True)
     problems += step_problems(result, 0, "stubbed")
     log.append(f"stubbed {rows_line(result)}")
     for k, r in enumerate(regions, start=1):
         solve_regions(project, {r.id})
         last = k == len(regions)
-        result = check_project(project, build, golden=last, others=last)
+        # Exercise k's row must pass and the later ones fail (each stops at its first failing
+        # test); the earlier rows passed at their own step, and are run again once solved.
+        result = (check_project(project, build) if last else
+                  check_project(project, build, golden=False, others=False,
+                                rows=set(range(k - 1, len(regions))), fail_fast=True))
         problems += step_problems(result, k, f"{n}.1-{r.name} written")
         if last and not passed_all(result):
             failed = result.get("others", {}).get("failures", [])
