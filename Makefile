@@ -118,9 +118,20 @@ demo: rt
 	./rt --features=all scenes/showcase.lua
 	@echo "demo image: $$(pwd)/showcase.png"
 
+# make docs EDITION=student: the student edition, every exercise region's code replaced by its
+# stub in the listings (tests/exercises/student_docs.py), into docs/student/html, for an
+# instructor to publish.
 docs: configure
+ifeq ($(EDITION),student)
+	cmake --build $(BUILD) --target docs-student
+	@echo "docs (student edition): $$(pwd)/docs/student/html/index.html"
+else ifeq ($(EDITION),)
 	cmake --build $(BUILD) --target docs
 	@echo "docs: $$(pwd)/docs/html/index.html"
+else
+	@echo "make docs: EDITION=$(EDITION) is not an edition; leave it out (the full docs) or use EDITION=student" >&2
+	@exit 2
+endif
 
 # Regenerate every golden image deliberately (the chapter scenes, each by its own chapter's
 # binary, and the seed scenes by the newest); say why in the commit message.

@@ -9,7 +9,7 @@ CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
 # of make test here.
 WHOLE_BOOK := @WHOLE_BOOK@
 
-.PHONY: configure rt check test clean $(CHAPTER_TARGETS)
+.PHONY: configure rt check test docs clean $(CHAPTER_TARGETS)
 
 $(BUILD)/CMakeCache.txt: CMakeLists.txt
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
@@ -37,5 +37,11 @@ test: configure
 	cmake --build $(BUILD) -j $(JOBS)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -E '^($(WHOLE_BOOK))$$'
 
+# The chapter pages of chapters 1..$(CHAPTER), with chapter $(CHAPTER)'s exercises as stubs in the listings
+# and the formulas drawn by MathJax from docs/html/mathjax (Debian's libjs-mathjax; no network).
+docs: configure
+	cmake --build $(BUILD) --target docs
+	@echo "docs: $$(pwd)/docs/html/index.html"
+
 clean:
-	rm -rf $(BUILD) rt
+	rm -rf $(BUILD) rt docs/html
