@@ -720,14 +720,6 @@ def grade(args) -> int:
         sys.exit(f"grade: no exported assignment in {target} (looked for {INFO})")
     out = Path(args.csv) if args.csv else (target if target.is_dir() and len(projects) > 1
                                           else target.parent) / "grades.csv"
-    # Compile what is the same once: a compiler cache keyed on the preprocessed source, with
-    # each project's folder taken out of the key (objcache.py), so the second student's build
-    # compiles only the files that student changed. Kept beside the builds for the next run.
-    cache_root = Path(args.build_root).resolve() if args.build_root else target
-    os.environ.setdefault("RB_COMPILER_LAUNCHER",
-                          f"{sys.executable};{Path(__file__).resolve().parent / 'objcache.py'}")
-    os.environ.setdefault("RB_OBJCACHE", str(cache_root / ".raybook-objcache"))
-    os.environ.setdefault("RB_OBJCACHE_STRIP", str(projects[0].parent))
     rows = []
     exercise_names: list[str] = []
     for project in projects:
