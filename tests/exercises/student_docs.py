@@ -16,7 +16,8 @@ Commands:
     student_docs.py solution-lines ROOT CHAPTER
         print, one a line, the distinctive lines of chapter CHAPTER's regions in raybook's
         source (ROOT): lines of at least 20 characters that occur in no file of the stubbed
-        tree's src/. tests/student_docs.sh requires that none of them reach the built pages.
+        tree's src/, in no test and on no chapter page. tests/student_docs.sh requires that
+        none of them reach the built pages.
 
 assignment.py's export uses export_docs() to give each assignment its own docs/Doxyfile,
 main page and the figures of chapters 1..N: the export's sources already hold chapter N's
@@ -93,16 +94,20 @@ def edition(args) -> int:
 
 def solution_lines(root: Path, chapter: int) -> list[str]:
     """Distinctive lines of a chapter's regions: long enough to be the solution's own, and in
-    no file of the stubbed src/ (so a line that only the solution has)."""
+    no file of the stubbed src/, the tests or the pages (so a line that only the solution
+    has)."""
     regions = [r for r in rg.find_regions(root) if r.chapter == chapter]
     by_file: dict[Path, list[rg.Region]] = {}
     for r in regions:
         by_file.setdefault(r.path, []).append(r)
-    # Every line of the stubbed src/, whitespace runs as one space: a solution line that is
-    # part of one of them (a declaration the rest of the code repeats) says nothing.
+    # Every line of the stubbed src/, of the tests and of the chapter pages, whitespace runs as
+    # one space: a solution line that is part of one of them (a declaration the rest of the
+    # code repeats, a test's own reference code, a formula the page writes as code) is not
+    # the region's listing, and its absence would prove nothing.
     elsewhere = []
-    for path in sorted((root / "src").rglob("*")):
-        if path.suffix in (".cpp", ".h"):
+    for path in sorted([*(root / "src").rglob("*"), *(root / "tests").rglob("*"),
+                        *(root / "chapters").glob("*.md")]):
+        if path.suffix in (".cpp", ".h", ".md") and path.is_file():
             text = stubbed(path, by_file[path]) if path in by_file else path.read_text()
             elsewhere += [" ".join(l.split()) for l in text.split("\n")]
     blob = "\n".join(elsewhere)
