@@ -344,7 +344,9 @@ def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
             f"| `build/tests/raybook_check \"[ex{n}.1]\"` | after `make check`, runs the "
             f"tests that need exercise {n}.1 with Catch2's full messages "
             f"(`check` names the spec of a failing row) |",
-            f"| `make test` | every test of chapters 1 to {n} and their golden images |", "",
+            f"| `make test` | every test of chapters 1 to {n} and their golden images |",
+            f"| `make docs` | the chapter pages 1 to {n} with their formulas and code, into "
+            f"`docs/html/index.html` (chapter {n}'s exercises show their stubs) |", "",
             "A stub that is still in place makes its tests fail with a message such as "
             f"`exercise {exercises[0]['name'] if exercises else n} (...) is not written yet: "
             "read the section ... of the chapter page`.", ""]
