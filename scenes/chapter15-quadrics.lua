@@ -5,8 +5,8 @@
 -- Pale blue walls and a ceiling stand around it all, so that what the glass reflects and bends
 -- upwards is light, and the cylinder's outline reads (against the black background it did not).
 -- Every shape is the unit cylinder or cone (height 2 along y, radius 1) under transforms,
--- written in raybook's own calls: seed 001's gr.cyllinder and gr.cone('name') would mark the
--- scene as pre-2015, whose transforms apply in the reverse order.
+-- written in raybook's own calls: seed 001's gr.cyllinder would mark the scene as pre-2015,
+-- whose transforms apply in the reverse order.
 gr.option('max_depth', 8)
 
 local light  = gr.material{kd = {0.85, 0.82, 0.72}, ks = {0, 0, 0}, shininess = 1}

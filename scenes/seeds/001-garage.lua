@@ -16,8 +16,8 @@
 -- 7 (glossiness, scatter and dist: the epoxy floor and the translucent water), 8 (aa),
 -- 11 (ripples on the water: seed 001's objective 4, which it left undone), 13 (gr.render's
 -- 14th argument, {aperture, focalLength, dof}), 14 (node:csg cuts the wheel arches) and
--- 15 (gr.cyllinder: wheels, hub caps and headlamps; gr.cone: the lamp shades). gr.cyllinder and
--- gr.cone are seed 001's calls, so they too mark the scene as pre-2015 (rt says "era: pre-2015
+-- 15 (gr.cyllinder: wheels, hub caps and headlamps; gr.cone: the lamp shades). gr.cyllinder is
+-- seed 001's own spelling, so it too marks the scene as pre-2015 (rt says "era: pre-2015
 -- framework" on stderr).
 -- Chapters 9, 10 and 12 are not used: no meshes, textures or tone map in seed 001's report.
 -- Parts of the seed's scene that wait for later chapters: none (seed 001 named photon mapping,
