@@ -281,7 +281,7 @@ fi
 # and the grid's build and gather times (ch16_photon_speed). Each output is also kept in
 # BUILD_DIR/bench/ch16-povray.txt and ch16-speed.txt: the summary below reads their "target NAME
 # VALUE" lines.
-rm -f "$out/ch16-povray.txt" "$out/ch16-speed.txt"  # no stale figures in the summary
+rm -f "$out/ch16-povray.txt" "$out/ch16-speed.txt" "$out/grade.txt"  # no stale figures
 if [ -x "$build/rt_ch16" ]; then
   if [ -x "$build/tests/perf/ch08/ch08_aa_charts" ]; then
     progress "caustics against POV-Ray's photons"
@@ -292,6 +292,13 @@ if [ -x "$build/rt_ch16" ]; then
   say ""
   PHOTON_RUNS=$runs bash "$root/tests/perf/ch16/photon_speed.sh" "$build" | tee "$out/ch16-speed.txt" | tee -a "$report"
 fi
+
+# ---- make grade at class scale (issue 21) ---------------------------------------------------
+# A class of GRADE_STUDENTS (default 100) chapter-13 projects graded from a cold start; kept in
+# BUILD_DIR/bench/grade.txt for the summary.
+progress "make grade, a class of ${GRADE_STUDENTS:-100}"
+say ""
+bash "$root/tests/perf/grade/grade_speed.sh" "$out/grade" 13 "${GRADE_STUDENTS:-100}" | tee "$out/grade.txt" | tee -a "$report"
 
 # ---- raybook's BVH against Embree ----------------------------------------------------------
 # Each run's output is also kept in BUILD_DIR/bench/bvh_vs_embree.Nt.txt: the summary below reads
@@ -412,5 +419,8 @@ record_row "caustics vs POV-Ray photons, equal error (x)" "$(target_line caustic
            "(no target; raybook / POV-Ray time, raybook k = 50 nearest)"
 record_row "  the same, raybook's progressive defaults (x)" "$(target_line caustics_povray_progressive "$ch16povray")" \
            "(no target; n/a where no error level is shared)"
+say ""
+say "Issue 21 (a course can run it) targets, this run:"
+target_row "make grade, 100 students of chapter 13 (min)" "$(target_line grade_minutes_per_100 "$out/grade.txt")" "<=" 30 "(grade_speed.sh, a cold start)"
 echo
 echo "bench: table saved to $report"
