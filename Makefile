@@ -82,9 +82,10 @@ assignment:
 	  $(or $(DIR),assignment-ch$(shell printf %02d $(N) 2>/dev/null))
 
 grade:
-	@[ -n "$(DIR)" ] || { echo "usage: make grade DIR=project-or-folder [CSV=grades.csv]" >&2; \
+	@[ -n "$(DIR)" ] || { echo "usage: make grade DIR=project-or-folder [CSV=grades.csv] [PARALLEL=P]" >&2; \
 	  exit 2; }
-	python3 tests/exercises/assignment.py grade $(DIR) $(if $(CSV),--csv $(CSV))
+	python3 tests/exercises/assignment.py grade $(DIR) $(if $(CSV),--csv $(CSV)) \
+	  $(if $(PARALLEL),--parallel $(PARALLEL))
 
 # The assignments' round trip (every chapter: export, make check fails every exercise; restore
 # the regions one at a time, and after each its row and the earlier ones pass, the later ones
