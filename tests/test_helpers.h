@@ -375,7 +375,10 @@ inline rb::Image renderWorld(const rb::World& world, const rb::RenderSettings& s
 /// Render a world on one thread at width × height with `spp` samples per pixel; counts rays.
 inline rb::Image renderSmall(const rb::World& world, int width, int height,
                              rb::RayCounters& counters, int spp = 1) {
-    return renderAt(world, width, height, {.threads = 1, .samplesPerPixel = spp}, counters);
+    rb::RenderSettings settings;
+    settings.threads = 1;
+    settings.samplesPerPixel = spp;
+    return renderAt(world, width, height, settings, counters);
 }
 
 /// renderSmall at 64 × 48 unless told, one ray through each pixel centre.

@@ -471,7 +471,7 @@ int pushLenientStandIn(lua_State* L, const std::string& name) {
         pushMaterial(
             L, std::make_shared<Material>(Material{Colour(0.8, 0.2, 0.8), Colour(0.0), 1.0, {}, {}}));
     } else if (lower.find("light") != std::string::npos) {
-        pushLight(L, PointLight{Vec3(0.0), Colour(0.0), Vec3(1.0, 0.0, 0.0)});
+        pushLight(L, PointLight{Vec3(0.0), Colour(0.0), Vec3(1.0, 0.0, 0.0), nullptr});
     } else {
         auto node = std::make_shared<SceneNode>();
         node->name = lua_type(L, 1) == LUA_TSTRING ? lua_tostring(L, 1) : name;
