@@ -145,6 +145,10 @@ def export_docs(root: Path, n: int, pages: dict[str, str]) -> dict[str, bytes]:
     doxyfile = setting(doxyfile, "INPUT", "docs/mainpage.md chapters src tests")
     doxyfile = setting(doxyfile, "IMAGE_PATH", " ".join(image_dirs))
     doxyfile = setting(doxyfile, "PROJECT_NAME", f"\"raybook, chapters 1 to {n}\"")
+    # Doxygen matches EXCLUDE_PATTERNS against absolute paths: raybook's */build/* would leave
+    # out every file of an export that sits in a folder called build (as make test's does), and
+    # the export's inputs hold no build folder.
+    doxyfile = setting(doxyfile, "EXCLUDE_PATTERNS", "")
     out["docs/Doxyfile"] = ("# The docs of this assignment (written by raybook's make "
                             "assignment N): make docs\n" + doxyfile).encode()
     out["docs/raybook.css"] = (root / "docs/raybook.css").read_bytes()
