@@ -47,7 +47,6 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import regions as rg  # noqa: E402
-import student_docs as sd  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 INFO = ".assignment.json"
@@ -129,7 +128,8 @@ def shared_test_fits(root: Path, path: str, chapters: dict[int, dict], last: int
 def tracked_files(root: Path) -> list[str]:
     """The repository's files that git tracks (as they are in the working tree): untracked
     work in progress never reaches an export."""
-    return sd.git_files(root)
+    import student_docs  # raybook's only: an export's copy of this script never exports
+    return student_docs.git_files(root)
 
 
 def page_of(root: Path, n: int) -> Path | None:
@@ -431,7 +431,8 @@ def export(args) -> int:
                      f"an assignment lacks: teach export() to reword it")
     # The docs of chapters 1..N (make docs): chapter N's listings show the stubs, since the
     # sources do.
-    contents.update(sd.export_docs(root, n, {
+    import student_docs  # raybook's only (see tracked_files)
+    contents.update(student_docs.export_docs(root, n, {
         p: contents[p].decode() for p in contents if re.match(r"^chapters/\d\d-.*\.md$", p)}))
     contents[".gitignore"] = b"/build/\n/rt\n/rt.tmp*\n/*.png\n/docs/html/\n"
     scene = scene_of(root, n)

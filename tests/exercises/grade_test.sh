@@ -7,6 +7,7 @@
 #              that exercise fails, the ones before it pass and score, the golden image fails;
 #   broken     solved, then a syntax error: reported as a build failure with score 0, never
 #              a crash of the grader.
+# Then the solved project's own make check (the export's copy of the scripts) must pass.
 # Checks the printed table and the CSV. The four builds share objects through objcache.py.
 #
 # Usage: bash tests/exercises/grade_test.sh WORK_DIR
@@ -90,4 +91,14 @@ expect(all(r["tests changed"] == "" for r in rows.values()),
        "no project's tests, goldens or scenes differ from a fresh export")
 sys.exit(1 if failures else 0)
 EOF
+
+# The export's own make check, as a student runs it: its copy of assignment.py, not raybook's
+# (a module only raybook has once made every export's make check crash on import).
+if out=$(make -C "$CLASS/solved" --no-print-directory check 2>&1); then
+    echo "ok   the solved project's own make check runs and passes"
+else
+    echo "$out" | tail -20
+    echo "FAIL the solved project's own make check"
+    exit 1
+fi
 echo "grade test: $((SECONDS - start)) s"
