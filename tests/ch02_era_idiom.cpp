@@ -36,18 +36,6 @@ rb::SceneLoadReport loadReport(const std::string& lua, int chapters,
     return report;
 }
 
-/// The world bounds of the first instance named `name`.
-rb::AABB boundsOf(const rb::LoadedRender& render, const std::string& name) {
-    for (const rb::Instance& i : render.instances)
-        if (i.name == name) return i.worldBounds;
-    FAIL("no instance named " << name);
-    return {};
-}
-
-bool near(const Vec3& a, const Vec3& b) {
-    return glm::length(a - b) < 1e-9;
-}
-
 /// A box meant to span x -5..5, y -2..2, z -6..-5.5, placed the way `order` says.
 std::string box(const std::string& name, bool translateFirst) {
     const std::string move = name + ":translate(-5, -2, -6)\n";
@@ -108,9 +96,9 @@ SCENARIO("a scene without signs is placed by its transform idiom", "[ch02][era]"
         THEN("the box spans what its author meant") {
             // Source: post-multiplied, M = T(-5, -2, -6) · S(10, 4, 0.5) sends the unit cube's
             // corners (0,0,0) and (1,1,1) to (-5, -2, -6) and (5, 2, -5.5).
-            const rb::AABB b = boundsOf(renders[0], "wall");
-            CHECK(near(b.lo, Vec3(-5, -2, -6)));
-            CHECK(near(b.hi, Vec3(5, 2, -5.5)));
+            const rb::AABB b = rbtest::boundsOf(renders[0], "wall");
+            CHECK(rbtest::near(b.lo, Vec3(-5, -2, -6)));
+            CHECK(rbtest::near(b.hi, Vec3(5, 2, -5.5)));
         }
     }
     GIVEN("the same box written scale, then translate (the current way)") {
@@ -122,9 +110,9 @@ SCENARIO("a scene without signs is placed by its transform idiom", "[ch02][era]"
             CHECK(r.era.era == rb::Era::Modern);
             CHECK_FALSE(r.era.show);
             CHECK_THAT(r.era.line, Contains("the current way") && Contains("scene.lua:4"));
-            const rb::AABB b = boundsOf(renders[0], "wall");
-            CHECK(near(b.lo, Vec3(-5, -2, -6)));
-            CHECK(near(b.hi, Vec3(5, 2, -5.5)));
+            const rb::AABB b = rbtest::boundsOf(renders[0], "wall");
+            CHECK(rbtest::near(b.lo, Vec3(-5, -2, -6)));
+            CHECK(rbtest::near(b.hi, Vec3(5, 2, -5.5)));
         }
     }
     GIVEN("one box written each way") {
@@ -150,9 +138,9 @@ SCENARIO("a scene without signs is placed by its transform idiom", "[ch02][era]"
             // (z, y, -x), so the stretched cube [0,4]x[0,1]x[0,1] lands on [0,1]x[0,1]x[-4,0].
             CHECK(r.era.era == rb::Era::Legacy);
             CHECK_THAT(r.era.line, Contains("the pre-2015 way") && Contains("scene.lua:4"));
-            const rb::AABB b = boundsOf(renders[0], "beam");
-            CHECK(near(b.lo, Vec3(0, 0, -4)));
-            CHECK(near(b.hi, Vec3(1, 1, 0)));
+            const rb::AABB b = rbtest::boundsOf(renders[0], "beam");
+            CHECK(rbtest::near(b.lo, Vec3(0, 0, -4)));
+            CHECK(rbtest::near(b.hi, Vec3(1, 1, 0)));
         }
     }
     GIVEN("a pane centred, stretched, turned and placed: translate, scale, rotate, translate") {
@@ -213,7 +201,7 @@ SCENARIO("gr.cone('c'), raybook's own first form, does not switch a current scen
             // would be S · T, sending the corner (0,0,0) to (-50, -8, -3).
             CHECK(r.era.era == rb::Era::Modern);
             CHECK_THAT(r.era.line, !Contains("gr.cone"));
-            CHECK(near(boundsOf(renders[0], "wall").lo, Vec3(-5, -2, -6)));
+            CHECK(rbtest::near(rbtest::boundsOf(renders[0], "wall").lo, Vec3(-5, -2, -6)));
         }
     }
 }

@@ -45,18 +45,6 @@ Loaded load(const std::string& lua, rb::SceneLoadOptions options = {}, int chapt
     return result;
 }
 
-/// The world bounds of the first instance named `name`.
-rb::AABB boundsOf(const rb::LoadedRender& render, const std::string& name) {
-    for (const rb::Instance& i : render.instances)
-        if (i.name == name) return i.worldBounds;
-    FAIL("no instance named " << name);
-    return {};
-}
-
-bool near(const Vec3& a, const Vec3& b) {
-    return glm::length(a - b) < 1e-9;
-}
-
 /// A wall placed the pre-2015 way: translate, then scale (post-multiplied: scaled first).
 const std::string kWall =
     "local wall = gr.cube('wall')\n"
@@ -127,9 +115,9 @@ SCENARIO("a seed-001 scene's translate-then-scale walls stand where its author p
             THEN("the unit cube is scaled to 10 x 4 x 0.5, then moved to x -5..5, z -6..-5.5") {
                 // Source: post-multiplication gives M = T(-5, -2, -6) · S(10, 4, 0.5), so the
                 // cube's corner (1,1,1) lands at (-5 + 10, -2 + 4, -6 + 0.5).
-                const rb::AABB b = boundsOf(l.renders[0], "wall");
-                CHECK(near(b.lo, Vec3(-5, -2, -6)));
-                CHECK(near(b.hi, Vec3(5, 2, -5.5)));
+                const rb::AABB b = rbtest::boundsOf(l.renders[0], "wall");
+                CHECK(rbtest::near(b.lo, Vec3(-5, -2, -6)));
+                CHECK(rbtest::near(b.hi, Vec3(5, 2, -5.5)));
             }
             THEN("the wall fills the middle of the rendered picture") {
                 // The camera at (0, 0, 10) looks down -z through the wall's middle (0, 0, -5.5),
@@ -146,8 +134,8 @@ SCENARIO("a seed-001 scene's translate-then-scale walls stand where its author p
             THEN("the wall is scaled after it moved: far to the left, out of the picture") {
                 // Source: M = S(10, 4, 0.5) · T(-5, -2, -6) sends the corner (0,0,0) to
                 // (-50, -8, -3); nothing is left in the middle of the picture.
-                const rb::AABB b = boundsOf(l.renders[0], "wall");
-                CHECK(near(b.lo, Vec3(-50, -8, -3)));
+                const rb::AABB b = rbtest::boundsOf(l.renders[0], "wall");
+                CHECK(rbtest::near(b.lo, Vec3(-50, -8, -3)));
                 auto renders = l.renders;
                 const auto world = rb::buildWorld(std::move(renders[0]), rbtest::chapters(7));
                 CHECK(rbtest::renderSmall(*world, 32, 24).get(16, 12).r == 0.0);
@@ -169,7 +157,7 @@ SCENARIO("Lua 5.1's unpack and string.gfind mark a scene as pre-2015", "[ch02][e
         THEN("it runs as pre-2015, and unpack still returns every value") {
             CHECK(l.report.era.era == rb::Era::Legacy);
             CHECK_THAT(l.report.era.line, Contains("unpack (") && Contains("scene.lua:4)"));
-            CHECK(near(boundsOf(l.renders[0], "wall").lo, Vec3(-5, 0, -6)));
+            CHECK(rbtest::near(rbtest::boundsOf(l.renders[0], "wall").lo, Vec3(-5, 0, -6)));
         }
     }
     GIVEN("a scene that iterates words with string.gfind") {
@@ -268,7 +256,7 @@ SCENARIO("--lenient renders what raybook understands and lists what it ignored",
                 REQUIRE(l.renders[0].instances.size() == 1);
                 const rb::Material* m = l.renders[0].instances[0].material;
                 REQUIRE(m != nullptr);
-                CHECK(near(m->kd, Vec3(0.8, 0.2, 0.8)));
+                CHECK(rbtest::near(m->kd, Vec3(0.8, 0.2, 0.8)));
             }
             THEN("the ignored list names each unknown once, with its count and first line") {
                 REQUIRE(l.report.ignored.size() == 3);
@@ -301,7 +289,7 @@ SCENARIO("a dialect file maps a student's own calls onto raybook's before the sc
         THEN("the sphere is a mirror of reflectivity 0.7, lifted by 3") {
             const rb::Instance& i = l.renders[0].instances.at(0);
             CHECK(i.material->params.at("reflect") == 0.7);
-            CHECK(near(i.worldBounds.lo, Vec3(-1, 2, -1)));
+            CHECK(rbtest::near(i.worldBounds.lo, Vec3(-1, 2, -1)));
         }
     }
     GIVEN("a dialect file with an error on its line 2") {

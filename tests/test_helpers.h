@@ -205,6 +205,19 @@ inline std::string oneMaterialScene(const std::string& material, const std::stri
            extra + renderLine();
 }
 
+/// The world bounds of the first instance named `name` in a loaded render.
+inline rb::AABB boundsOf(const rb::LoadedRender& render, const std::string& name) {
+    for (const rb::Instance& i : render.instances)
+        if (i.name == name) return i.worldBounds;
+    FAIL("no instance named " << name);
+    return {};
+}
+
+/// Two points (or colours) equal to 1e-9.
+inline bool near(const rb::Vec3& a, const rb::Vec3& b) {
+    return glm::length(a - b) < 1e-9;
+}
+
 /// Write `lua` to `fileName` in a fresh temporary folder and run rb::loadScene on it.
 inline std::vector<rb::LoadedRender> loadSceneText(const std::string& lua,
                                                    const rb::FeatureSet& features,
