@@ -134,6 +134,9 @@ constexpr LaterCall kLaterCalls[] = {
     {"photons", 16, "photon_map"},
     {"caustics", 16, "photon_map"},
     {"media", 17, "media"},
+    {"medium", 17, "media"},
+    {"fog", 17, "media"},
+    {"set_medium", 17, "media"},
 };
 }  // namespace
 

@@ -10,6 +10,8 @@
 
 namespace rb {
 
+struct Medium;
+
 /// A shape under a world transform, with its material: one leaf of the flattened scene graph.
 /// The same shape may appear in many instances (A4 instancing).
 struct Instance {
@@ -20,6 +22,14 @@ struct Instance {
     Mat3 normalToWorld{1.0};  ///< Inverse transpose of objectToWorld's linear part.
     AABB worldBounds;
     std::string name;
+    /// Chapter 17: the medium inside this closed shape (node:set_medium), or null.
+    const Medium* medium = nullptr;
+    /// The instance only bounds its medium (its node has no material of its own): it is no
+    /// surface, and chapter 17 takes it out of the scene's instances.
+    bool mediumBoundaryOnly = false;
+    /// Chapter 17: the index of the medium node above this one (the medium this one nests
+    /// in, which it replaces inside), or -1; and this medium node's own index.
+    int mediumParent = -1, mediumIndex = -1;
 
     /// Set the transform and everything derived from it.
     void setTransform(const Mat4& m);

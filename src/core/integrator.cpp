@@ -8,12 +8,27 @@ namespace rb {
 Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth,
                          const MediumStack& media, double weight) const {
     Hit hit;
-    if (!scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit))
-        return scene_.background;
+    const bool found =
+        scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit);
+    const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight};
+    if (pipeline_.media) {
+        // Media (chapter 17): the light they scatter in, plus what reaches us from the end.
+        Colour throughput(1.0);
+        const Colour scattered = pipeline_.media->segment(
+            ctx, ray, found ? hit.t : std::numeric_limits<double>::infinity(), throughput);
+        if (throughput == Colour(0.0)) return scattered;
+        return scattered + throughput * (found ? shade(ctx, ray, hit) : scene_.background);
+    }
+    if (!found) return scene_.background;
+    return shade(ctx, ray, hit);
+}
+// [trace]
+
+// [shade]
+Colour Integrator::shade(const ShadeContext& ctx, const Ray& ray, Hit& hit) const {
     // Smooth normals (chapter 9), then bumps (chapter 11), before anything shades.
     for (const auto& normal : pipeline_.normals) normal->apply(ray, hit);
     // Local shading, then each chapter's secondary term.
-    const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight};
     Colour colour;
     if (pipeline_.textureLookup && hit.material && !hit.material->textures.empty()) {
         // A textured material (chapter 10): the surface shader sees its colours at this
@@ -28,7 +43,7 @@ Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters
     for (const auto& term : pipeline_.terms) colour = term->apply(ctx, ray, hit, colour);
     return colour;
 }
-// [trace]
+// [shade]
 
 // [headlight]
 Colour shadeHeadlight(const ShadeContext&, const Ray& ray, const Hit& hit) {

@@ -96,6 +96,23 @@ class ShadingNormal {
 /// textures). Called only for a hit whose material has textures.
 using TextureLookup = Material (*)(const Hit& hit);
 
+/// What media do to the light along a ray (chapter 17's fog and smoke): the extension point
+/// for everything between a ray's origin and the surface it reaches.
+class MediaTerm {
+  public:
+    virtual ~MediaTerm() = default;
+    /// The light scattered towards the ray's origin by the media along it up to tEnd (in units
+    /// of ray.d; infinity when the ray leaves the scene), and in `throughput` the fraction of
+    /// the light from tEnd (the surface or the background) that arrives. A zero throughput
+    /// means the surface need not be shaded.
+    virtual Colour segment(const ShadeContext& ctx, const Ray& ray, double tEnd,
+                           Colour& throughput) const = 0;
+    /// The fraction of light that crosses the media from a to b (a shadow ray whose surfaces
+    /// were already tested).
+    virtual Colour transmittance(const Vec3& a, const Vec3& b, Sampler& sampler,
+                                 RayCounters& counters) const = 0;
+};
+
 /// How a render is put together; each enabled feature adjusts it.
 struct Pipeline {
     SurfaceShader surface = nullptr;                        ///< Local shading (chapter 1, then 2).
@@ -119,6 +136,8 @@ struct Pipeline {
     /// Work before the first camera ray (chapter 16's photon tracing), in chapter order;
     /// empty by default.
     std::vector<std::shared_ptr<PrePass>> prePasses;
+    /// Participating media along every ray (chapter 17), or null: rays cross empty space.
+    std::shared_ptr<const MediaTerm> media;
 };
 
 /// Traces rays through a scene with a pipeline.
@@ -134,10 +153,21 @@ class Integrator {
         counters.add(RayKind::Shadow);
         return scene_.aggregate->occluded(ray, tMax);
     }
+    /// The fraction of light the media let through from a to b: 1 without media (chapter 17).
+    Colour transmittance(const Vec3& a, const Vec3& b, Sampler& sampler,
+                         RayCounters& counters) const {
+        return pipeline_.media ? pipeline_.media->transmittance(a, b, sampler, counters)
+                               : Colour(1.0);
+    }
+    /// True when media fill some of the scene (chapter 17).
+    bool hasMedia() const { return pipeline_.media != nullptr; }
     /// The pipeline this integrator runs.
     const Pipeline& pipeline() const { return pipeline_; }
 
   private:
+    /// The colour of the surface at hit: local shading, then each chapter's secondary term.
+    Colour shade(const ShadeContext& ctx, const Ray& ray, Hit& hit) const;
+
     const Scene& scene_;
     const Pipeline& pipeline_;
 };

@@ -324,6 +324,7 @@ int grRender(lua_State* L) {
     LoadedRender r;
     RenderJob& job = r.job;
     job.options = sceneBuilder(L).sceneOptions;
+    job.fog = sceneBuilder(L).fog;
     lua_Debug ar;
     if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar))
         job.where = std::string(ar.short_src) + ":" + std::to_string(ar.currentline);

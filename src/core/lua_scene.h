@@ -82,6 +82,7 @@ struct SceneBuilder {
     };
     std::map<std::string, OptionSpec> optionNames;  ///< gr.option names and their ranges.
     std::map<std::string, double> sceneOptions;     ///< gr.option values set so far.
+    std::shared_ptr<const Medium> fog;              ///< Chapter 17's gr.fog so far, or null.
     SceneLoadTimes times;
     bool legacy = false;  ///< This run's era: transforms post-multiply (pre-2015 framework).
     std::vector<EraSign> eraSigns;  ///< What the scene used that belongs to one era.

@@ -88,11 +88,13 @@ struct CompoundContext {
     std::vector<std::shared_ptr<const Shape>>* built;
     const std::set<std::string>& featuresOn;
     std::map<std::string, size_t>* leftOut;  ///< Operands left out, by feature, or null.
+    int* media;                              ///< Medium nodes met so far (chapter 17).
 };
 
 // [flatten]
 void flattenNode(const SceneNode& node, const Mat4& parentToWorld, const Material* inherited,
-                 const CompoundContext& compounds, std::vector<Instance>& out) {
+                 const CompoundContext& compounds, std::vector<Instance>& out,
+                 int mediumAbove = -1) {
     // Compose: the node's transform applies first, then everything above it.
     const Mat4 toWorld = parentToWorld * node.transform;
     const Material* material = node.material ? node.material.get() : inherited;
@@ -124,10 +126,18 @@ void flattenNode(const SceneNode& node, const Mat4& parentToWorld, const Materia
         instance.material = material;
         instance.name = node.name;
         instance.setTransform(toWorld * node.shapeTransform);
+        // A medium node (chapter 17) bounds its medium; the media under it nest in it.
+        if (node.medium) {
+            instance.medium = node.medium.get();
+            instance.mediumBoundaryOnly = !node.material;
+            instance.mediumParent = mediumAbove;
+            instance.mediumIndex = mediumAbove = (*compounds.media)++;
+        }
         out.push_back(instance);
     }
     if (compoundShape) return;
-    for (const auto& child : node.children) flattenNode(*child, toWorld, material, compounds, out);
+    for (const auto& child : node.children)
+        flattenNode(*child, toWorld, material, compounds, out, mediumAbove);
 }
 // [flatten]
 
@@ -151,7 +161,9 @@ std::vector<Instance> flatten(const SceneNode& root, const Material* fallback,
                          " node paths, more than the limit of " + std::to_string(kMaxInstances) +
                          " (a DAG that doubles at every level?)");
     }
-    flattenNode(root, Mat4(1.0), fallback, CompoundContext{built, featuresOn, leftOut}, instances);
+    int media = 0;
+    flattenNode(root, Mat4(1.0), fallback, CompoundContext{built, featuresOn, leftOut, &media},
+                instances);
     return instances;
 }
 

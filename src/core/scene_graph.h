@@ -14,6 +14,8 @@
 
 namespace rb {
 
+struct Medium;
+
 /// Makes one shape out of a node's children (chapter 14's CSG): the extension point for
 /// shapes whose parts are whole subgraphs. Flattening gives it each child's leaves, placed in
 /// the node's own space, and the node becomes one instance of the shape it returns.
@@ -46,6 +48,9 @@ struct SceneNode {
     std::vector<std::shared_ptr<SceneNode>> children;
     /// Non-null for a node whose children are the parts of one shape (a CSG node).
     std::shared_ptr<const CompoundShape> compound;
+    /// Chapter 17's node:set_medium: the medium filling the inside of this node's closed
+    /// shape, or null. Without a material of its own the shape only bounds the medium.
+    std::shared_ptr<const Medium> medium;
 
     /// Releases the children without recursing once per level, so that dropping a chain of a
     /// million nested nodes cannot overflow the stack.
@@ -97,6 +102,7 @@ struct RenderJob {
     std::vector<PointLight> lights;
     std::string where;                      ///< "scene.lua:42", for messages about this job.
     std::map<std::string, double> options;  ///< Dialect extras (seed 001's aa, ss, dist, ...).
+    std::shared_ptr<const Medium> fog;      ///< Chapter 17's gr.fog: fills all space, or null.
 };
 
 }  // namespace rb

@@ -48,6 +48,9 @@ std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& feature
             throw InputError(job.where.empty() ? e.what() : job.where + ": " + e.what());
         }
     }
+    // A shape that only bounds a medium is no surface: chapter 17 took what it needs of it,
+    // and with chapter 17 off it is not there at all.
+    std::erase_if(scene.instances, [](const Instance& i) { return i.mediumBoundaryOnly; });
     scene.aggregate = world->pipeline.buildAggregate(scene.instances);
     return world;
 }

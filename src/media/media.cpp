@@ -1,10 +1,92 @@
 #include "media/media.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/render_context.h"
+#include "core/scene_graph.h"
+
 namespace rb {
 
+MediaSettings mediaSettings(const RenderContext& context) {
+    MediaSettings s;
+    const std::string method = context.cliOption("media", "track");
+    if (method != "track" && method != "march")
+        throw InputError("--media: expected 'track' or 'march', got '" + method + "'");
+    s.march = method == "march";
+    const std::string shadows = context.cliOption("media-shadows", "ratio");
+    if (shadows == "ratio")
+        s.shadows = TransmittanceMethod::Ratio;
+    else if (shadows == "delta")
+        s.shadows = TransmittanceMethod::Delta;
+    else
+        throw InputError("--media-shadows: expected 'ratio' or 'delta', got '" + shadows + "'");
+    const std::string step = context.cliOption("media-step");
+    if (!step.empty()) {
+        s.step = parseNumberOption("--media-step", step);
+        if (!(s.step > 0.0)) throw InputError("--media-step: must be > 0, got " + step);
+    }
+    const std::string res = context.cliOption("media-majorant");
+    if (!res.empty()) {
+        const double n = parseNumberOption("--media-majorant", res);
+        if (!(n >= 1.0 && n <= 128.0 && n == std::floor(n)))
+            throw InputError("--media-majorant: expected a whole number from 1 to 128, got " + res);
+        s.majorantResolution = static_cast<int>(n);
+    }
+    return s;
+}
+
+namespace {
+
+/// Where fog ends: around every surface, medium boundary, light and the eye, with half the
+/// size again on each side. Beyond it a ray reaches the background.
+AABB fogBounds(const std::vector<Instance>& instances, const Scene& scene, const RenderJob& job) {
+    AABB box;
+    for (const Instance& i : instances)
+        if (isFinite(i.worldBounds.lo) && isFinite(i.worldBounds.hi)) {
+            box.extend(i.worldBounds.lo);
+            box.extend(i.worldBounds.hi);
+        }
+    for (const PointLight& light : scene.lights) box.extend(light.position);
+    box.extend(job.camera.eye);
+    const Vec3 pad = 0.5 * (box.hi - box.lo) + Vec3(1e-3);
+    return AABB{box.lo - pad, box.hi + pad};
+}
+
+// [install-media]
+void installMedia(Pipeline& pipeline, Scene& scene, const RenderContext& context) {
+    MediaSettings settings = mediaSettings(context);
+    std::vector<Instance> boundaries;
+    for (const Instance& i : scene.instances)
+        if (i.medium) boundaries.push_back(i);
+    const Medium* fog = context.job.fog.get();
+    // A scene without media pays nothing: no term.
+    if (boundaries.empty() && !fog) return;
+    // Nested media come later in the scene graph's order, and win inside.
+    std::stable_sort(boundaries.begin(), boundaries.end(),
+                     [](const Instance& a, const Instance& b) { return a.mediumIndex < b.mediumIndex; });
+    const AABB box = fogBounds(scene.instances, scene, context.job);
+    if (settings.step == 0.0) settings.step = glm::length(box.hi - box.lo) / 400.0;
+    pipeline.media = std::make_shared<ParticipatingMedia>(std::move(boundaries), fog, box, settings);
+}
+// [install-media]
+
+}  // namespace
+
 Feature mediaFeature() {
-    return {"media", 17, "participating media: fog, light shafts and smoke", true, nullptr,
-            nullptr};
+    return {"media",
+            17,
+            "participating media: fog, light shafts and smoke (delta and ratio tracking)",
+            true,
+            bindMedia,
+            installMedia,
+            {{"media", "track|march",
+              "free flights by delta tracking, or ray marching (single scattering only)", "track"},
+             {"media-shadows", "ratio|delta", "shadow-ray transmittance estimator", "ratio"},
+             {"media-step", "S", "ray-marching step, in scene units",
+              "1/400 of the scene's size (fog box diagonal)"},
+             {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"}}};
 }
 
 }  // namespace rb

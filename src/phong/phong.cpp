@@ -42,7 +42,10 @@ Colour lightFromPoint(const ShadeContext& ctx, const Hit& hit, const Material& m
     const Vec3 origin = offsetRayOrigin(hit.p + hit.shadowOffset, ng, l);
     if (ctx.integrator.occluded(Ray{origin, from - origin}, 1.0, ctx.counters)) return Colour(0.0);
     // [exercise-shadow-ray]
-    return emission * light.intensityAt(r) * phongBrdfTerm(m, n, l, v);
+    const Colour lit = emission * light.intensityAt(r) * phongBrdfTerm(m, n, l, v);
+    // Fog or smoke on the way (chapter 17) dims the light.
+    if (!ctx.integrator.hasMedia() || lit == Colour(0.0)) return lit;
+    return lit * ctx.integrator.transmittance(hit.p, from, ctx.sampler, ctx.counters);
 }
 // [shadow-ray]
 

@@ -1,0 +1,215 @@
+#include "media/participating_media.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "media/henyey_greenstein.h"
+
+namespace rb {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// The most times one ray is followed through one boundary; a closed shape a ray crosses
+/// more often than this (a very wrinkled mesh) is taken as left after the last.
+constexpr int kMaxCrossings = 64;
+
+/// The largest channel.
+double maxChannel(const Colour& c) { return std::max({c.r, c.g, c.b}); }
+
+/// Where the ray crosses the surface of `boundary`, from t = 0 to infinity, in order.
+int crossings(const Instance& boundary, const Ray& ray, double* ts) {
+    double lo = 0.0, hi = kInfinity;
+    if (!clipToBox(ray, boundary.worldBounds, lo, hi)) return 0;
+    int count = 0;
+    Ray r = ray;
+    double base = 0.0;
+    ObjectHit hit;
+    while (count < kMaxCrossings && boundary.intersect(r, kInfinity, hit)) {
+        base += hit.t;
+        ts[count++] = base;
+        // Go on from just beyond the surface, on the side the ray goes to.
+        const Vec3 p = r.o + hit.t * r.d;
+        const Vec3 n = boundary.normalToWorld * hit.n;
+        r.o = offsetRayOrigin(p, n, r.d);
+    }
+    return count;
+}
+
+}  // namespace
+
+ParticipatingMedia::ParticipatingMedia(std::vector<Instance> boundaries, const Medium* fog,
+                                       const AABB& fogBox, const MediaSettings& settings)
+    : boundaries_(std::move(boundaries)), fogBox_(fogBox), settings_(settings) {
+    if (boundaries_.size() > 63)
+        throw InputError("at most 63 nodes may hold a medium, the scene has " +
+                         std::to_string(boundaries_.size()));
+    for (const Instance& b : boundaries_)
+        tracked_.push_back(std::make_unique<TrackedMedium>(*b.medium, b.worldToObject,
+                                                           b.shape->bounds(),
+                                                           settings_.majorantResolution));
+    if (fog) {
+        tracked_.push_back(
+            std::make_unique<TrackedMedium>(*fog, Mat4(1.0), fogBox, settings_.majorantResolution));
+        fog_ = tracked_.back().get();
+    }
+}
+
+// [media-pieces]
+void ParticipatingMedia::pieces(const Ray& ray, double tEnd, std::vector<Piece>& out) const {
+    out.clear();
+    // Step 1: every boundary's crossings. An odd count to infinity means the ray starts
+    // inside (the camera in the fog box, a ray leaving a surface in the smoke).
+    struct Crossing {
+        double t;
+        int region;
+    };
+    std::vector<Crossing> events;
+    std::uint64_t inside = 0;
+    double ts[kMaxCrossings];
+    for (size_t r = 0; r < boundaries_.size(); ++r) {
+        const int n = crossings(boundaries_[r], ray, ts);
+        if (n % 2 == 1) inside |= std::uint64_t{1} << r;
+        for (int k = 0; k < n && ts[k] < tEnd; ++k) events.push_back({ts[k], static_cast<int>(r)});
+    }
+    std::sort(events.begin(), events.end(),
+              [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
+    // Step 2: between crossings, the medium of the latest node that holds the point (a node
+    // nested in another comes later in the scene graph, so it wins inside); none: the fog.
+    double fog0 = 0.0, fog1 = tEnd;
+    const bool fogHere = fog_ && clipToBox(ray, fogBox_, fog0, fog1);
+    auto emit = [&](double a, double b, std::uint64_t mask) {
+        if (mask != 0) {
+            const int region = 63 - __builtin_clzll(mask);
+            if (a < b) out.push_back({a, b, tracked_[region].get()});
+        } else if (fogHere) {
+            a = std::max(a, fog0);
+            b = std::min(b, fog1);
+            if (a < b) out.push_back({a, b, fog_});
+        }
+    };
+    double t = 0.0;
+    for (const Crossing& e : events) {
+        emit(t, e.t, inside);
+        inside ^= std::uint64_t{1} << e.region;
+        t = e.t;
+    }
+    emit(t, tEnd, inside);
+}
+// [media-pieces]
+
+// [media-segment]
+Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, double tEnd,
+                                   Colour& throughput) const {
+    std::vector<Piece> stretches;
+    pieces(ray, tEnd, stretches);
+    Colour beta(1.0), scattered(0.0);
+    for (const Piece& piece : stretches) {
+        if (settings_.march) {
+            scattered += march(ctx, ray, piece, beta);
+            if (!(maxChannel(beta) > 0.0)) break;
+            continue;
+        }
+        const FreeFlight flight =
+            sampleFreeFlight(*piece.medium, ray, piece.t0, piece.t1, ctx.sampler);
+        if (flight.event == FreeFlight::Event::Absorbed) {
+            throughput = Colour(0.0);
+            return scattered;
+        }
+        beta *= flight.weight;
+        if (flight.event == FreeFlight::Event::Scattered) {
+            // The ray ends at a particle: what it scatters our way replaces the surface.
+            throughput = Colour(0.0);
+            const Vec3 x = ray.o + flight.t * ray.d;
+            return beta * inScattered(ctx, x, glm::normalize(ray.d), piece.medium->medium,
+                                      ctx.weight * maxChannel(beta));
+        }
+    }
+    throughput = beta;
+    return scattered;
+}
+// [media-segment]
+
+// [media-in-scattered]
+Colour ParticipatingMedia::inScattered(const ShadeContext& ctx, const Vec3& x,
+                                       const Vec3& travel, const Medium& m, double weight) const {
+    Colour light(0.0);
+    for (const PointLight& source : ctx.scene.lights) {
+        const bool area = source.shape && ctx.scene.sampleAreaLights;
+        const int perAxis = !area                    ? 1
+                            : ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples
+                                                         : source.shape->samplesPerAxis();
+        Colour sum(0.0);
+        for (int k = 0; k < perAxis * perAxis; ++k) {
+            double emission = 1.0;
+            const Vec3 from = area ? source.shape->samplePoint(source.position, x, k, perAxis,
+                                                               ctx.sampler.next2D(), emission)
+                                   : source.position;
+            const Vec3 toLight = from - x;
+            const double r = glm::length(toLight);
+            if (!(r > 0.0) || emission <= 0.0) continue;
+            if (ctx.integrator.occluded(Ray{x, toLight}, 1.0, ctx.counters)) continue;
+            // A4's lights are in units where a white diffuse surface returns I cos θ / r²,
+            // π times a physical point light's: the phase function is scaled to match.
+            const double phase = kPi * henyeyGreenstein(glm::dot(travel, toLight / r), m.g);
+            sum += emission * source.intensityAt(r) * phase *
+                   transmittance(x, from, ctx.sampler, ctx.counters);
+        }
+        light += sum / static_cast<double>(perAxis * perAxis);
+    }
+    // Multiple scattering: follow one direction the phase function draws (its pdf cancels
+    // the phase function), as deep as the scene's depth limit allows.
+    if (!settings_.march && ctx.depth < ctx.scene.maxDepth && weight >= ctx.scene.minWeight) {
+        const Vec3 next = sampleHenyeyGreenstein(travel, m.g, ctx.sampler.next2D());
+        light += ctx.integrator.trace(Ray{x, next}, ctx.sampler, ctx.counters, ctx.depth + 1,
+                                      ctx.media, weight);
+    }
+    return light;
+}
+// [media-in-scattered]
+
+// [media-march]
+Colour ParticipatingMedia::march(const ShadeContext& ctx, const Ray& ray, const Piece& piece,
+                                 Colour& tr) const {
+    const Medium& m = piece.medium->medium;
+    const Ray local = piece.medium->toMedium(ray);
+    const double length = glm::length(ray.d);
+    const double dt = settings_.step / length;
+    const Vec3 travel = ray.d / length;
+    Colour scattered(0.0);
+    // Each step's point stands for the whole step: light scattered there, seen through the
+    // medium so far, then the step's own extinction.
+    for (double t = piece.t0 + ctx.sampler.next1D() * dt; t < piece.t1; t += dt) {
+        const double density = m.density->at(local.o + t * local.d);
+        if (!(density > 0.0)) continue;
+        const Vec3 x = ray.o + t * ray.d;
+        scattered += tr * m.sigmaS * density * settings_.step * inScattered(ctx, x, travel, m, 0.0);
+        tr *= beerLambert(m.sigmaT() * density, settings_.step);
+        if (!(maxChannel(tr) > 0.0)) break;
+    }
+    return scattered;
+}
+// [media-march]
+
+// [media-transmittance]
+Colour ParticipatingMedia::transmittance(const Vec3& a, const Vec3& b, Sampler& sampler,
+                                         RayCounters&) const {
+    const Ray ray{a, b - a};
+    std::vector<Piece> stretches;
+    pieces(ray, 1.0, stretches);
+    const TransmittanceMethod method =
+        settings_.march ? TransmittanceMethod::March : settings_.shadows;
+    Colour tr(1.0);
+    for (const Piece& piece : stretches) {
+        tr *= estimateTransmittance(*piece.medium, ray, piece.t0, piece.t1, method,
+                                    settings_.step, sampler);
+        if (!(maxChannel(tr) > 0.0)) break;
+    }
+    return tr;
+}
+// [media-transmittance]
+
+}  // namespace rb

@@ -1,0 +1,151 @@
+#include "media/tracking.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rb {
+
+namespace {
+
+/// The largest channel.
+double maxChannel(const Colour& c) { return std::max({c.r, c.g, c.b}); }
+
+/// The next tentative collision after t with majorant mu per unit of t: an exponential step.
+double nextCollision(double t, double mu, Sampler& sampler) {
+    return t - std::log(1.0 - sampler.next1D()) / mu;
+}
+
+}  // namespace
+
+TrackedMedium::TrackedMedium(const Medium& medium_, const Mat4& worldToMedium_,
+                             const AABB& shapeBox, int majorantResolution)
+    : medium(medium_),
+      worldToMedium(worldToMedium_),
+      majorants(*medium_.density,
+                [&] {
+                    // Track only where the density and the medium's shape overlap.
+                    AABB box = medium_.density->bounds();
+                    box.lo = glm::max(box.lo, shapeBox.lo);
+                    box.hi = glm::min(box.hi, shapeBox.hi);
+                    return box;
+                }(),
+                majorantResolution) {}
+
+Colour beerLambert(const Colour& sigmaT, double d) {
+    return {std::exp(-sigmaT.r * d), std::exp(-sigmaT.g * d), std::exp(-sigmaT.b * d)};
+}
+
+// [free-flight]
+FreeFlight sampleFreeFlight(const TrackedMedium& m, const Ray& ray, double t0, double t1,
+                            Sampler& sampler) {
+    FreeFlight flight;
+    const Ray local = m.toMedium(ray);
+    // Coefficients per unit of t: σ per unit length times the length of ray.d.
+    const double length = glm::length(ray.d);
+    const Colour sigmaA = m.medium.sigmaA * length, sigmaS = m.medium.sigmaS * length;
+    const double sigmaTMax = m.medium.sigmaTMax() * length;
+    m.majorants.traverse(local, t0, t1, [&](double a, double b, double bound) {
+        // μ̄: this cell's majorant. An empty cell holds no particle.
+        const double mu = bound * sigmaTMax;
+        if (!(mu > 0.0)) return true;
+        // [exercise-delta-tracking]
+        // Exercise 17.2, delta tracking: read ch17-tracking.
+        // Blank: return true;
+        double t = a;
+        while (true) {
+            // Step 1: the next tentative collision; past the cell, the memoryless exponential
+            // lets the next cell start afresh.
+            t = nextCollision(t, mu, sampler);
+            if (t >= b) return true;
+            // Step 2: real or null? The density at t splits μ̄ into absorption, scattering
+            // and null collisions; for colour, each is chosen by its largest weighted channel.
+            const double density = m.medium.density->at(local.o + t * local.d);
+            const Colour muA = sigmaA * density, muS = sigmaS * density;
+            const Colour muN = Colour(mu) - muA - muS;
+            const double pA = maxChannel(muA * flight.weight);
+            const double pS = maxChannel(muS * flight.weight);
+            const double pN = maxChannel(muN * flight.weight);
+            const double total = pA + pS + pN;
+            if (!(total > 0.0)) {
+                flight.event = FreeFlight::Event::Absorbed;
+                return false;
+            }
+            const double u = sampler.next1D() * total;
+            if (u < pA) {
+                flight.event = FreeFlight::Event::Absorbed;
+                flight.t = t;
+                return false;
+            }
+            if (u < pA + pS) {
+                // Step 3: a real scattering; the weight keeps the channels unbiased.
+                flight.weight *= muS * (total / (mu * pS));
+                flight.event = FreeFlight::Event::Scattered;
+                flight.t = t;
+                return false;
+            }
+            flight.weight *= muN * (total / (mu * pN));
+        }
+        // [exercise-delta-tracking]
+    });
+    return flight;
+}
+// [free-flight]
+
+// [transmittance]
+Colour estimateTransmittance(const TrackedMedium& m, const Ray& ray, double t0, double t1,
+                             TransmittanceMethod method, double step, Sampler& sampler) {
+    const double length = glm::length(ray.d);
+    const Colour sigmaT = m.medium.sigmaT() * length;
+    // A homogeneous medium needs no estimate: Beer–Lambert.
+    if (m.medium.homogeneous()) return beerLambert(sigmaT, t1 - t0);
+    const Ray local = m.toMedium(ray);
+    Colour tr(1.0);
+    if (method == TransmittanceMethod::March) {
+        // Fixed steps of `step` world units from one jittered start: each step's density
+        // stands for the whole step (the estimate of the optical depth is unbiased, but its
+        // exponential is not). One cell at a time, so no step is spent on empty cells.
+        const double dt = step / length;
+        const double jitter = sampler.next1D();
+        m.majorants.traverse(local, t0, t1, [&](double a, double b, double bound) {
+            if (!(bound > 0.0)) return true;
+            double opticalDepth = 0.0;
+            for (double t = a + jitter * dt; t < b; t += dt)
+                opticalDepth += m.medium.density->at(local.o + t * local.d) * dt;
+            tr *= beerLambert(sigmaT, opticalDepth);
+            return maxChannel(tr) > 0.0;
+        });
+        return tr;
+    }
+    const double sigmaTMax = m.medium.sigmaTMax() * length;
+    m.majorants.traverse(local, t0, t1, [&](double a, double b, double bound) {
+        const double mu = bound * sigmaTMax;
+        if (!(mu > 0.0)) return true;
+        for (double t = nextCollision(a, mu, sampler); t < b; t = nextCollision(t, mu, sampler)) {
+            const double density = m.medium.density->at(local.o + t * local.d);
+            const Colour muN = Colour(mu) - sigmaT * density;
+            if (method == TransmittanceMethod::Ratio) {
+                // [exercise-ratio-tracking]
+                // Exercise 17.3, ratio tracking: read ch17-tracking.
+                // Blank: tr *= 1.0;
+                tr *= muN / mu;
+                // [exercise-ratio-tracking]
+            } else {
+                // Delta tracking: a real collision stops the light; a null one passes it on,
+                // weighted so that each channel stays unbiased.
+                const double pReal = maxChannel((Colour(mu) - muN) * tr);
+                const double pNull = maxChannel(muN * tr);
+                if (sampler.next1D() * (pReal + pNull) < pReal) {
+                    tr = Colour(0.0);
+                    return false;
+                }
+                tr *= muN * ((pReal + pNull) / (mu * pNull));
+            }
+            if (!(maxChannel(tr) > 0.0)) return false;
+        }
+        return true;
+    });
+    return tr;
+}
+// [transmittance]
+
+}  // namespace rb
