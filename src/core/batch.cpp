@@ -107,6 +107,16 @@ struct SceneResult {
     std::string renders;                ///< The folder of its renders, relative to DIR.
 };
 
+/// How one scene's child ended, as the rank that ran it saw it (sent to rank 0 under MPI).
+struct ChildEnd {
+    std::size_t index = 0;  ///< Into the results.
+    bool started = true;    ///< False: fork failed, and `note` says why.
+    int waitStatus = 0;     ///< From waitpid.
+    bool killed = false;    ///< The batch sent SIGKILL for the time limit.
+    double wallSeconds = 0;
+    std::string note;
+};
+
 /// A child that is still running.
 struct RunningChild {
     pid_t pid = 0;
@@ -449,13 +459,27 @@ std::string selfExecutable(char** argv) {
     return fs::absolute(argv[0]).string();
 }
 
-/// Run every scene (not the helpers) in `results`, `jobs` at a time, each killed after
-/// `limit` seconds; fills in each result as its child ends.
-void runScenes(const fs::path& dir, const std::string& exe, const std::vector<std::string>& options,
-               int jobs, double limit, bool quiet, std::vector<SceneResult>* results) {
-    std::vector<size_t> queue;
-    for (size_t i = 0; i < results->size(); ++i)
-        if ((*results)[i].status != Status::Helper) queue.push_back(i);
+/// Fill in a scene's result from how its child ended, and print its line unless `quiet`.
+void applyEnd(const fs::path& dir, double limit, bool quiet, const ChildEnd& end,
+              std::vector<SceneResult>* results) {
+    SceneResult& r = (*results)[end.index];
+    if (end.started) {
+        r.wallSeconds = end.wallSeconds;
+        finishScene(dir, end.waitStatus, end.killed, limit, &r);
+    } else {
+        r.status = Status::Error;
+        r.note = end.note;
+    }
+    if (!quiet) printSceneLine(r);
+}
+
+/// Run the scenes of `results` at the indices in `queue`, `jobs` at a time, each killed after
+/// `limit` seconds; fills in each result as its child ends, and returns how each ended.
+std::vector<ChildEnd> runScenes(const fs::path& dir, const std::string& exe,
+                                const std::vector<std::string>& options,
+                                const std::vector<size_t>& queue, int jobs, double limit,
+                                bool quiet, std::vector<SceneResult>* results) {
+    std::vector<ChildEnd> ends;
     std::vector<RunningChild> running;
     size_t next = 0;
     while (next < queue.size() || !running.empty()) {
@@ -476,9 +500,12 @@ void runScenes(const fs::path& dir, const std::string& exe, const std::vector<st
             fs::create_directories((dir / r.stderrLog).parent_path());
             const pid_t pid = spawnChild(plan);
             if (pid < 0) {
-                r.status = Status::Error;
-                r.note = std::string("could not start a child: ") + std::strerror(errno);
-                if (!quiet) printSceneLine(r);
+                ChildEnd end;
+                end.index = static_cast<size_t>(&r - results->data());
+                end.started = false;
+                end.note = std::string("could not start a child: ") + std::strerror(errno);
+                applyEnd(dir, limit, quiet, end, results);
+                ends.push_back(end);
                 continue;
             }
             running.push_back({pid, static_cast<size_t>(&r - results->data()), Clock::now()});
@@ -490,10 +517,9 @@ void runScenes(const fs::path& dir, const std::string& exe, const std::vector<st
             const double seconds = std::chrono::duration<double>(Clock::now() - c.start).count();
             int status = 0;
             if (waitpid(c.pid, &status, WNOHANG) == c.pid) {
-                SceneResult& r = (*results)[c.index];
-                r.wallSeconds = seconds;
-                finishScene(dir, status, c.killed, limit, &r);
-                if (!quiet) printSceneLine(r);
+                const ChildEnd end{c.index, true, status, c.killed, seconds, ""};
+                applyEnd(dir, limit, quiet, end, results);
+                ends.push_back(end);
                 running.erase(running.begin() + static_cast<long>(k));
                 changed = true;
                 continue;
@@ -508,6 +534,57 @@ void runScenes(const fs::path& dir, const std::string& exe, const std::vector<st
         // Step 3: wait a little before looking again.
         if (!changed) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
+    return ends;
+}
+
+/// `ends` as bytes, for rank 0.
+std::vector<std::byte> packEnds(const std::vector<ChildEnd>& ends) {
+    std::vector<std::byte> bytes;
+    auto put = [&](const void* p, size_t n) {
+        bytes.insert(bytes.end(), static_cast<const std::byte*>(p),
+                     static_cast<const std::byte*>(p) + n);
+    };
+    for (const ChildEnd& e : ends) {
+        const std::uint64_t index = e.index, noteSize = e.note.size();
+        const std::int32_t status = e.waitStatus;
+        const std::uint8_t flags = (e.started ? 1 : 0) | (e.killed ? 2 : 0);
+        put(&index, 8);
+        put(&status, 4);
+        put(&flags, 1);
+        put(&e.wallSeconds, 8);
+        put(&noteSize, 8);
+        put(e.note.data(), e.note.size());
+    }
+    return bytes;
+}
+
+/// The ChildEnds packEnds wrote.
+std::vector<ChildEnd> unpackEnds(const std::vector<std::byte>& bytes) {
+    std::vector<ChildEnd> ends;
+    size_t at = 0;
+    auto get = [&](void* p, size_t n) {
+        std::memcpy(p, bytes.data() + at, n);
+        at += n;
+    };
+    while (at < bytes.size()) {
+        ChildEnd e;
+        std::uint64_t index = 0, noteSize = 0;
+        std::int32_t status = 0;
+        std::uint8_t flags = 0;
+        get(&index, 8);
+        get(&status, 4);
+        get(&flags, 1);
+        get(&e.wallSeconds, 8);
+        get(&noteSize, 8);
+        e.note.resize(noteSize);
+        get(e.note.data(), noteSize);
+        e.index = index;
+        e.waitStatus = status;
+        e.started = flags & 1;
+        e.killed = flags & 2;
+        ends.push_back(std::move(e));
+    }
+    return ends;
 }
 
 // ---- The report -------------------------------------------------------------------------------
@@ -808,7 +885,7 @@ std::string joined(const std::vector<std::string>& words) {
 
 }  // namespace
 
-int runBatch(const CommandLine& cl, int, char** argv) {
+int runBatch(const CommandLine& cl, int, char** argv, Cluster& cluster) {
     const auto t0 = Clock::now();
     // Step 1: check DIR and the options that make no sense for a batch.
     std::error_code ec;
@@ -840,22 +917,45 @@ int runBatch(const CommandLine& cl, int, char** argv) {
         throw InputError("--batch: no scenes under '" + cl.batchDir + "' (no .lua file" +
                          (helpers ? " that calls gr.render" : "") + ")");
 
-    // Step 3: run the scenes; the report folder starts empty each time.
-    prepareReportFolder(info.dir);
+    // Step 3: run the scenes; the report folder starts empty each time (rank 0 empties it
+    // before any rank starts).
+    std::exception_ptr failure;
+    try {
+        if (cluster.writesOutput()) prepareReportFolder(info.dir);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    cluster.agree(failure);
     const std::vector<std::string> options = childOptions(cl);
     info.jobs = jobCount(cl, results.size() - helpers);
     info.timeLimit = cl.sceneTimeLimit;
     info.passedOptions = joined(options);
     info.startedAt = now();
     if (!cl.quiet) {
-        std::printf("rendering %zu scenes under %s, %d at a time, at most %d s each\n",
+        std::printf("rendering %zu scenes under %s, %d at a time%s, at most %d s each\n",
                     results.size() - helpers, info.dir.c_str(), info.jobs,
+                    cluster.size() > 1
+                        ? (" on each of " + std::to_string(cluster.size()) + " ranks").c_str()
+                        : "",
                     static_cast<int>(info.timeLimit));
         for (const SceneResult& r : results)
             if (r.status == Status::Helper) printSceneLine(r);
     }
-    runScenes(info.dir, selfExecutable(argv), options, info.jobs, info.timeLimit, cl.quiet,
-              &results);
+    // Under MPI each rank runs every size-th scene; rank 0 hears how the others' ended.
+    std::vector<size_t> mine;
+    for (size_t i = 0, k = 0; i < results.size(); ++i)
+        if (results[i].status != Status::Helper &&
+            static_cast<int>(k++ % static_cast<size_t>(cluster.size())) == cluster.rank())
+            mine.push_back(i);
+    const std::vector<ChildEnd> ends = runScenes(info.dir, selfExecutable(argv), options, mine,
+                                                 info.jobs, info.timeLimit, cl.quiet, &results);
+    if (cluster.size() > 1) {
+        const auto parts = cluster.gatherToFirst(packEnds(ends));
+        for (size_t rank = 1; rank < parts.size(); ++rank)
+            for (const ChildEnd& end : unpackEnds(parts[rank]))
+                applyEnd(info.dir, info.timeLimit, cl.quiet, end, &results);
+    }
+    if (!cluster.writesOutput()) return 0;
 
     // Step 4: the report, and the summary line.
     info.totalSeconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -2,12 +2,15 @@
 /// Batch mode: render every scene under a folder, as a TA renders a class, with a report.
 #pragma once
 
+#include "core/cluster.h"
 #include "core/options.h"
 
 namespace rb {
 
 /// Render every scene under cl.batchDir, each by a child rt process run in the scene's own
-/// folder with a time limit, and write DIR/raybook-report.html. Returns rt's exit code.
-int runBatch(const CommandLine& cl, int argc, char** argv);
+/// folder with a time limit, and write DIR/raybook-report.html. Returns rt's exit code. Under
+/// MPI the scenes are dealt round-robin over the ranks (DIR on a shared file system), and
+/// rank 0 writes the report from every rank's results.
+int runBatch(const CommandLine& cl, int argc, char** argv, Cluster& cluster);
 
 }  // namespace rb

@@ -6,12 +6,15 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <optional>
 #include <tuple>
 
 #include "core/batch.h"
+#include "core/cluster.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/lua_scene.h"
@@ -76,7 +79,29 @@ void printFeatures(const FeatureSet& set) {
                     f.title, f.switchable ? "" : " (core)");
 }
 
-int run(int argc, char** argv) {
+/// What makes render `job` of the command line `cl` the same render: rt's version, the scene
+/// file's bytes, the size, the seed and the sampling options. A journal (--resume) written under
+/// other values is refused, and so are ranks that disagree.
+RenderIdentity renderIdentity(const CommandLine& cl, const RenderJob& job,
+                              const std::string& output) {
+    std::ifstream in(cl.scene, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string sampling = "features " + cl.features + ", spp " +
+                           std::to_string(cl.samplesPerPixel) + ", max-depth " +
+                           std::to_string(cl.maxDepth) + (cl.legacy ? ", legacy" : "") +
+                           (cl.modern ? ", modern" : "") + (cl.lenient ? ", lenient" : "");
+    for (const auto& [name, value] : cl.featureOptions) sampling += ", " + name + " " + value;
+    for (const std::string& dialect : cl.dialects) sampling += ", dialect " + dialect;
+    return {output,
+            {{"version", std::string(versionNumber()) + " (" + gitCommit() + ")"},
+             {"scene", cl.scene + " (" + std::to_string(bytes.size()) + " bytes, hash " +
+                           std::to_string(std::hash<std::string>{}(bytes)) + ")"},
+             {"size", std::to_string(job.width) + "x" + std::to_string(job.height)},
+             {"seed", std::to_string(cl.seed)},
+             {"sampling", sampling}}};
+}
+
+int run(int argc, char** argv, Cluster& cluster) {
     const std::vector<Feature> built = builtFeatures();
     const CommandLine cl = parseCommandLine(argc, argv, built);
     if (cl.help) {
@@ -92,7 +117,7 @@ int run(int argc, char** argv) {
         printFeatures(features);
         return 0;
     }
-    if (!cl.batchDir.empty()) return runBatch(cl, argc, argv);
+    if (!cl.batchDir.empty()) return runBatch(cl, argc, argv, cluster);
     // From here on Ctrl-C and SIGTERM wait, pending, until the render loop looks for them.
     holdInterrupts();
     const auto runStart = Clock::now();
@@ -219,6 +244,10 @@ int run(int argc, char** argv) {
         settings.progress = !cl.quiet && isatty(STDERR_FILENO);
         settings.shouldStop = stopRequested;
         settings.memory = &cl.memory;
+        settings.cluster = &cluster;
+        const RenderIdentity identity = renderIdentity(cl, world->source.job, output);
+        settings.identity = &identity;
+        settings.resume = cl.resume;
         PartialImage partial;
         if (cl.partial) settings.partial = &partial;
         RayCounters counters;
@@ -244,6 +273,8 @@ int run(int argc, char** argv) {
         }
         Image& image = *rendered;
         const double renderSeconds = since(t0);
+        // Under MPI only rank 0 holds the whole film; it writes the image and the report.
+        if (!cluster.writesOutput()) continue;
 
         // The post-process (chapter 12's tone map) turns the film into display values; a
         // format of its own (.hdr) keeps the film's linear radiance instead.
@@ -260,6 +291,7 @@ int run(int argc, char** argv) {
             throw InputError(world->source.job.where + ": " + e.what());
         }
         const double writeSeconds = since(t0);
+        cluster.imageWritten();
         if (!cl.quiet)
             std::fprintf(stderr, "wrote %s (%dx%d)\n", output.c_str(), world->source.job.width,
                          world->source.job.height);
@@ -294,6 +326,8 @@ int run(int argc, char** argv) {
             const std::string structure = scene.aggregate->statistics();
             if (!structure.empty()) std::fprintf(stderr, "  bvh        %s\n", structure.c_str());
             std::fprintf(stderr, "  memory     peak %.1f MiB\n", peakMemoryMiB());
+            for (const std::string& line : cluster.statistics())
+                std::fprintf(stderr, "  %s\n", line.c_str());
         }
     }
     // Under --lenient, stderr ends with everything that was ignored.
@@ -309,21 +343,62 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace rb
 
+namespace {
+
+/// Say why the run failed, as one line on `out`.
+void report(std::exception_ptr failure, std::FILE* out) {
+    try {
+        std::rethrow_exception(failure);
+    } catch (const rb::RenderStopped& e) {
+        std::fprintf(out, "rt: %s\n", e.what());
+    } catch (const rb::InputError& e) {
+        std::fprintf(out, "rt: error: %s\n", e.what());
+    } catch (const std::bad_alloc&) {
+        std::fprintf(out, "rt: error: out of memory\n");
+    } catch (const std::exception& e) {
+        std::fprintf(out, "rt: error: %s\n", e.what());
+    }
+    std::fflush(out);
+}
+
+/// End the run on every process of the cluster: they agree on whether one failed, the lowest
+/// failing process says why, once, and all end with its exit code. Returns the exit code.
+int finish(rb::Cluster& cluster, std::exception_ptr failure, int code) {
+    try {
+        try {
+            if (failure) std::rethrow_exception(failure);
+        } catch (const rb::AgreedFailure&) {
+            throw;
+        } catch (...) {
+            cluster.agree(std::current_exception());  // throws AgreedFailure
+        }
+        cluster.agree(nullptr);
+        return code;
+    } catch (const rb::AgreedFailure& agreed) {
+        if (agreed.cause) report(agreed.cause, cluster.errorStream());
+        return agreed.exitCode;
+    }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     // Past a file-size limit (ulimit -f), let write() fail with EFBIG, reported like a full
     // disk, instead of SIGXFSZ killing rt with a core dump.
     std::signal(SIGXFSZ, SIG_IGN);
+    std::unique_ptr<rb::Cluster> cluster;
     try {
-        return rb::run(argc, argv);
-    } catch (const rb::RenderStopped& e) {
-        std::fprintf(stderr, "rt: %s\n", e.what());
-        return e.exitCode;
-    } catch (const rb::InputError& e) {
-        std::fprintf(stderr, "rt: error: %s\n", e.what());
-    } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "rt: error: out of memory\n");
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "rt: error: %s\n", e.what());
+        cluster = rb::joinCluster(argc, argv);
+    } catch (...) {
+        report(std::current_exception(), stderr);
+        return 1;
     }
-    return 1;
+    std::exception_ptr failure;
+    int code = 0;
+    try {
+        code = rb::run(argc, argv, *cluster);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    return finish(*cluster, failure, code);
 }

@@ -109,7 +109,16 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             cl.partial = true;
         else if (name == "--preview")
             cl.preview = true;
-        else if (name == "--unsafe-lua")
+        else if (name == "--mpi")
+            cl.mpi = true;
+        else if (name == "--resume")
+            cl.resume = true;
+        else if (name == "--mpi-lease") {
+            cl.mpiLease = next();
+            if (cl.mpiLease != "dynamic" && cl.mpiLease != "static")
+                throw InputError("--mpi-lease: expected dynamic or static, got '" + cl.mpiLease +
+                                 "'");
+        } else if (name == "--unsafe-lua")
             cl.unsafeLua = true;
         else if (findFeatureOption(built, name))
             cl.featureOptions[name.substr(2)] = next();
@@ -186,6 +195,14 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --preview          a quick look: a quarter of the width and height (unless --size),
                      one ray per pixel, no antialiasing, one sample of each area light,
                      glossy lobe and lens, one photon pass (options given win)
+  --mpi              render with the other ranks of an MPI job (mpirun -np N ./rt
+                     scene.lua does it without asking): rank 0 leases tiles to every
+                     rank and writes the image, the same bytes as one process
+  --resume           finish each image from the journal of tiles beside it
+                     (NAME.png.journal), which an MPI render keeps until the image
+                     is written; on any number of ranks
+  --mpi-lease MODE   dynamic (small batches to whichever rank asks) or static (one
+                     band per rank, to compare balance)       default: dynamic
   --stats            print ray counts, phase times, Mrays/s and memory
   --quiet            no progress bar or messages
   --legacy           treat the scene as pre-2015 (transforms post-multiply)

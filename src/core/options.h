@@ -39,6 +39,9 @@ struct CommandLine {
     MemoryBudget memory;     ///< --max-memory SIZE (parseCommandLine: half the machine).
     bool partial = false;    ///< --partial: a stopped render writes NAME.partial.png.
     bool preview = false;    ///< --preview: a quarter of the size, one sample of everything.
+    bool mpi = false;        ///< --mpi: join an MPI job even when mpirun did not start rt.
+    bool resume = false;     ///< --resume: finish each image from the journal beside it.
+    std::string mpiLease = "dynamic";  ///< --mpi-lease dynamic|static: how tiles are dealt.
     bool help = false;       ///< --help.
     bool version = false;    ///< --version.
     std::map<std::string, std::string> featureOptions;  ///< --name=value added by chapters.

@@ -12,6 +12,7 @@
 
 namespace rb {
 
+class Cluster;
 struct Scene;
 struct Pipeline;
 
@@ -23,6 +24,9 @@ struct PrePassContext {
     int width = 0, height = 0;    ///< The image's size in pixels.
     const MemoryBudget* memory;   ///< Null: no limit.
     RayCounters& counters;        ///< Where its rays are counted.
+    /// The processes sharing the image (MPI ranks): each may trace a share and join them with
+    /// joinInOrder. Null: this process does all of it.
+    Cluster* cluster = nullptr;
 };
 
 /// One chapter's work before the render. run() is called once per image, from one thread; it

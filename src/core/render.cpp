@@ -142,6 +142,19 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
         }
 }
 
+/// Render one tile with the pipeline's pixel sampler (chapter 8) when one is installed, else
+/// with the core's loop, so a scene without antialiasing pays one test per tile.
+void renderImageTile(const ImageTile& tile, const Pipeline& pipeline, const Integrator& integrator,
+                     const PinholeCamera& camera, int width, int height, int spp,
+                     std::uint64_t seed, Image& image, RayCounters& rays) {
+    if (pipeline.pixelSampler)
+        pipeline.pixelSampler->renderTile(tile, integrator, camera, width, height, seed, image,
+                                          rays);
+    else
+        renderTile(tile, integrator, camera, pipeline.cameraRays.get(), width, spp, seed, image,
+                   rays);
+}
+
 }  // namespace
 
 void startRenderThreads(int threads) {
@@ -158,8 +171,9 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
              int height, const RenderSettings& settings, RayCounters& counters) {
     // Work before the first camera ray (chapter 16's photons), with the same seed.
     for (const auto& pass : pipeline.prePasses)
-        pass->run(scene, pipeline,
-                  {settings.seed, camera, width, height, settings.memory, counters});
+        pass->run(
+            scene, pipeline,
+            {settings.seed, camera, width, height, settings.memory, counters, settings.cluster});
     Image image(width, height);
     const Integrator integrator(scene, pipeline);
     const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
@@ -168,6 +182,17 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     if (settings.tileThreads) settings.tileThreads->assign(tiles.size(), -1);
     ProgressBar progress(settings.progress, tiles);
     const int spp = std::max(1, settings.samplesPerPixel);
+    // Many processes (MPI): the cluster deals out the tiles and brings them back.
+    if (settings.cluster && settings.cluster->distributed()) {
+        const auto renderOne = [&](int k, Image& film, RayCounters& rays) {
+            renderImageTile(tiles[k], pipeline, integrator, camera, width, height, spp,
+                            settings.seed, film, rays);
+        };
+        settings.cluster->renderTiles(
+            {tiles, threads, settings.resume, *settings.identity, renderOne, settings.shouldStop},
+            image, counters);
+        return image;
+    }
 
     // Tiles go to threads dynamically, in progressive order. Nothing a pixel computes depends
     // on which thread runs it or when: its random numbers come from (seed, pixel, sample), so
@@ -193,15 +218,9 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         const std::uint64_t raysBefore = rays.total();
         progress.tileStarted(k);
         if (settings.tileThreads) (*settings.tileThreads)[k] = omp_get_thread_num();
-        // A pixel sampler (chapter 8), when one is installed, takes the whole tile; otherwise
-        // the core's loop runs, so a scene without antialiasing pays one test per tile.
         try {
-            if (pipeline.pixelSampler)
-                pipeline.pixelSampler->renderTile(tiles[k], integrator, camera, width, height,
-                                                  settings.seed, image, rays);
-            else
-                renderTile(tiles[k], integrator, camera, pipeline.cameraRays.get(), width, spp,
-                           settings.seed, image, rays);
+            renderImageTile(tiles[k], pipeline, integrator, camera, width, height, spp,
+                            settings.seed, image, rays);
         } catch (...) {
 #pragma omp critical(rb_render_failure)
             if (!failure) failure = std::current_exception();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/cluster.h"
 #include "core/image.h"
 #include "core/integrator.h"
 #include "core/progress.h"
@@ -38,6 +39,13 @@ struct RenderSettings {
     /// The budget the pipeline's pre-passes (chapter 16's photon maps) charge before they
     /// allocate (--max-memory). Null: no limit.
     const MemoryBudget* memory = nullptr;
+    /// The processes sharing the render (MPI ranks); when distributed, its renderTiles deals
+    /// out the tiles instead of the loop below. Null: this process renders every tile.
+    Cluster* cluster = nullptr;
+    /// Under a distributed cluster: what this render is, for its journal and for the check
+    /// that every rank renders the same image.
+    const RenderIdentity* identity = nullptr;
+    bool resume = false;  ///< --resume: start from the journal beside the output.
 };
 
 /// Side of the square tiles the render loop hands to threads, in pixels.

@@ -176,6 +176,7 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
             trace.photons = settings_.photons;
             trace.pass = pass;
             trace.seed = ctx.seed;
+            trace.cluster = ctx.cluster;
             std::vector<Photon> photons = tracePhotons(scene, scattering, trace, ctx.counters);
             map.stored += photons.size();
             map.grids.emplace_back(std::move(photons), map.radii[pass]);

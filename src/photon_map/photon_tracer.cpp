@@ -3,7 +3,10 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cstring>
+#include <span>
 
+#include "core/cluster.h"
 #include "core/material.h"
 #include "phong/phong.h"
 #include "photon_map/emission.h"
@@ -391,8 +394,18 @@ std::vector<Photon> tracePhotons(const Scene& scene, const PhotonScattering& sca
     std::vector<RayCounters> perThread(omp_get_max_threads());
     const std::uint64_t stream = kPhotonStream + static_cast<std::uint64_t>(settings.pass) * 3 +
                                  static_cast<std::uint64_t>(settings.paths);
+    // Many processes: this one traces its contiguous share of the chunks (the others theirs).
+    std::uint64_t first = 0, last = chunks;
+    const bool shared = settings.cluster && settings.cluster->size() > 1;
+    if (shared) {
+        const auto rank = static_cast<std::uint64_t>(settings.cluster->rank());
+        const auto ranks = static_cast<std::uint64_t>(settings.cluster->size());
+        first = chunks * rank / ranks;
+        last = chunks * (rank + 1) / ranks;
+    }
 #pragma omp parallel for schedule(dynamic, 1)
-    for (std::int64_t c = 0; c < static_cast<std::int64_t>(chunks); ++c) {
+    for (std::int64_t c = static_cast<std::int64_t>(first); c < static_cast<std::int64_t>(last);
+         ++c) {
         RayCounters& rays = perThread[omp_get_thread_num()];
         const std::uint64_t end = std::min(settings.photons, (c + 1) * kChunk);
         for (std::uint64_t k = c * kChunk; k < end; ++k) {
@@ -409,6 +422,12 @@ std::vector<Photon> tracePhotons(const Scene& scene, const PhotonScattering& sca
     std::vector<Photon> photons;
     photons.reserve(size);
     for (const auto& f : found) photons.insert(photons.end(), f.begin(), f.end());
+    if (!shared) return photons;
+    // The shares joined in process order are the chunks in order: the map one process traces.
+    const std::vector<std::byte> joined =
+        settings.cluster->joinInOrder(std::as_bytes(std::span<const Photon>(photons)));
+    photons.resize(joined.size() / sizeof(Photon));
+    std::memcpy(photons.data(), joined.data(), joined.size());
     return photons;
 }
 

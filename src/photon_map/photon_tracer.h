@@ -12,6 +12,7 @@
 
 namespace rb {
 
+class Cluster;
 class RefractionTerm;
 
 /// Which photons a map keeps, by the path that brought them (Heckbert's notation: L the
@@ -49,6 +50,9 @@ struct PhotonTraceSettings {
     /// Emission directions stratified over photon index (the first ⌊√N⌋² photons each take
     /// one cell of a grid over the direction square); false: independent.
     bool stratify = true;
+    /// The processes sharing the pass (MPI ranks): each traces a contiguous share of the
+    /// chunks, joined in process order. Null: this process traces every photon.
+    Cluster* cluster = nullptr;
 };
 
 /// The most photons one emitted photon leaves in a map: its path ends at its 16th stored

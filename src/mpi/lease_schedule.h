@@ -1,0 +1,39 @@
+/// \file
+/// LeaseSchedule: which tiles each rank renders next. Pure bookkeeping, no MPI: rank 0 asks it
+/// whenever a rank needs work.
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <vector>
+
+namespace rb {
+
+/// How the tiles are shared out.
+enum class LeasePolicy {
+    Dynamic,  ///< Small batches from one queue, to whichever rank asks (the default).
+    Static,   ///< Each rank gets one contiguous band up front (for the balance benchmark).
+};
+
+/// The tiles still to lease, and the policy that deals them out.
+class LeaseSchedule {
+  public:
+    /// Lease `tiles` (positions in render order, or in scanline order for Static, whose bands
+    /// are contiguous runs of that order) to `ranks` ranks.
+    LeaseSchedule(std::vector<int> tiles, int ranks, LeasePolicy policy);
+
+    /// The next tiles for `rank`: at most `limit`, empty when it has none left. Dynamic
+    /// batches shrink as the queue empties (a quarter of a fair share of what is left), so the
+    /// last leases are single tiles and no rank is left holding a long batch at the end.
+    std::vector<int> next(int rank, int limit);
+
+    /// Tiles not leased yet, over every rank.
+    std::size_t remaining() const;
+
+  private:
+    std::vector<std::deque<int>> queues_;  // Dynamic: one shared queue; Static: one per rank
+    int ranks_;
+    LeasePolicy policy_;
+};
+
+}  // namespace rb

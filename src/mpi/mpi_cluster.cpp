@@ -1,0 +1,511 @@
+#include "mpi/mpi_cluster.h"
+
+#include <fcntl.h>
+#include <mpi.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <deque>
+#include <filesystem>
+#include <limits>
+#include <numeric>
+
+#include "core/error.h"
+#include "core/interrupt.h"
+#include "core/render.h"
+#include "core/single_process.h"
+
+namespace rb {
+namespace {
+
+// Message tags of the tile exchange.
+constexpr int kTagLease = 1;   // rank 0 -> worker: tile positions; none means "stop"
+constexpr int kTagResult = 2;  // worker -> rank 0: a finished lease (or its failure)
+constexpr int kTagDone = 3;    // worker -> rank 0: its rays and busy time, after its last lease
+/// Leases a worker holds at once: it renders one while the answer to the last is on its way.
+constexpr int kLeaseAhead = 2;
+/// The most tiles in one lease.
+constexpr int kMaxLease = 8;
+
+/// CPU seconds the calling thread has used (not wall time, so oversubscription does not blur it).
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// The variables by which Open MPI, MPICH (Hydra) and PMIx launchers tell a process it is a rank.
+constexpr const char* kLauncherVariables[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"};
+
+/// True when mpirun (or mpiexec, srun) started this process.
+bool startedByLauncher() {
+    for (const char* name : kLauncherVariables)
+        if (std::getenv(name)) return true;
+    return false;
+}
+
+/// True when argv holds `option` (before the full parse, which may itself fail).
+bool hasOption(int argc, char** argv, const std::string& option) {
+    for (int i = 1; i < argc; ++i)
+        if (argv[i] == option || std::string(argv[i]).rfind(option + "=", 0) == 0) return true;
+    return false;
+}
+
+/// The value of --mpi-lease (dynamic, the default, or static).
+LeasePolicy leasePolicy(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--mpi-lease=static" ||
+            (arg == "--mpi-lease" && i + 1 < argc && std::string(argv[i + 1]) == "static"))
+            return LeasePolicy::Static;
+    }
+    return LeasePolicy::Dynamic;
+}
+
+/// The film's pixels of `tile`, row by row.
+std::vector<float> tilePixels(const Image& image, const ImageTile& tile) {
+    std::vector<float> pixels;
+    pixels.reserve(static_cast<std::size_t>(tile.pixels()) * 3);
+    const std::span<const float> data = image.data();
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        const std::size_t row = (static_cast<std::size_t>(y) * image.width() + tile.x0) * 3;
+        pixels.insert(pixels.end(), data.begin() + static_cast<long>(row),
+                      data.begin() + static_cast<long>(row + (tile.x1 - tile.x0) * 3));
+    }
+    return pixels;
+}
+
+/// Copy `pixels` (as tilePixels gives them) into the film at `tile`.
+void placeTile(Image& image, const ImageTile& tile, const float* pixels) {
+    const std::span<float> data = image.data();
+    const std::size_t width = static_cast<std::size_t>(tile.x1 - tile.x0) * 3;
+    for (int y = tile.y0; y < tile.y1; ++y, pixels += width)
+        std::memcpy(&data[(static_cast<std::size_t>(y) * image.width() + tile.x0) * 3], pixels,
+                    width * sizeof(float));
+}
+
+/// Append the bytes of `value` to `out`.
+template <class T>
+void put(std::vector<std::byte>& out, const T& value) {
+    const auto* p = reinterpret_cast<const std::byte*>(&value);
+    out.insert(out.end(), p, p + sizeof(T));
+}
+
+/// Read a T from `in` at `at`, advancing it.
+template <class T>
+T take(const std::vector<std::byte>& in, std::size_t& at) {
+    T value;
+    std::memcpy(&value, in.data() + at, sizeof(T));
+    at += sizeof(T);
+    return value;
+}
+
+/// Receive the next message from `source` with `tag` (any, with MPI_ANY_*), whole.
+std::vector<std::byte> receive(int source, int tag, MPI_Status* status) {
+    MPI_Probe(source, tag, MPI_COMM_WORLD, status);
+    int count = 0;
+    MPI_Get_count(status, MPI_BYTE, &count);
+    std::vector<std::byte> bytes(static_cast<std::size_t>(count));
+    MPI_Recv(bytes.data(), count, MPI_BYTE, status->MPI_SOURCE, status->MPI_TAG, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    return bytes;
+}
+
+/// Send `bytes` to `dest` with `tag`; returns the bytes sent.
+std::uint64_t send(const std::vector<std::byte>& bytes, int dest, int tag) {
+    MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, dest, tag, MPI_COMM_WORLD);
+    return bytes.size();
+}
+
+/// A lease: its tile count, then the positions.
+std::vector<std::byte> leaseMessage(const std::vector<int>& positions) {
+    std::vector<std::byte> bytes;
+    put(bytes, static_cast<std::int32_t>(positions.size()));
+    for (int p : positions) put(bytes, static_cast<std::int32_t>(p));
+    return bytes;
+}
+
+/// The positions of a lease message.
+std::vector<int> leasePositions(const std::vector<std::byte>& bytes) {
+    std::size_t at = 0;
+    std::vector<int> positions(static_cast<std::size_t>(take<std::int32_t>(bytes, at)));
+    for (int& p : positions) p = take<std::int32_t>(bytes, at);
+    return positions;
+}
+
+/// What a worker sends after its last lease.
+struct WorkerReport {
+    RayCounters rays;
+    RankWork work;
+};
+
+/// Busy-time accounting for one batch: each thread adds the CPU time of its tiles.
+struct BatchClock {
+    std::vector<double> seconds;
+    explicit BatchClock(int threads) : seconds(static_cast<std::size_t>(threads), 0.0) {}
+    double total() const { return std::accumulate(seconds.begin(), seconds.end(), 0.0); }
+};
+
+/// Render the tiles at `positions` in parallel; returns the first failure (null: none). The
+/// main thread (OpenMP thread 0, the one MPI may be called from) runs `between` after each of
+/// its tiles.
+std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& positions,
+                               Image& image, std::vector<RayCounters>& rays, BatchClock& clock,
+                               const std::function<void()>& between) {
+    std::exception_ptr failure;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(work.threads)
+    for (int i = 0; i < static_cast<int>(positions.size()); ++i) {
+        const int thread = omp_get_thread_num();
+        const double start = threadCpuSeconds();
+        try {
+            work.renderTile(positions[i], image, rays[thread]);
+            if (thread == 0 && between) between();
+        } catch (...) {
+#pragma omp critical(rb_mpi_failure)
+            if (!failure) failure = std::current_exception();
+        }
+        clock.seconds[thread] += threadCpuSeconds() - start;
+    }
+    return failure;
+}
+
+}  // namespace
+
+MpiCluster::MpiCluster(int argc, char** argv, LeasePolicy policy) : policy_(policy) {
+    int provided = 0;
+    // Only the main thread calls MPI (between its own tiles), so FUNNELED is enough.
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    // Processes this rank starts (--batch's children) are no ranks of their own.
+    for (const char* name : kLauncherVariables) unsetenv(name);
+    if (rank_ != 0) {
+        // Every rank says the same warnings and lines: only rank 0 speaks. The others keep
+        // their stderr for an error that is theirs alone.
+        const int saved = dup(STDERR_FILENO);
+        if (saved >= 0) errors_ = fdopen(saved, "w");
+        const int null = open("/dev/null", O_WRONLY);
+        if (null >= 0) {
+            dup2(null, STDOUT_FILENO);
+            dup2(null, STDERR_FILENO);
+            close(null);
+        }
+    }
+}
+
+MpiCluster::~MpiCluster() {
+    MPI_Finalize();
+}
+
+void MpiCluster::agree(std::exception_ptr failure) {
+    // Step 1: the lowest rank that failed (size_: none).
+    const int mine = failure ? rank_ : size_;
+    int first = size_;
+    MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first == size_) return;
+    // Step 2: its exit code ends every rank; only it says why.
+    int code = first == rank_ ? exitCodeOf(failure) : 0;
+    MPI_Bcast(&code, 1, MPI_INT, first, MPI_COMM_WORLD);
+    throw AgreedFailure{code, first == rank_ ? failure : nullptr};
+}
+
+void MpiCluster::checkSameRender(const RenderIdentity& identity) const {
+    std::uint64_t hash = fnv1a64({});
+    for (const auto& [name, value] : identity.fields) {
+        const std::string line = name + "=" + value + "\n";
+        hash = fnv1a64({reinterpret_cast<const unsigned char*>(line.data()), line.size()}, hash);
+    }
+    std::uint64_t low = 0, high = 0;
+    MPI_Allreduce(&hash, &low, 1, MPI_UINT64_T, MPI_MIN, MPI_COMM_WORLD);
+    MPI_Allreduce(&hash, &high, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD);
+    if (low != high)
+        throw InputError(identity.output +
+                         ": the ranks were given different renders (their scene, size, seed or "
+                         "options differ); every rank must run the same command");
+}
+
+void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& counters) {
+    threads_ = work.threads;
+    filmBytes_ = static_cast<std::uint64_t>(image.width()) * image.height() * 3 * sizeof(float);
+    // Step 1: rank 0 reads the journal (--resume) and starts a new one; the tiles it holds are
+    // in the film already, the others are to render.
+    std::exception_ptr failure;
+    std::vector<int> todo;
+    if (rank_ == 0) {
+        try {
+            const std::string path = journalPath(work.identity.output);
+            std::vector<JournalTile> kept;
+            if (work.resume && std::filesystem::exists(path))
+                kept = readJournal(path, work.identity);
+            else if (work.resume)
+                std::fprintf(stderr, "rt: --resume: no journal %s; rendering the whole image\n",
+                             path.c_str());
+            std::vector<bool> done(work.tiles.size(), false);
+            for (const JournalTile& t : kept) {
+                const std::size_t k = static_cast<std::size_t>(t.position);
+                if (k >= work.tiles.size() ||
+                    t.pixels.size() != static_cast<std::size_t>(work.tiles[k].pixels()) * 3)
+                    throw InputError("--resume: the journal " + path + " holds a tile (" +
+                                     std::to_string(t.position) + ") this image does not have");
+                placeTile(image, work.tiles[k], t.pixels.data());
+                done[k] = true;
+            }
+            journal_ = std::make_unique<JournalWriter>(path, work.identity, kept);
+            for (std::size_t k = 0; k < work.tiles.size(); ++k)
+                if (!done[k]) todo.push_back(static_cast<int>(k));
+            // A static split deals contiguous bands of the image: scanline order.
+            if (policy_ == LeasePolicy::Static)
+                std::stable_sort(todo.begin(), todo.end(), [&](int a, int b) {
+                    const ImageTile &s = work.tiles[a], &t = work.tiles[b];
+                    return std::tie(s.y0, s.x0) < std::tie(t.y0, t.x0);
+                });
+        } catch (...) {
+            failure = std::current_exception();
+        }
+    }
+    agree(failure);
+    checkSameRender(work.identity);
+    // Step 2: the exchange; a rank that fails goes on answering until every rank is done.
+    try {
+        if (rank_ == 0)
+            lead(work, image, counters, todo);
+        else
+            follow(work, image, counters);
+    } catch (const RenderStopped&) {
+        // Rank 0 was stopped: the others learn it at their next agreement.
+        throw;
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    // Step 3: every rank learns whether another failed before rank 0 writes anything.
+    agree(failure);
+}
+
+void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
+                      const std::vector<int>& todo) {
+    LeaseSchedule schedule(todo, size_, policy_);
+    work_.assign(static_cast<std::size_t>(size_), RankWork{});
+    std::exception_ptr failure;
+    bool stopping = false, remoteFailed = false;
+    int workersLeft = size_ - 1;
+    std::uint64_t sentByRank0 = 0;
+
+    // What a worker gets next: a lease, or none once the render is ending.
+    auto nextLease = [&](int worker) {
+        const bool ending = stopping || failure || remoteFailed;
+        return ending ? std::vector<int>{} : schedule.next(worker, kMaxLease);
+    };
+    // Take in one message: a finished lease (answered with the next) or a worker's report.
+    auto serveOne = [&](bool wait) {
+        MPI_Status status;
+        if (!wait) {
+            int waiting = 0;
+            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
+            if (!waiting) return false;
+        }
+        const std::vector<std::byte> bytes = receive(MPI_ANY_SOURCE, MPI_ANY_TAG, &status);
+        const int worker = status.MPI_SOURCE;
+        RankWork& share = work_[static_cast<std::size_t>(worker)];
+        share.bytesSent += bytes.size();
+        std::size_t at = 0;
+        if (status.MPI_TAG == kTagDone) {
+            const WorkerReport report = take<WorkerReport>(bytes, at);
+            counters.merge(report.rays);
+            share.tiles = report.work.tiles;
+            share.busySeconds = report.work.busySeconds;
+            --workersLeft;
+            return true;
+        }
+        // A finished lease: [failed][count][positions][pixels of each tile, in order].
+        const std::int32_t failed = take<std::int32_t>(bytes, at);
+        const std::int32_t count = take<std::int32_t>(bytes, at);
+        std::vector<int> positions(static_cast<std::size_t>(count));
+        for (int& p : positions) p = take<std::int32_t>(bytes, at);
+        if (failed) remoteFailed = true;
+        for (int p : positions) {
+            if (failed) break;
+            const ImageTile& tile = work.tiles[static_cast<std::size_t>(p)];
+            const auto* pixels = reinterpret_cast<const float*>(bytes.data() + at);
+            placeTile(image, tile, pixels);
+            at += static_cast<std::size_t>(tile.pixels()) * 3 * sizeof(float);
+            // A journal that cannot be written fails the render, which still ends in order.
+            try {
+                if (!failure)
+                    journal_->append(p, {pixels, static_cast<std::size_t>(tile.pixels()) * 3});
+            } catch (...) {
+                failure = std::current_exception();
+            }
+        }
+        sentByRank0 += send(leaseMessage(nextLease(worker)), worker, kTagLease);
+        return true;
+    };
+    auto serveWaiting = [&] {
+        while (serveOne(false)) {
+        }
+    };
+
+    // Step 1: every worker gets its first leases, so it starts at once and never waits.
+    for (int w = 1; w < size_; ++w)
+        for (int i = 0; i < kLeaseAhead; ++i)
+            sentByRank0 += send(leaseMessage(nextLease(w)), w, kTagLease);
+    // Step 2: rank 0 renders batches of its own, answering the workers between its tiles.
+    std::vector<RayCounters> rays(static_cast<std::size_t>(work.threads));
+    BatchClock clock(work.threads);
+    while (!failure && !remoteFailed) {
+        if (work.shouldStop && work.shouldStop()) {
+            stopping = true;
+            break;
+        }
+        const std::vector<int> lease = schedule.next(0, std::max(kMaxLease, work.threads));
+        if (lease.empty()) break;
+        if (std::exception_ptr e = renderBatch(work, lease, image, rays, clock, serveWaiting))
+            failure = e;
+        if (failure) break;
+        try {
+            for (int p : lease)
+                journal_->append(p, tilePixels(image, work.tiles[static_cast<std::size_t>(p)]));
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        work_[0].tiles += lease.size();
+        serveWaiting();
+    }
+    // Step 3: answer the workers until each has sent its report.
+    while (workersLeft > 0) serveOne(true);
+    for (const RayCounters& r : rays) counters.merge(r);
+    work_[0].busySeconds = clock.total();
+    work_[0].bytesSent = sentByRank0;
+    if (failure) std::rethrow_exception(failure);
+    if (remoteFailed) return;  // the failing worker says why at the agreement that follows
+    if (stopping) throw RenderStopped("the render was stopped before it finished", 1);
+}
+
+void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counters) {
+    std::deque<std::vector<int>> leases;
+    MPI_Status status;
+    for (int i = 0; i < kLeaseAhead; ++i)
+        leases.push_back(leasePositions(receive(0, kTagLease, &status)));
+    std::vector<RayCounters> rays(static_cast<std::size_t>(work.threads));
+    BatchClock clock(work.threads);
+    WorkerReport report;
+    std::exception_ptr failure;
+    // Render each lease and send it back; each answer brings the next lease (or none).
+    while (!leases.empty()) {
+        const std::vector<int> lease = std::move(leases.front());
+        leases.pop_front();
+        if (lease.empty()) continue;
+        if (!failure) failure = renderBatch(work, lease, image, rays, clock, nullptr);
+        std::vector<std::byte> result;
+        put(result, static_cast<std::int32_t>(failure ? 1 : 0));
+        put(result, static_cast<std::int32_t>(lease.size()));
+        for (int p : lease) put(result, static_cast<std::int32_t>(p));
+        if (!failure) {
+            for (int p : lease)
+                for (float v : tilePixels(image, work.tiles[static_cast<std::size_t>(p)]))
+                    put(result, v);
+            report.work.tiles += lease.size();
+        }
+        report.work.bytesSent += send(result, 0, kTagResult);
+        leases.push_back(leasePositions(receive(0, kTagLease, &status)));
+    }
+    // The report: counters holds this rank's pre-pass rays (its photon share) already.
+    for (const RayCounters& r : rays) counters.merge(r);
+    report.rays = counters;
+    report.work.busySeconds = clock.total();
+    std::vector<std::byte> bytes;
+    put(bytes, report);
+    send(bytes, 0, kTagDone);
+    if (failure) std::rethrow_exception(failure);
+}
+
+void MpiCluster::imageWritten() {
+    if (journal_) journal_->discard();
+    journal_.reset();
+}
+
+std::vector<std::byte> MpiCluster::joinInOrder(std::span<const std::byte> mine) {
+    agree(nullptr);
+    // Step 1: every rank's size, then every rank's bytes at its offset.
+    const long long size = static_cast<long long>(mine.size());
+    std::vector<long long> sizes(static_cast<std::size_t>(size_));
+    MPI_Allgather(&size, 1, MPI_LONG_LONG, sizes.data(), 1, MPI_LONG_LONG, MPI_COMM_WORLD);
+    std::vector<int> counts(sizes.size()), offsets(sizes.size());
+    long long total = 0;
+    for (std::size_t r = 0; r < sizes.size(); ++r) {
+        offsets[r] = static_cast<int>(total);
+        counts[r] = static_cast<int>(sizes[r]);
+        total += sizes[r];
+    }
+    if (total > std::numeric_limits<int>::max())
+        throw InputError("the ranks' shares are too large to join (over 2 GiB)");
+    std::vector<std::byte> joined(static_cast<std::size_t>(total));
+    MPI_Allgatherv(mine.data(), static_cast<int>(size), MPI_BYTE, joined.data(), counts.data(),
+                   offsets.data(), MPI_BYTE, MPI_COMM_WORLD);
+    joinBytes_ += static_cast<std::uint64_t>(size) * static_cast<std::uint64_t>(size_ - 1);
+    return joined;
+}
+
+std::vector<std::vector<std::byte>> MpiCluster::gatherToFirst(std::span<const std::byte> mine) {
+    agree(nullptr);
+    const int size = static_cast<int>(mine.size());
+    std::vector<int> sizes(static_cast<std::size_t>(size_));
+    MPI_Gather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    std::vector<int> offsets(sizes.size(), 0);
+    std::partial_sum(sizes.begin(), sizes.end() - 1, offsets.begin() + 1);
+    std::vector<std::byte> all(rank_ == 0 ? static_cast<std::size_t>(offsets.back() + sizes.back())
+                                          : 0);
+    MPI_Gatherv(mine.data(), size, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, 0,
+                MPI_COMM_WORLD);
+    if (rank_ != 0) return {};
+    std::vector<std::vector<std::byte>> parts;
+    for (std::size_t r = 0; r < sizes.size(); ++r)
+        parts.emplace_back(all.begin() + offsets[r], all.begin() + offsets[r] + sizes[r]);
+    return parts;
+}
+
+std::vector<std::string> MpiCluster::statistics() const {
+    if (work_.empty()) return {};
+    // Bytes: every message of the tile exchange, both ways, against the film they carried.
+    std::uint64_t bytes = 0;
+    double busy = 0.0, most = 0.0;
+    std::string busyList, tileList;
+    char text[64];
+    for (const RankWork& w : work_) {
+        bytes += w.bytesSent;
+        busy += w.busySeconds;
+        most = std::max(most, w.busySeconds);
+        std::snprintf(text, sizeof text, " %.3f", w.busySeconds);
+        busyList += text;
+        tileList += " " + std::to_string(w.tiles);
+    }
+    const double mean = busy / static_cast<double>(work_.size());
+    std::vector<std::string> lines;
+    char line[256];
+    std::snprintf(line, sizeof line, "mpi        %d ranks x %d threads, %s leases", size_, threads_,
+                  policy_ == LeasePolicy::Dynamic ? "dynamic" : "static");
+    lines.emplace_back(line);
+    std::snprintf(line, sizeof line,
+                  "mpi        sent %llu bytes for a film of %llu (%.3fx); pre-pass joins %llu",
+                  static_cast<unsigned long long>(bytes),
+                  static_cast<unsigned long long>(filmBytes_),
+                  filmBytes_ ? static_cast<double>(bytes) / static_cast<double>(filmBytes_) : 0.0,
+                  static_cast<unsigned long long>(joinBytes_));
+    lines.emplace_back(line);
+    lines.push_back("mpi        busy cpu s per rank" + busyList);
+    std::snprintf(line, sizeof line, "mpi        busy max/mean %.3f; tiles per rank",
+                  mean > 0.0 ? most / mean : 1.0);
+    lines.push_back(line + tileList);
+    return lines;
+}
+
+std::unique_ptr<Cluster> joinCluster(int argc, char** argv) {
+    if (startedByLauncher() || hasOption(argc, argv, "--mpi") || hasOption(argc, argv, "--resume"))
+        return std::make_unique<MpiCluster>(argc, argv, leasePolicy(argc, argv));
+    return std::make_unique<SingleProcess>();
+}
+
+}  // namespace rb
