@@ -7,7 +7,7 @@ CHAPTERS   := $(sort $(patsubst 0%,%,$(shell ls scenes 2>/dev/null | sed -n 's/^
 CHAPTERS   := $(shell echo $(CHAPTERS) | tr ' ' '\n' | sort -n | tr '\n' ' ')
 LAST       := $(lastword $(CHAPTERS))
 CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
-DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3
+DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3 libnanovdb-dev
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox
 # make fuzz: libFuzzer and the sanitizers come with clang; the targets run one after the other.
 FUZZ_DEBS    := clang libclang-rt-14-dev libomp-14-dev
