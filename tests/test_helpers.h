@@ -56,6 +56,7 @@
 #include "tone_map/tone_map.h"
 #include "quadrics/quadrics.h"
 #include "photon_map/photon_map.h"
+#include "media/media.h"
 
 namespace rbtest {
 
@@ -135,7 +136,8 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::smoothMeshFeature(),  rb::textureFeature(),
                                           rb::bumpFeature(),        rb::toneMapFeature(),
                                           rb::dofFeature(),         rb::csgFeature(),
-                                          rb::quadricsFeature(),    rb::photonMapFeature()};
+                                          rb::quadricsFeature(),    rb::photonMapFeature(),
+                                          rb::mediaFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

@@ -161,12 +161,13 @@ class Integrator {
     }
     /// True when media fill some of the scene (chapter 17).
     bool hasMedia() const { return pipeline_.media != nullptr; }
+    /// The colour of the surface at hit, seen along ray: local shading, then each chapter's
+    /// secondary term (smooth normals and bumps adjust hit first).
+    Colour shade(const ShadeContext& ctx, const Ray& ray, Hit& hit) const;
     /// The pipeline this integrator runs.
     const Pipeline& pipeline() const { return pipeline_; }
 
   private:
-    /// The colour of the surface at hit: local shading, then each chapter's secondary term.
-    Colour shade(const ShadeContext& ctx, const Ray& ray, Hit& hit) const;
 
     const Scene& scene_;
     const Pipeline& pipeline_;

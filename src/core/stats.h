@@ -8,11 +8,11 @@
 namespace rb {
 
 /// The kinds of ray raybook counts. Chapters add secondary kinds here as they appear.
-enum class RayKind : int { Camera, Shadow, Reflection, Refraction, Glossy, Photon, Count };
+enum class RayKind : int { Camera, Shadow, Reflection, Refraction, Glossy, Photon, Scatter, Count };
 
 /// Names for RayKind, in order.
 inline constexpr std::array<const char*, static_cast<int>(RayKind::Count)> kRayKindNames = {
-    "camera", "shadow", "reflection", "refraction", "glossy", "photon"};
+    "camera", "shadow", "reflection", "refraction", "glossy", "photon", "scatter"};
 
 /// One thread's ray counts. Aligned to a cache line so threads never share one.
 struct alignas(64) RayCounters {

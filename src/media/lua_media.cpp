@@ -22,7 +22,7 @@
 #include "core/render_context.h"
 #include "media/media.h"
 #include "media/medium.h"
-#if __has_include("media/vdb_density.h")
+#if __has_include("media/vdb_density.h") && defined(RB_MEDIA_VDB_READY)
 #include "media/vdb_density.h"
 #define RB_MEDIA_HAS_VDB_API 1
 #endif

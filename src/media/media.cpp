@@ -27,6 +27,14 @@ MediaSettings mediaSettings(const RenderContext& context) {
         s.step = parseNumberOption("--media-step", step);
         if (!(s.step > 0.0)) throw InputError("--media-step: must be > 0, got " + step);
     }
+    const std::string bounces = context.cliOption("media-bounces");
+    if (!bounces.empty()) {
+        const double n = parseNumberOption("--media-bounces", bounces);
+        if (!(n >= 0.0 && n <= 1e6 && n == std::floor(n)))
+            throw InputError("--media-bounces: expected a whole number from 0 to 1000000, got " +
+                             bounces);
+        s.bounces = static_cast<int>(n);
+    }
     const std::string res = context.cliOption("media-majorant");
     if (!res.empty()) {
         const double n = parseNumberOption("--media-majorant", res);
@@ -67,6 +75,8 @@ void installMedia(Pipeline& pipeline, Scene& scene, const RenderContext& context
     std::stable_sort(boundaries.begin(), boundaries.end(),
                      [](const Instance& a, const Instance& b) { return a.mediumIndex < b.mediumIndex; });
     const AABB box = fogBounds(scene.instances, scene, context.job);
+    // A shape that only bounds a medium is no surface.
+    std::erase_if(scene.instances, [](const Instance& i) { return i.mediumBoundaryOnly; });
     if (settings.step == 0.0) settings.step = glm::length(box.hi - box.lo) / 400.0;
     pipeline.media = std::make_shared<ParticipatingMedia>(std::move(boundaries), fog, box, settings);
 }
@@ -86,7 +96,9 @@ Feature mediaFeature() {
              {"media-shadows", "ratio|delta", "shadow-ray transmittance estimator", "ratio"},
              {"media-step", "S", "ray-marching step, in scene units",
               "1/400 of the scene's size (fog box diagonal)"},
-             {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"}}};
+             {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
+             {"media-bounces", "N", "scatterings after the first (0: single scattering)",
+              "256"}}};
 }
 
 }  // namespace rb

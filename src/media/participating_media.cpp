@@ -101,41 +101,84 @@ void ParticipatingMedia::pieces(const Ray& ray, double tEnd, std::vector<Piece>&
 }
 // [media-pieces]
 
+// [media-track]
+FreeFlight::Event ParticipatingMedia::track(const ShadeContext& ctx, const Ray& ray, double tEnd,
+                                            Colour& beta, Vec3& x, const Medium*& m) const {
+    std::vector<Piece> stretches;
+    pieces(ray, tEnd, stretches);
+    for (const Piece& piece : stretches) {
+        const FreeFlight flight =
+            sampleFreeFlight(*piece.medium, ray, piece.t0, piece.t1, ctx.sampler);
+        if (flight.event == FreeFlight::Event::Absorbed) return flight.event;
+        beta *= flight.weight;
+        if (flight.event == FreeFlight::Event::Scattered) {
+            x = ray.o + flight.t * ray.d;
+            m = &piece.medium->medium;
+            return flight.event;
+        }
+    }
+    return FreeFlight::Event::None;
+}
+// [media-track]
+
 // [media-segment]
 Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, double tEnd,
                                    Colour& throughput) const {
-    std::vector<Piece> stretches;
-    pieces(ray, tEnd, stretches);
-    Colour beta(1.0), scattered(0.0);
-    for (const Piece& piece : stretches) {
-        if (settings_.march) {
-            scattered += march(ctx, ray, piece, beta);
+    Colour beta(1.0), radiance(0.0);
+    if (settings_.march) {
+        // Ray marching: single scattering along every piece; the surface is seen through
+        // what is left.
+        std::vector<Piece> stretches;
+        pieces(ray, tEnd, stretches);
+        for (const Piece& piece : stretches) {
+            radiance += march(ctx, ray, piece, beta);
             if (!(maxChannel(beta) > 0.0)) break;
-            continue;
         }
-        const FreeFlight flight =
-            sampleFreeFlight(*piece.medium, ray, piece.t0, piece.t1, ctx.sampler);
-        if (flight.event == FreeFlight::Event::Absorbed) {
-            throughput = Colour(0.0);
-            return scattered;
-        }
-        beta *= flight.weight;
-        if (flight.event == FreeFlight::Event::Scattered) {
-            // The ray ends at a particle: what it scatters our way replaces the surface.
-            throughput = Colour(0.0);
-            const Vec3 x = ray.o + flight.t * ray.d;
-            return beta * inScattered(ctx, x, glm::normalize(ray.d), piece.medium->medium,
-                                      ctx.weight * maxChannel(beta));
-        }
+        throughput = beta;
+        return radiance;
     }
-    throughput = beta;
-    return scattered;
+    // A path through the media, one scattering after another (a loop, not recursion: a dense
+    // cloud scatters light hundreds of times before it leaves).
+    throughput = Colour(0.0);
+    Ray r = ray;
+    double end = tEnd;
+    Hit hit;
+    bool found = false;
+    for (int bounce = 0;; ++bounce) {
+        Vec3 x;
+        const Medium* m = nullptr;
+        const FreeFlight::Event event = track(ctx, r, end, beta, x, m);
+        if (event == FreeFlight::Event::Absorbed) return radiance;
+        if (event == FreeFlight::Event::None) {
+            // The path leaves the media: the first ray's surface is the caller's to shade;
+            // a scattered ray's surface (or the background) is shaded here.
+            if (bounce == 0) {
+                throughput = beta;
+                return radiance;
+            }
+            const ShadeContext next{ctx.scene, ctx.integrator, ctx.sampler, ctx.counters,
+                                    ctx.depth + 1, ctx.media, ctx.weight * maxChannel(beta)};
+            return radiance +
+                   beta * (found ? ctx.integrator.shade(next, r, hit) : ctx.scene.background);
+        }
+        // Step 1: a particle at x scatters the lights' light towards us (single scattering).
+        const Vec3 travel = glm::normalize(r.d);
+        radiance += beta * lightScattered(ctx, x, travel, *m);
+        // Step 2: and light from one direction the phase function draws (its pdf cancels the
+        // phase function), until the path has scattered `bounces` more times.
+        if (bounce >= settings_.bounces || ctx.weight * maxChannel(beta) < ctx.scene.minWeight)
+            return radiance;
+        r = Ray{x, sampleHenyeyGreenstein(travel, m->g, ctx.sampler.next2D())};
+        ctx.counters.add(RayKind::Scatter);
+        found = ctx.scene.aggregate->intersect(r, std::numeric_limits<double>::infinity(), hit);
+        end = found ? hit.t : std::numeric_limits<double>::infinity();
+    }
 }
 // [media-segment]
 
-// [media-in-scattered]
-Colour ParticipatingMedia::inScattered(const ShadeContext& ctx, const Vec3& x,
-                                       const Vec3& travel, const Medium& m, double weight) const {
+// [media-light-scattered]
+Colour ParticipatingMedia::lightScattered(const ShadeContext& ctx, const Vec3& x,
+                                          const Vec3& travel, const Medium& m) const {
     Colour light(0.0);
     for (const PointLight& source : ctx.scene.lights) {
         const bool area = source.shape && ctx.scene.sampleAreaLights;
@@ -160,16 +203,9 @@ Colour ParticipatingMedia::inScattered(const ShadeContext& ctx, const Vec3& x,
         }
         light += sum / static_cast<double>(perAxis * perAxis);
     }
-    // Multiple scattering: follow one direction the phase function draws (its pdf cancels
-    // the phase function), as deep as the scene's depth limit allows.
-    if (!settings_.march && ctx.depth < ctx.scene.maxDepth && weight >= ctx.scene.minWeight) {
-        const Vec3 next = sampleHenyeyGreenstein(travel, m.g, ctx.sampler.next2D());
-        light += ctx.integrator.trace(Ray{x, next}, ctx.sampler, ctx.counters, ctx.depth + 1,
-                                      ctx.media, weight);
-    }
     return light;
 }
-// [media-in-scattered]
+// [media-light-scattered]
 
 // [media-march]
 Colour ParticipatingMedia::march(const ShadeContext& ctx, const Ray& ray, const Piece& piece,
@@ -186,7 +222,7 @@ Colour ParticipatingMedia::march(const ShadeContext& ctx, const Ray& ray, const 
         const double density = m.density->at(local.o + t * local.d);
         if (!(density > 0.0)) continue;
         const Vec3 x = ray.o + t * ray.d;
-        scattered += tr * m.sigmaS * density * settings_.step * inScattered(ctx, x, travel, m, 0.0);
+        scattered += tr * m.sigmaS * density * settings_.step * lightScattered(ctx, x, travel, m);
         tr *= beerLambert(m.sigmaT() * density, settings_.step);
         if (!(maxChannel(tr) > 0.0)) break;
     }

@@ -18,6 +18,8 @@ struct MediaSettings {
     TransmittanceMethod shadows = TransmittanceMethod::Ratio;  ///< Shadow-ray estimator.
     double step = 0.0;         ///< Marching step in world units; 0: 1/200 of the scene's size.
     int majorantResolution = 16;  ///< Majorant grid cells per axis.
+    /// Scatterings a path may take in media after the first (0: single scattering only).
+    int bounces = 256;
 };
 
 /// The media of one render: the closed shapes that bound media (node:set_medium) and the fog
@@ -42,13 +44,16 @@ class ParticipatingMedia final : public MediaTerm {
     /// The stretches of the ray between t = 0 and tEnd, in order; empty space is left out.
     void pieces(const Ray& ray, double tEnd, std::vector<Piece>& out) const;
 
-    /// The light a particle at x of medium m scatters along the unit direction `travel`
-    /// reversed: every light through attenuated shadow rays (single scattering) and, below
-    /// the depth limit, one direction drawn from the phase function (multiple scattering).
-    Colour inScattered(const ShadeContext& ctx, const Vec3& x, const Vec3& travel,
-                       const Medium& m, double weight) const;
+    /// The light of every light that a particle at x of medium m scatters along the unit
+    /// direction `travel` reversed, through attenuated shadow rays (single scattering).
+    Colour lightScattered(const ShadeContext& ctx, const Vec3& x, const Vec3& travel,
+                          const Medium& m) const;
 
   private:
+    /// What a ray meets in the media up to tEnd: nothing (`beta` holds the transmittance),
+    /// absorption, or a scattering at x in medium m (`beta` holds the path's weight).
+    FreeFlight::Event track(const ShadeContext& ctx, const Ray& ray, double tEnd, Colour& beta,
+                            Vec3& x, const Medium*& m) const;
     /// Ray marching through one piece: the single-scattered light it adds, and `tr` dimmed.
     Colour march(const ShadeContext& ctx, const Ray& ray, const Piece& piece, Colour& tr) const;
 

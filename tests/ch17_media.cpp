@@ -1,0 +1,640 @@
+/// \file
+/// Chapter 17 tests: participating media.
+///
+/// Chapter 17 claims that tracking follows light through a medium without bias, whatever the
+/// majorant, and that what the media scatter towards the eye is the radiative transfer
+/// equation's answer. The tests check each estimator against a closed form: Beer–Lambert for
+/// constant density and for a linear ramp (T = e^−(a d + b d²/2)), ray marching's exact error
+/// on the ramp, z-tests of delta and ratio tracking at 1×, 2× and 10× the true majorant,
+/// chi-square tests of free-flight distances and of the Henyey–Greenstein sampler, single
+/// scattering in a slab lit from behind, L = π p(0) σs ℓ e^(−σt ℓ) I in A4's units, and a
+/// furnace: an albedo-1 medium under a uniform sky returns the sky. End to end: the image does
+/// not depend on the majorant grid, the camera may sit inside a medium, concave, nested and
+/// overlapping media hold the medium the scene graph says, interfaces cost no depth, a dense
+/// medium (σ = 1000) renders without black or NaN pixels, and bad media are refused.
+/// Random streams use seed 1 (RB_CH17_SEED re-runs them on other streams).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "media/henyey_greenstein.h"
+#include "media/media.h"
+#include "media/medium.h"
+#include "media/participating_media.h"
+#include "media/tracking.h"
+#include "test_helpers.h"
+
+using Catch::Contains;
+using rb::Colour;
+using rb::Vec3;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// The seed of every random stream in this file: 1, or RB_CH17_SEED.
+std::uint64_t seed() { return rbtest::seedFromEnv("RB_CH17_SEED"); }
+
+/// Density a + b·x inside the box [0, d]³ (zero outside), with its bound over a box scaled by
+/// `slack` (1: the true maximum; 10: a majorant ten times too large).
+class RampDensity final : public rb::DensityField {
+  public:
+    RampDensity(double a, double b, double d, double slack) : a_(a), b_(b), d_(d), slack_(slack) {}
+    double at(const Vec3& p) const override {
+        const bool inside = p.x >= 0 && p.x <= d_ && p.y >= 0 && p.y <= d_ && p.z >= 0 && p.z <= d_;
+        return inside ? a_ + b_ * p.x : 0.0;
+    }
+    double maxIn(const Vec3&, const Vec3& hi) const override {
+        return slack_ * (a_ + b_ * std::min(hi.x, d_));
+    }
+    rb::AABB bounds() const override { return rb::AABB{Vec3(0.0), Vec3(d_)}; }
+
+  private:
+    double a_, b_, d_, slack_;
+};
+
+/// Density 1 everywhere, but not flagged constant, so tracking (not the closed form) runs, with
+/// a majorant `slack` times too large.
+class TrackedConstant final : public rb::DensityField {
+  public:
+    explicit TrackedConstant(double slack) : slack_(slack) {}
+    double at(const Vec3&) const override { return 1.0; }
+    double maxIn(const Vec3&, const Vec3&) const override { return slack_; }
+    rb::AABB bounds() const override {
+        const double inf = std::numeric_limits<double>::infinity();
+        return rb::AABB{Vec3(-inf), Vec3(inf)};
+    }
+
+  private:
+    double slack_;
+};
+
+/// A grey medium of absorption sa and scattering ss with density field `density`.
+rb::Medium medium(double sa, double ss, std::shared_ptr<const rb::DensityField> density,
+                  double g = 0.0) {
+    rb::Medium m;
+    m.sigmaA = Colour(sa);
+    m.sigmaS = Colour(ss);
+    m.g = g;
+    m.density = std::move(density);
+    return m;
+}
+
+/// All space, as the shape box of a medium that is not inside a node.
+rb::AABB everywhere() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return rb::AABB{Vec3(-inf), Vec3(inf)};
+}
+
+/// Mean and standard error of the mean of `n` draws of `draw(i)`.
+template <class Draw>
+std::pair<double, double> meanAndError(int n, Draw&& draw) {
+    double sum = 0.0, sum2 = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double x = draw(i);
+        sum += x;
+        sum2 += x * x;
+    }
+    const double mean = sum / n;
+    const double variance = std::max(0.0, (sum2 - n * mean * mean) / (n - 1));
+    return {mean, std::sqrt(variance / n)};
+}
+
+/// Pearson's statistic of observed counts against expected ones, pooling neighbouring bins
+/// until each expects at least 5; returns the p-value of the chi-square with (bins − 1) dof.
+double chiSquarePValue(const std::vector<double>& observed, const std::vector<double>& expected) {
+    double x2 = 0.0, o = 0.0, e = 0.0;
+    int bins = 0;
+    for (size_t i = 0; i < observed.size(); ++i) {
+        o += observed[i];
+        e += expected[i];
+        if (e >= 5.0 || i + 1 == observed.size()) {
+            x2 += (o - e) * (o - e) / e;
+            ++bins;
+            o = e = 0.0;
+        }
+    }
+    return rbtest::upperGammaQ(0.5 * (bins - 1), 0.5 * x2);
+}
+
+/// Šidák's per-test level for k tests at family-wise level alpha.
+double sidak(double alpha, int k) { return 1.0 - std::pow(1.0 - alpha, 1.0 / k); }
+
+}  // namespace
+
+SCENARIO("Light through a homogeneous medium falls off as Beer–Lambert says", "[ch17]") {
+    GIVEN("a medium of σa = (0.1, 0.2, 0.3) and σs = (0.4, 0.3, 0.2) per unit length") {
+        rb::Medium m;
+        m.sigmaA = Colour(0.1, 0.2, 0.3);
+        m.sigmaS = Colour(0.4, 0.3, 0.2);
+        m.density = std::make_shared<rb::ConstantDensity>();
+        const rb::TrackedMedium tracked(m, rb::Mat4(1.0), everywhere(), 16);
+        rb::Sampler sampler(seed(), 0, 0);
+        WHEN("a ray of direction length 2 crosses t = 0.5 to 2 (a distance of 3)") {
+            const rb::Ray ray{Vec3(0.0), Vec3(0.0, 0.0, 2.0)};
+            const Colour t = rb::estimateTransmittance(tracked, ray, 0.5, 2.0,
+                                                       rb::TransmittanceMethod::Ratio, 0.1, sampler);
+            THEN("each channel is exactly e^(−σt·3)") {
+                // Source: Beer–Lambert, T = exp(−σt d), σt = σa + σs = 0.5 in every channel.
+                CHECK(t.r == Approx(std::exp(-1.5)).epsilon(1e-14));
+                CHECK(t.g == Approx(std::exp(-1.5)).epsilon(1e-14));
+                CHECK(t.b == Approx(std::exp(-1.5)).epsilon(1e-14));
+            }
+        }
+    }
+}
+
+SCENARIO("Ray marching a linear ramp of density is off by exactly its jitter", "[ch17]") {
+    GIVEN("density σ(x) = a + b·x with a = 0.5, b = 1 on x in [0, 1], and one majorant cell") {
+        const double a = 0.5, b = 1.0, d = 1.0;
+        const rb::Medium m = medium(0.0, 1.0, std::make_shared<RampDensity>(a, b, d, 1.0));
+        const rb::TrackedMedium tracked(m, rb::Mat4(1.0), everywhere(), 1);
+        const rb::Ray ray{Vec3(0.0, 0.5, 0.5), Vec3(1.0, 0.0, 0.0)};
+        for (const int steps : {4, 16, 64}) {
+            WHEN("it is marched in " + std::to_string(steps) + " steps of h = d/steps") {
+                const double h = d / steps;
+                rb::Sampler sampler(seed(), 7, 0), copy(seed(), 7, 0);
+                const double u = copy.next1D();  // the jitter the march draws first
+                const Colour t = rb::estimateTransmittance(
+                    tracked, ray, 0.0, d, rb::TransmittanceMethod::March, h, sampler);
+                THEN("its optical depth is a·d + b·d²/2 + b·d·h·(u − ½), the midpoint rule "
+                     "shifted by the jitter") {
+                    // Source: Σ_k (a + b (k + u) h) h over k < N = d/h is a d + b h² (N²/2 +
+                    // N (u − ½)) = a d + b d²/2 + b d h (u − ½): exact for u = ½, first order in
+                    // h otherwise, and exact on average over u.
+                    const double tau = a * d + b * d * d / 2 + b * d * h * (u - 0.5);
+                    CHECK(-std::log(t.r) == Approx(tau).epsilon(1e-12));
+                }
+            }
+        }
+    }
+}
+
+SCENARIO("Delta and ratio tracking estimate a ramp's transmittance without bias, whatever the "
+         "majorant",
+         "[ch17]") {
+    GIVEN("density σ(x) = 0.5 + 1·x on [0, 1], so T = e^−(0.5 + 0.5) = e^−1 across it") {
+        // Source: T = exp(−∫σ) = exp(−(a d + b d²/2)).
+        const double exact = std::exp(-1.0);
+        const rb::Ray ray{Vec3(0.0, 0.5, 0.5), Vec3(1.0, 0.0, 0.0)};
+        // Six z-tests together at family-wise level 0.001.
+        const double z = rbtest::zCritical(sidak(0.001, 6));
+        for (const double slack : {1.0, 2.0, 10.0})
+            for (const auto method :
+                 {rb::TransmittanceMethod::Ratio, rb::TransmittanceMethod::Delta}) {
+                const char* name = method == rb::TransmittanceMethod::Ratio ? "ratio" : "delta";
+                WHEN(std::string(name) + " tracking runs 10^6 times with the majorant at " +
+                     std::to_string(static_cast<int>(slack)) + "× the true maximum") {
+                    const rb::Medium m =
+                        medium(0.2, 0.8, std::make_shared<RampDensity>(0.5, 1.0, 1.0, slack));
+                    const rb::TrackedMedium tracked(m, rb::Mat4(1.0), everywhere(), 8);
+                    const auto [mean, error] = meanAndError(1'000'000, [&](int i) {
+                        rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 1);
+                        return rb::estimateTransmittance(tracked, ray, 0.0, 1.0, method, 0.0,
+                                                         sampler)
+                            .r;
+                    });
+                    THEN("the mean lies within the z-test's bound of e^−1") {
+                        INFO("mean " << mean << " ± " << error << ", z = " << (mean - exact) / error);
+                        CHECK(std::abs(mean - exact) < z * error);
+                    }
+                }
+            }
+    }
+}
+
+SCENARIO("Free flights through a ramp are distributed as σ(t)·T(t)", "[ch17]") {
+    GIVEN("a purely scattering ramp σ(x) = 0.5 + 2x on [0, 1], majorant 2× the maximum") {
+        const rb::Medium m = medium(0.0, 1.0, std::make_shared<RampDensity>(0.5, 2.0, 1.0, 2.0));
+        const rb::TrackedMedium tracked(m, rb::Mat4(1.0), everywhere(), 4);
+        const rb::Ray ray{Vec3(0.0, 0.5, 0.5), Vec3(1.0, 0.0, 0.0)};
+        WHEN("200000 flights are drawn from x = 0 to 1") {
+            const int n = 200000, bins = 40;
+            std::vector<double> observed(bins + 1, 0.0), expected(bins + 1, 0.0);
+            for (int i = 0; i < n; ++i) {
+                rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 2);
+                const rb::FreeFlight f = rb::sampleFreeFlight(tracked, ray, 0.0, 1.0, sampler);
+                REQUIRE(f.event != rb::FreeFlight::Event::Absorbed);
+                if (f.event == rb::FreeFlight::Event::None)
+                    observed[bins] += 1;
+                else
+                    observed[std::min(bins - 1, static_cast<int>(f.t * bins))] += 1;
+            }
+            // Source: P(collide before t) = 1 − T(t), T(t) = exp(−(0.5 t + t²)).
+            const auto cdf = [](double t) { return 1.0 - std::exp(-(0.5 * t + t * t)); };
+            for (int k = 0; k < bins; ++k)
+                expected[k] = n * (cdf((k + 1.0) / bins) - cdf(double(k) / bins));
+            expected[bins] = n * (1.0 - cdf(1.0));
+            THEN("a chi-square test of the 40 distance bins and the escapes passes at 0.001") {
+                const double p = chiSquarePValue(observed, expected);
+                INFO("p = " << p);
+                CHECK(p > 0.001);
+            }
+        }
+    }
+}
+
+SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws it", "[ch17]") {
+    for (const double g : {-0.9, 0.0, 0.5, 0.9}) {
+        GIVEN("g = " + std::to_string(g)) {
+            THEN("2π ∫ p(μ) dμ over μ in [−1, 1] is 1") {
+                // Simpson's rule on 20000 intervals; the peak at g = 0.9 is 1.9/(4π·0.001).
+                const int n = 20000;
+                double sum = 0.0;
+                for (int i = 0; i <= n; ++i) {
+                    const double mu = -1.0 + 2.0 * i / n;
+                    const double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+                    sum += w * rb::henyeyGreenstein(mu, g);
+                }
+                CHECK(2.0 * kPi * sum * (2.0 / n) / 3.0 == Approx(1.0).epsilon(1e-6));
+            }
+            WHEN("100000 directions are drawn around a forward axis") {
+                const Vec3 forward = glm::normalize(Vec3(0.3, -0.5, 0.8));
+                const int n = 100000, muBins = 20, phiBins = 8;
+                std::vector<double> observed(muBins * phiBins, 0.0), expected(muBins * phiBins);
+                // A frame to measure φ in.
+                const Vec3 side = glm::normalize(glm::cross(forward, Vec3(0, 0, 1)));
+                const Vec3 up = glm::cross(forward, side);
+                for (int i = 0; i < n; ++i) {
+                    rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 3);
+                    const Vec3 w = rb::sampleHenyeyGreenstein(forward, g, sampler.next2D());
+                    REQUIRE(glm::length(w) == Approx(1.0).epsilon(1e-12));
+                    const double mu = glm::dot(w, forward);
+                    const double phi = std::atan2(glm::dot(w, up), glm::dot(w, side)) + kPi;
+                    const int a = std::min(muBins - 1, static_cast<int>((mu + 1.0) / 2.0 * muBins));
+                    const int b = std::min(phiBins - 1, static_cast<int>(phi / (2 * kPi) * phiBins));
+                    observed[a * phiBins + b] += 1;
+                }
+                // Expected: 2π ∫ p dμ over each μ bin (Simpson, 200 intervals), split evenly
+                // in φ, from the pdf itself rather than the sampler's inversion.
+                for (int a = 0; a < muBins; ++a) {
+                    const double lo = -1.0 + 2.0 * a / muBins, hi = lo + 2.0 / muBins;
+                    double sum = 0.0;
+                    for (int i = 0; i <= 200; ++i) {
+                        const double w = (i == 0 || i == 200) ? 1 : (i % 2 ? 4 : 2);
+                        sum += w * rb::henyeyGreenstein(lo + (hi - lo) * i / 200, g);
+                    }
+                    const double p = 2.0 * kPi * sum * ((hi - lo) / 200) / 3.0;
+                    for (int b = 0; b < phiBins; ++b) expected[a * phiBins + b] = n * p / phiBins;
+                }
+                THEN("a chi-square test of 20 × 8 bins in (cos θ, φ) passes at 0.001 / 4") {
+                    const double p = chiSquarePValue(observed, expected);
+                    INFO("p = " << p);
+                    CHECK(p > sidak(0.001, 4));
+                }
+            }
+        }
+    }
+}
+
+namespace {
+
+/// A slab of medium m filling x in [0, ℓ] (a box node that only bounds it), lit by a light of
+/// intensity 1 without falloff at x = 10, on the axis the camera ray looks along.
+struct Slab {
+    Slab(const rb::Medium& m, double length, const std::map<std::string, std::string>& options) {
+        world.add(box, rbtest::boxFromTo(Vec3(0.0, -5.0, -5.0), Vec3(length, 5.0, 5.0)), nullptr,
+                  "slab");
+        rb::Instance& slab = world.scene.instances.back();
+        slab.medium = &m;
+        slab.mediumBoundaryOnly = true;
+        slab.mediumIndex = 0;
+        rb::PointLight light;
+        light.position = Vec3(10.0, 0.0, 0.0);
+        world.scene.lights.push_back(light);
+        world.build(rbtest::chapters(17), -1, options);
+    }
+    rb::Box box;
+    rbtest::TestWorld world;
+};
+
+}  // namespace
+
+SCENARIO("A slab lit from behind shows single scattering's closed form", "[ch17]") {
+    // Source: every point of the slab sees the light through e^(−σt (ℓ − s)) and the eye through
+    // e^(−σt s), so L = ∫ σs p(cos 0) I e^(−σt ℓ) ds = σs p(1) ℓ e^(−σt ℓ) I, times π for A4's
+    // lights (a white diffuse surface returns I cos θ / r², π times a physical light's).
+    const double sa = 0.25, ss = 0.5, g = 0.5, length = 1.0;
+    const double expected =
+        kPi * rb::henyeyGreenstein(1.0, g) * ss * length * std::exp(-(sa + ss) * length);
+    const std::map<std::string, std::string> single{{"media-bounces", "0"}};
+    const rb::Ray ray{Vec3(-1.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)};
+    const double z = rbtest::zCritical(sidak(0.001, 2));
+    GIVEN("a homogeneous slab, σa = 0.25, σs = 0.5, g = 0.5, ℓ = 1, single scattering only") {
+        const rb::Medium m = medium(sa, ss, std::make_shared<rb::ConstantDensity>(), g);
+        const Slab slab(m, length, single);
+        WHEN("the ray along the axis is traced 200000 times") {
+            const auto [mean, error] = meanAndError(200000, [&](int i) {
+                rb::RayCounters counters;
+                const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+                rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 4);
+                return integrator.trace(ray, sampler, counters, 0).r;
+            });
+            THEN("the radiance passes a z-test against π p(1) σs ℓ e^(−σt ℓ)") {
+                INFO("mean " << mean << " ± " << error << " against " << expected);
+                CHECK(std::abs(mean - expected) < z * error);
+            }
+        }
+    }
+    GIVEN("the same slab tracked as if heterogeneous, majorant 3× (delta and ratio tracking)") {
+        const rb::Medium m = medium(sa, ss, std::make_shared<TrackedConstant>(3.0), g);
+        const Slab slab(m, length, single);
+        WHEN("the ray along the axis is traced 200000 times") {
+            const auto [mean, error] = meanAndError(200000, [&](int i) {
+                rb::RayCounters counters;
+                const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+                rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 5);
+                return integrator.trace(ray, sampler, counters, 0).r;
+            });
+            THEN("the radiance passes the same z-test") {
+                INFO("mean " << mean << " ± " << error << " against " << expected);
+                CHECK(std::abs(mean - expected) < z * error);
+            }
+        }
+    }
+}
+
+SCENARIO("A media furnace: an albedo-1 medium under a uniform sky gives back the sky", "[ch17]") {
+    // Source: with no absorption and a sky of radiance 1 on every side, radiance is 1 everywhere
+    // inside and in every direction, whatever the density and the phase function.
+    for (const double tau : {0.1, 1.0, 10.0, 100.0})
+        for (const double g : {-0.9, 0.0, 0.9}) {
+            GIVEN("a unit ball of σs = " + std::to_string(tau) + " (σt R = σs), g = " +
+                  std::to_string(g) + ", seen from its centre") {
+                const rb::Medium m = medium(0.0, tau, std::make_shared<rb::ConstantDensity>(), g);
+                rbtest::TestWorld world;
+                world.addSphere(rb::Mat4(1.0), nullptr, "ball");
+                rb::Instance& ball = world.scene.instances.back();
+                ball.medium = &m;
+                ball.mediumBoundaryOnly = true;
+                ball.mediumIndex = 0;
+                world.scene.background = Colour(1.0);
+                world.scene.minWeight = 0.0;
+                world.build(rbtest::chapters(17), -1, {{"media-bounces", "1000000"}});
+                WHEN("paths start in random directions") {
+                    const int n = tau >= 100.0 ? 40 : 400;
+                    rbtest::Rng rng(seed());
+                    double lowest = 2.0, highest = 0.0;
+                    for (int i = 0; i < n; ++i) {
+                        rb::RayCounters counters;
+                        const rb::Integrator integrator(world.scene, world.pipeline);
+                        rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 6);
+                        const double l =
+                            integrator.trace(rb::Ray{Vec3(0.0), rng.unitVector()}, sampler,
+                                             counters, 0)
+                                .g;
+                        lowest = std::min(lowest, l);
+                        highest = std::max(highest, l);
+                    }
+                    THEN("every path returns the sky's radiance, 1") {
+                        CHECK(lowest == Approx(1.0).epsilon(1e-9));
+                        CHECK(highest == Approx(1.0).epsilon(1e-9));
+                    }
+                }
+            }
+        }
+}
+
+namespace {
+
+/// A scene with a medium box (a node without a material, so only a boundary) in front of a
+/// white wall lit by one light; `extra` adds to it, `medium` is the gr.medium table.
+std::string mediumScene(const std::string& medium, const std::string& extra = "") {
+    return R"(
+local root = gr.node('root')
+local wall = gr.cube('wall')
+wall:scale(4, 4, 0.2)
+wall:translate(-2, -2, -2)
+wall:set_material(gr.material({0.8, 0.8, 0.8}, {0, 0, 0}, 1))
+root:add_child(wall)
+local box = gr.cube('smoke')
+box:scale(2, 2, 2)
+box:translate(-1, -1, -1.5)
+box:set_medium(gr.medium)" + medium + R"()
+root:add_child(box)
+)" + extra + R"(
+gr.render(root, 'x.png', 32, 32, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 40, {0.1, 0.1, 0.1},
+          {gr.light({1, 2, 3}, {1, 1, 1}, {1, 0, 0})})
+)";
+}
+
+/// Render `lua` on `threads` threads at 32 × 32 with `spp` samples and these options.
+rb::Image renderMedia(const std::string& lua, int spp,
+                      const std::map<std::string, std::string>& options = {}, int threads = 1) {
+    const auto world = rbtest::worldFromLua(lua, rbtest::chapters(17), options);
+    rb::RenderSettings settings;
+    settings.threads = threads;
+    settings.samplesPerPixel = spp;
+    settings.seed = seed();
+    rb::RayCounters counters;
+    return rbtest::renderAt(*world, 32, 32, settings, counters);
+}
+
+}  // namespace
+
+SCENARIO("The image does not depend on the majorant", "[ch17]") {
+    GIVEN("a lit wall behind a box of ramp smoke, σ(x) = 0.2 + 3x in the box's own space") {
+        // 32 × 32 pixels looking at the box, 64 paths each, for one majorant set-up.
+        const auto render = [](double slack, int cells) {
+            const rb::Medium m =
+                medium(0.5, 2.0, std::make_shared<RampDensity>(0.2, 3.0, 1.0, slack), 0.3);
+            rb::Box box;
+            rbtest::TestWorld world;
+            const rb::Material* white = world.material(rb::Material{Colour(0.8), Colour(0.0), 1.0, {}, {}});
+            world.addBox(rbtest::boxFromTo(Vec3(-2, -2, -2.2), Vec3(2, 2, -2)), white, "wall");
+            world.add(box, rbtest::boxFromTo(Vec3(-1, -1, -1.5), Vec3(1, 1, 0.5)), nullptr, "smoke");
+            rb::Instance& smoke = world.scene.instances.back();
+            smoke.medium = &m;
+            smoke.mediumBoundaryOnly = true;
+            smoke.mediumIndex = 0;
+            rb::PointLight light;
+            light.position = Vec3(1, 2, 3);
+            world.scene.lights.push_back(light);
+            world.build(rbtest::chapters(17), -1, {{"media-majorant", std::to_string(cells)}});
+            const rb::Integrator integrator(world.scene, world.pipeline);
+            std::vector<double> image(32 * 32, 0.0);
+            for (int p = 0; p < 32 * 32; ++p) {
+                const Vec3 target(-1.2 + 2.4 * (p % 32 + 0.5) / 32, -1.2 + 2.4 * (p / 32 + 0.5) / 32, 0.5);
+                for (int k = 0; k < 64; ++k) {
+                    rb::Sampler sampler(seed(), static_cast<std::uint64_t>(p), k + 64 * cells);
+                    rb::RayCounters counters;
+                    image[p] += integrator.trace(rb::Ray{Vec3(0, 0, 4), target - Vec3(0, 0, 4)},
+                                                 sampler, counters, 0).g / 64;
+                }
+            }
+            return image;
+        };
+        WHEN("it is rendered with the true maximum in one cell, and with 10× majorants in 16³ "
+             "cells") {
+            const std::vector<double> tight = render(1.0, 1), loose = render(10.0, 16);
+            THEN("the pixel differences have mean zero (a t-test over the 1024 pixels)") {
+                // The two renders draw different numbers, so each pixel's difference is noise
+                // with mean zero when both are unbiased.
+                const auto [mean, error] =
+                    meanAndError(32 * 32, [&](int i) { return tight[i] - loose[i]; });
+                INFO("mean difference " << mean << " ± " << error);
+                CHECK(error > 0.0);
+                CHECK(std::abs(mean) < rbtest::zCritical(0.001) * error);
+            }
+        }
+    }
+}
+
+SCENARIO("Media renders are the same bits on one thread and two", "[ch17]") {
+    GIVEN("a box of noise smoke in front of a lit wall") {
+        const std::string lua = mediumScene("{sigma_s = 2, density = {noise = 1.5, bias = 0.3}}");
+        THEN("one thread and two give identical images") {
+            CHECK(rbtest::bitIdentical(renderMedia(lua, 4, {}, 1), renderMedia(lua, 4, {}, 2)));
+        }
+    }
+}
+
+SCENARIO("Media sit where the scene graph puts them", "[ch17]") {
+    const auto transmittanceThrough = [](const std::string& lua, const Vec3& a, const Vec3& b) {
+        const auto world = rbtest::worldFromLua(lua, rbtest::chapters(17));
+        REQUIRE(world->pipeline.media != nullptr);
+        rb::Sampler sampler(seed(), 0, 0);
+        rb::RayCounters counters;
+        return world->pipeline.media->transmittance(a, b, sampler, counters).r;
+    };
+    // Each crossing restarts the ray just beyond the surface (the ray offset, ~1e-9 of the
+    // coordinates), so lengths inside agree to about 1e-9 per crossing: 1e-8 below.
+    const std::string light = "gr.render(root, 'x.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, "
+                              "40, {0, 0, 0}, {gr.light({0, 9, 0}, {1, 1, 1}, {1, 0, 0})})\n";
+    GIVEN("a ball of radius 1 with σt = 1 at the origin") {
+        const std::string lua = "local root = gr.node('root')\n"
+                                "local s = gr.sphere('s')\n"
+                                "s:set_medium(gr.medium{sigma_s = 1})\n"
+                                "root:add_child(s)\n" + light;
+        THEN("a segment that starts inside it (a camera in the fog) is dimmed by its length "
+             "inside, e^−1 from the centre out") {
+            CHECK(transmittanceThrough(lua, Vec3(0.0), Vec3(0, 0, 5)) ==
+                  Approx(std::exp(-1.0)).epsilon(1e-8));
+            CHECK(transmittanceThrough(lua, Vec3(0, 0, -0.5), Vec3(0, 0, 0.5)) ==
+                  Approx(std::exp(-1.0)).epsilon(1e-8));
+        }
+    }
+    GIVEN("a concave medium: a 2 × 2 × 2 box with a ball of radius 0.8 cut out of it (CSG)") {
+        const std::string lua = "local root = gr.node('root')\n"
+                                "local b = gr.cube('b') b:scale(2, 2, 2) b:translate(-1, -1, -1)\n"
+                                "local s = gr.sphere('s') s:scale(0.8, 0.8, 0.8)\n"
+                                "local c = gr.difference(b, s, 'c')\n"
+                                "c:set_medium(gr.medium{sigma_s = 1})\n"
+                                "root:add_child(c)\n" + light;
+        THEN("a ray through the middle is dimmed only by the two walls of 0.2: e^−0.4") {
+            CHECK(transmittanceThrough(lua, Vec3(0, 0, -3), Vec3(0, 0, 3)) ==
+                  Approx(std::exp(-0.4)).epsilon(1e-8));
+        }
+    }
+    GIVEN("a ball of σt = 3 and radius 0.5 nested (as a child) in a ball of σt = 1, radius 1") {
+        const std::string lua = "local root = gr.node('root')\n"
+                                "local outer = gr.sphere('outer')\n"
+                                "outer:set_medium(gr.medium{sigma_s = 1})\n"
+                                "local inner = gr.sphere('inner') inner:scale(0.5, 0.5, 0.5)\n"
+                                "inner:set_medium(gr.medium{sigma_s = 3})\n"
+                                "outer:add_child(inner)\n"
+                                "root:add_child(outer)\n" + light;
+        THEN("the inner medium replaces the outer inside it: e^−(1·1 + 3·1)") {
+            CHECK(transmittanceThrough(lua, Vec3(0, 0, -3), Vec3(0, 0, 3)) ==
+                  Approx(std::exp(-4.0)).epsilon(1e-8));
+        }
+    }
+    GIVEN("two overlapping sibling balls, σt = 1 then σt = 2, centres 1 apart on z") {
+        const std::string lua = "local root = gr.node('root')\n"
+                                "local a = gr.sphere('a')\n"
+                                "a:set_medium(gr.medium{sigma_s = 1})\n"
+                                "local b = gr.sphere('b') b:translate(0, 0, 1)\n"
+                                "b:set_medium(gr.medium{sigma_s = 2})\n"
+                                "root:add_child(a) root:add_child(b)\n" + light;
+        THEN("the later node fills the overlap: e^−(1·1 + 2·2) along the z axis") {
+            // a covers z in [−1, 1], b covers [0, 2]: a alone on [−1, 0], b on [0, 2].
+            CHECK(transmittanceThrough(lua, Vec3(0, 0, -3), Vec3(0, 0, 3)) ==
+                  Approx(std::exp(-5.0)).epsilon(1e-8));
+        }
+    }
+    GIVEN("a lit wall behind twenty nested medium shells that scatter nothing") {
+        std::string lua = mediumScene("{sigma_s = 0, sigma_a = 0}");
+        std::string shells = "local parent = box\n";
+        for (int k = 1; k <= 20; ++k)
+            shells += "local s" + std::to_string(k) + " = gr.sphere('s" + std::to_string(k) +
+                      "') s" + std::to_string(k) + ":scale(0.95, 0.95, 0.95)\n" + "s" +
+                      std::to_string(k) + ":set_medium(gr.medium{sigma_s = 0})\n" +
+                      "parent:add_child(s" + std::to_string(k) + ") parent = s" +
+                      std::to_string(k) + "\n";
+        lua = mediumScene("{sigma_s = 0, sigma_a = 0}", shells);
+        THEN("with --max-depth 1 the wall still shades as without them: interfaces cost no "
+             "depth") {
+            const auto with = rbtest::worldFromLua(lua, rbtest::chapters(17));
+            with->scene.maxDepth = 1;
+            const Colour c = rbtest::traceOne(*with, rb::Ray{Vec3(0, 0, 4), Vec3(0, 0, -1)});
+            CHECK(c.r > 0.5);
+        }
+    }
+}
+
+SCENARIO("A dense medium renders without black or NaN pixels", "[ch17]") {
+    GIVEN("a white box of smoke with σs = 1000, no absorption, lit from the front-right") {
+        const std::string lua = mediumScene("{sigma_s = 1000}");
+        WHEN("it is rendered") {
+            const rb::Image image = renderMedia(lua, 4);
+            THEN("every pixel is finite, and every pixel of the box's face is lit") {
+                CHECK(rbtest::allFiniteNonNegative(image));
+                // The box covers the middle of the view; its face scatters the light back.
+                float darkest = 1e9f;
+                for (int y = 12; y < 20; ++y)
+                    for (int x = 12; x < 20; ++x)
+                        darkest = std::min(darkest, image.data()[3 * (y * 32 + x)]);
+                INFO("darkest pixel of the face " << darkest);
+                CHECK(darkest > 0.05f);
+            }
+        }
+    }
+}
+
+SCENARIO("A scene without media pays nothing for chapter 17", "[ch17]") {
+    GIVEN("chapter 16's scene, which calls no media") {
+        std::ifstream in(std::string(RB_SOURCE_DIR) + "/scenes/chapter16-photon-mapping.lua");
+        const std::string lua{std::istreambuf_iterator<char>(in), {}};
+        const auto world = rbtest::worldFromLua(lua, rbtest::chapters(17));
+        THEN("no media term is installed") { CHECK(world->pipeline.media == nullptr); }
+    }
+}
+
+SCENARIO("Bad media are refused with the call and what was expected", "[ch17]") {
+    const auto error = [](const std::string& medium) {
+        return rbtest::loadError(mediumScene(medium), rbtest::chapters(17));
+    };
+    THEN("negative coefficients, |g| ≥ 1, unknown fields and bad densities are refused") {
+        CHECK_THAT(error("{sigma_a = -1}"), Contains("scene.lua:") && Contains("sigma_a") &&
+                                                Contains("≥ 0"));
+        CHECK_THAT(error("{sigma_s = {1, -2, 1}}"), Contains("sigma_s") && Contains("≥ 0"));
+        CHECK_THAT(error("{g = 1}"), Contains("'g'") && Contains("between −1 and 1"));
+        CHECK_THAT(error("{g = -1.5}"), Contains("'g'"));
+        CHECK_THAT(error("{sigma = 1}"), Contains("unknown field 'sigma'"));
+        CHECK_THAT(error("{density = -2}"), Contains("density") && Contains("≥ 0"));
+        CHECK_THAT(error("{density = 'thick'}"), Contains("density"));
+        CHECK_THAT(error("{density = {noise = 0}}"), Contains("frequency"));
+        CHECK_THAT(error("{sigma_s = 0/0}"), Contains("sigma_s"));
+    }
+    THEN("a medium on a node without a shape, and a fog that is not a medium, are refused") {
+        CHECK_THAT(rbtest::loadError("local n = gr.node('n')\nn:set_medium(gr.medium{})\n",
+                                     rbtest::chapters(17)),
+                   Contains("scene.lua:2") && Contains("has no shape"));
+        CHECK_THAT(rbtest::loadError("gr.fog(3)\n", rbtest::chapters(17)),
+                   Contains("scene.lua:1") && Contains("must be a medium"));
+    }
+    THEN("bad options are refused, naming the option") {
+        const std::string lua = mediumScene("{}");
+        CHECK_THROWS_WITH(rbtest::worldFromLua(lua, rbtest::chapters(17), {{"media", "fast"}}),
+                          Contains("--media"));
+        CHECK_THROWS_WITH(
+            rbtest::worldFromLua(lua, rbtest::chapters(17), {{"media-majorant", "1000"}}),
+            Contains("--media-majorant"));
+        CHECK_THROWS_WITH(rbtest::worldFromLua(lua, rbtest::chapters(17), {{"media-step", "0"}}),
+                          Contains("--media-step"));
+    }
+}
