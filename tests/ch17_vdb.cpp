@@ -312,6 +312,19 @@ SCENARIO("broken VDB input is refused with a message naming the file", "[ch17]")
             REQUIRE_THAT(vdbError(path), Contains("truncated or corrupt"));
         }
     }
+    GIVEN("a file whose first grid declares 1 TiB of bytes") {
+        std::string huge = bytes;
+        const std::uint64_t tebibyte = std::uint64_t(1) << 40;
+        for (std::size_t field : {offsetof(nanovdb::io::MetaData, gridSize),
+                                  offsetof(nanovdb::io::MetaData, fileSize)}) {
+            huge.replace(sizeof(nanovdb::io::Header) + field, sizeof tebibyte,
+                         reinterpret_cast<const char*>(&tebibyte), sizeof tebibyte);
+        }
+        const std::string path = dir.write("huge.nvdb", huge);
+        THEN("the size is checked against the file's own, before any allocation") {
+            REQUIRE_THAT(vdbError(path), Contains(path) && Contains("truncated or corrupt"));
+        }
+    }
     GIVEN("a file whose root points its first child far past the grid's end") {
         // The first grid's bytes start after the segment header and its three descriptions;
         // the root follows the grid and tree headers, its tiles follow the root's own data.
