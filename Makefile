@@ -9,6 +9,9 @@ LAST       := $(lastword $(CHAPTERS))
 CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
 DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3 libnanovdb-dev
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox
+# Open MPI, for rendering on many processes (mpirun -np N ./rt scene.lua): make mpi installs it,
+# and so does make test, so that the MPI tests always run.
+MPI_DEBS   := openmpi-bin libopenmpi-dev
 # make fuzz: libFuzzer and the sanitizers come with clang; the targets run one after the other.
 FUZZ_DEBS    := clang libclang-rt-14-dev libomp-14-dev
 FUZZ_BUILD   ?= build-fuzz
@@ -16,7 +19,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_TARGETS := obj lua_scene options
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps bench-deps configure rt test test-exercises test-assignments assignment grade \
+.PHONY: deps bench-deps mpi-deps mpi configure rt test test-exercises test-assignments assignment grade \
         test-sanitize demo docs golden-update bench charts fuzz clean $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
@@ -29,6 +32,9 @@ deps:
 
 bench-deps:
 	@$(MAKE) --no-print-directory deps DEBS="$(BENCH_DEBS)"
+
+mpi-deps:
+	@$(MAKE) --no-print-directory deps DEBS="$(MPI_DEBS)"
 
 $(BUILD)/CMakeCache.txt: CMakeLists.txt
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
@@ -49,11 +55,19 @@ chapter%:
 
 rt: chapter$(LAST)
 
-# Every test: the unit tests, golden images, scenes and bad input (CTest), then the chapter
+# make mpi: install Open MPI, configure again so that CMake finds it, and build ./rt with it;
+# then mpirun -np N ./rt scene.lua renders on N processes (docs/many-machines.md).
+mpi: mpi-deps configure
+	cmake -S . -B $(BUILD) >/dev/null
+	@$(MAKE) --no-print-directory rt
+
+# Every test: the unit tests, golden images, scenes, bad input and MPI runs (CTest; Open MPI is
+# installed first and CMake configured again to find it), then the chapter
 # ladder the way a student climbs it (make chapterN for each N), which leaves ./rt the newest,
 # then the check that the tests notice every exercise region blanked, then the assignments'
 # round trip and grading (make test-assignments).
-test: configure
+test: mpi-deps configure
+	cmake -S . -B $(BUILD) >/dev/null
 	cmake --build $(BUILD) -j $(JOBS)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"

@@ -94,7 +94,8 @@ RenderIdentity renderIdentity(const CommandLine& cl, const RenderJob& job,
     for (const std::string& dialect : cl.dialects) sampling += ", dialect " + dialect;
     return {output,
             {{"version", std::string(versionNumber()) + " (" + gitCommit() + ")"},
-             {"scene", cl.scene + " (" + std::to_string(bytes.size()) + " bytes, hash " +
+             {"scene", std::filesystem::path(cl.scene).filename().string() + " (" +
+                           std::to_string(bytes.size()) + " bytes, hash " +
                            std::to_string(std::hash<std::string>{}(bytes)) + ")"},
              {"size", std::to_string(job.width) + "x" + std::to_string(job.height)},
              {"seed", std::to_string(cl.seed)},

@@ -267,8 +267,15 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
             failure = std::current_exception();
         }
     }
-    agree(failure);
-    checkSameRender(work.identity);
+    try {
+        agree(failure);
+        checkSameRender(work.identity);
+    } catch (...) {
+        // A run that never started leaves no journal; a resumed one keeps the tiles it had.
+        if (journal_ && !work.resume) journal_->discard();
+        journal_.reset();
+        throw;
+    }
     // Step 2: the exchange; a rank that fails goes on answering until every rank is done.
     try {
         if (rank_ == 0)

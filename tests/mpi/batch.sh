@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# rt --batch under mpirun spreads a class over the ranks and writes the report one process
+# writes, apart from the timings: tests/batch/class (good, broken, endless and helper scenes)
+# is rendered by rt alone and by 2 and 3 ranks, each in the same folder; the reports must be
+# equal once every "N.NN s" and the date are blanked, the renders byte-identical, and stdout
+# must list every scene once.
+# Usage: bash tests/mpi/batch.sh RT_BINARY OUT_DIR
+set -u
+source "$(dirname "$0")/../check_helpers.sh"
+source "$(dirname "$0")/common.sh"
+rt_and_out_dir "$@"
+CLASS=$OUT/class
+OPTIONS=(--threads 1 --scene-time-limit 2)
+
+# batch NAME COMMAND...: run COMMAND --batch on a fresh copy of the class; keep its report
+# (timings blanked), stdout and renders as NAME.*
+batch() {
+    local name=$1
+    shift
+    rm -rf "$CLASS" "$OUT/$name.renders"
+    cp -r "$ROOT/tests/batch/class" "$CLASS"
+    timeout 120 "$@" --batch "$CLASS" "${OPTIONS[@]}" >"$OUT/$name.stdout" 2>"$OUT/$name.stderr"
+    echo $? >"$OUT/$name.rc"
+    sed -E 's/[0-9]+\.[0-9]{2} s/N s/g; s/rendered [0-9]{4}-[0-9]{2}-[0-9]{2} [0-9]{2}:[0-9]{2}/rendered DATE/' \
+        "$CLASS/raybook-report.html" >"$OUT/$name.html"
+    (cd "$CLASS/raybook-report" && find . -name '*.png' -print0 | LC_ALL=C sort -z | xargs -0 sha256sum) \
+        >"$OUT/$name.renders"
+}
+
+batch alone "$RT"
+[ "$(cat "$OUT/alone.rc")" = 0 ] || fail "rt --batch alone" "exit code $(cat "$OUT/alone.rc")"
+scenes=$(grep -c '^ok\|^error\|^timed out\|^crashed\|^skipped' "$OUT/alone.stdout")
+for ranks in 2 3; do
+    batch "ranks$ranks" "${MPIRUN[@]}" -np $ranks "$RT"
+    name="--batch on $ranks ranks"
+    listed=$(grep -c '^ok\|^error\|^timed out\|^crashed\|^skipped' "$OUT/ranks$ranks.stdout")
+    if [ "$(cat "$OUT/ranks$ranks.rc")" != 0 ]; then
+        fail "$name" "exit code $(cat "$OUT/ranks$ranks.rc"): $(head -5 "$OUT/ranks$ranks.stderr")"
+    elif ! diff -q "$OUT/alone.html" "$OUT/ranks$ranks.html" >/dev/null; then
+        fail "$name" "the report differs: $(diff "$OUT/alone.html" "$OUT/ranks$ranks.html" | head -5)"
+    elif ! cmp -s "$OUT/alone.renders" "$OUT/ranks$ranks.renders"; then
+        fail "$name" "the renders differ from one process's"
+    elif [ "$listed" != "$scenes" ] || ! grep -q "on each of $ranks ranks" "$OUT/ranks$ranks.stdout"; then
+        fail "$name" "stdout lists $listed scenes, one process $scenes"
+    else
+        ok "$name: the same report apart from timings, $(wc -l <"$OUT/alone.renders") renders byte-identical, $listed scenes listed"
+    fi
+done
+finish

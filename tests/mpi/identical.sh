@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Rendering on many processes gives the bytes one process gives: the showcase (every chapter,
+# cheap settings, see common.sh) on ranks {1, 2, 3, 4} x threads {1, 2}, compared byte for byte
+# with rt run alone; then other seeds and samplers (adaptive antialiasing, chapter 8's pixel
+# sampler, and --seed) on 2 and 3 ranks, and a static split.
+# Usage: bash tests/mpi/identical.sh RT_BINARY OUT_DIR
+set -u
+source "$(dirname "$0")/../check_helpers.sh"
+source "$(dirname "$0")/common.sh"
+rt_and_out_dir "$@"
+cd "$OUT" && rm -f ./*.png ./*.journal
+
+# One case: the single-process reference with OPTIONS, then each "RANKS THREADS" pair.
+compare() {
+    local name=$1 pairs=$2
+    shift 2
+    "$RT" "$@" --output "$name-ref.png" "$SHOWCASE" || { fail "$name" "rt alone failed"; return; }
+    local ranks threads
+    for pair in $pairs; do
+        read -r ranks threads <<<"${pair/x/ }"
+        local image=$name-${ranks}x$threads.png
+        if ! timeout 120 "${MPIRUN[@]}" -np "$ranks" "$RT" "$@" --threads "$threads" \
+            --output "$image" "$SHOWCASE"; then
+            fail "$name $ranks ranks x $threads threads" "mpirun failed"
+        elif ! cmp -s "$name-ref.png" "$image"; then
+            fail "$name $ranks ranks x $threads threads" "$image differs from one process's"
+        elif [ -e "$image.journal" ]; then
+            fail "$name $ranks ranks x $threads threads" "the journal was left after the image"
+        else
+            ok "$name $ranks ranks x $threads threads: the same bytes as one process"
+        fi
+    done
+}
+
+compare showcase "1x1 1x2 2x1 2x2 3x1 3x2 4x1 4x2" "${SHOWCASE_OPTIONS[@]}" --size 128x80
+compare adaptive-seed7 "2x2 3x1" --quiet --size 96x64 --aa=adaptive --light-samples=1 \
+    --glossy-samples=1 --dof-samples=1 --photon-passes=1 --photons=20000 --seed 7
+compare static "3x1" "${SHOWCASE_OPTIONS[@]}" --size 96x64 --mpi-lease static
+finish
