@@ -176,7 +176,7 @@ SCENARIO("Ray marching a linear ramp of density is off by exactly its jitter", "
 
 SCENARIO("Delta and ratio tracking estimate a ramp's transmittance without bias, whatever the "
          "majorant",
-         "[ch17]") {
+         "[ch17][ex17.2][ex17.3]") {
     GIVEN("density σ(x) = 0.5 + 1·x on [0, 1], so T = e^−(0.5 + 0.5) = e^−1 across it") {
         // Source: T = exp(−∫σ) = exp(−(a d + b d²/2)).
         const double exact = std::exp(-1.0);
@@ -207,7 +207,7 @@ SCENARIO("Delta and ratio tracking estimate a ramp's transmittance without bias,
     }
 }
 
-SCENARIO("Free flights through a ramp are distributed as σ(t)·T(t)", "[ch17]") {
+SCENARIO("Free flights through a ramp are distributed as σ(t)·T(t)", "[ch17][ex17.2]") {
     GIVEN("a purely scattering ramp σ(x) = 0.5 + 2x on [0, 1], majorant 2× the maximum") {
         const rb::Medium m = medium(0.0, 1.0, std::make_shared<RampDensity>(0.5, 2.0, 1.0, 2.0));
         const rb::TrackedMedium tracked(m, rb::Mat4(1.0), everywhere(), 4);
@@ -238,7 +238,7 @@ SCENARIO("Free flights through a ramp are distributed as σ(t)·T(t)", "[ch17]")
     }
 }
 
-SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws it", "[ch17]") {
+SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws it", "[ch17][ex17.1]") {
     for (const double g : {-0.9, 0.0, 0.5, 0.9}) {
         GIVEN("g = " + std::to_string(g)) {
             THEN("2π ∫ p(μ) dμ over μ in [−1, 1] is 1") {
@@ -314,7 +314,7 @@ struct Slab {
 
 }  // namespace
 
-SCENARIO("A slab lit from behind shows single scattering's closed form", "[ch17]") {
+SCENARIO("A slab lit from behind shows single scattering's closed form", "[ch17][ex17.1][ex17.2][ex17.3]") {
     // Source: every point of the slab sees the light through e^(−σt (ℓ − s)) and the eye through
     // e^(−σt s), so L = ∫ σs p(cos 0) I e^(−σt ℓ) ds = σs p(1) ℓ e^(−σt ℓ) I, times π for A4's
     // lights (a white diffuse surface returns I cos θ / r², π times a physical light's).
@@ -358,7 +358,7 @@ SCENARIO("A slab lit from behind shows single scattering's closed form", "[ch17]
     }
 }
 
-SCENARIO("A media furnace: an albedo-1 medium under a uniform sky gives back the sky", "[ch17]") {
+SCENARIO("A media furnace: an albedo-1 medium under a uniform sky gives back the sky", "[ch17][ex17.2]") {
     // Source: with no absorption and a sky of radiance 1 on every side, radiance is 1 everywhere
     // inside and in every direction, whatever the density and the phase function.
     for (const double tau : {0.1, 1.0, 10.0, 100.0})
@@ -436,7 +436,7 @@ rb::Image renderMedia(const std::string& lua, int spp,
 
 }  // namespace
 
-SCENARIO("The image does not depend on the majorant", "[ch17]") {
+SCENARIO("The image does not depend on the majorant", "[ch17][ex17.2][ex17.3]") {
     GIVEN("a lit wall behind a box of ramp smoke, σ(x) = 0.2 + 3x in the box's own space") {
         // 32 × 32 pixels looking at the box, 64 paths each, for one majorant set-up.
         const auto render = [](double slack, int cells) {

@@ -30,6 +30,9 @@ struct Instance {
     /// Chapter 17: the index of the medium node above this one (the medium this one nests
     /// in, which it replaces inside), or -1; and this medium node's own index.
     int mediumParent = -1, mediumIndex = -1;
+    /// Chapter 17: the node's placement of its shape alone (SceneNode::shapeTransform), so the
+    /// medium's density lives in the node's space, not the shape's; null for other instances.
+    const Mat4* mediumPlacement = nullptr;
 
     /// Set the transform and everything derived from it.
     void setTransform(const Mat4& m);

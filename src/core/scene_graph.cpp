@@ -130,6 +130,7 @@ void flattenNode(const SceneNode& node, const Mat4& parentToWorld, const Materia
         if (node.medium) {
             instance.medium = node.medium.get();
             instance.mediumBoundaryOnly = !node.material;
+            instance.mediumPlacement = &node.shapeTransform;
             instance.mediumParent = mediumAbove;
             instance.mediumIndex = mediumAbove = (*compounds.media)++;
         }

@@ -15,6 +15,7 @@
 //   gr.fog(m)            m fills all space outside the media of nodes, for the renders
 //                        requested after the call; gr.fog(nil) clears it.
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
 #include "core/error.h"
@@ -22,10 +23,7 @@
 #include "core/render_context.h"
 #include "media/media.h"
 #include "media/medium.h"
-#if __has_include("media/vdb_density.h") && defined(RB_MEDIA_VDB_READY)
 #include "media/vdb_density.h"
-#define RB_MEDIA_HAS_VDB_API 1
-#endif
 
 namespace rb {
 
@@ -100,11 +98,7 @@ std::shared_ptr<const DensityField> checkDensityTable(lua_State* L, int index) {
         lua_pop(L, 1);
         const SceneBuilder& builder = sceneBuilder(L);
         const std::string path = findSceneFile(builder, name, "gr.medium");
-#ifdef RB_MEDIA_HAS_VDB_API
         return loadVdbDensity(path, grid, &builder.options.memory);
-#else
-        throw InputError(call + ": this build reads no VDB files (" + path + ")");
-#endif
     }
     if (lua_getfield(L, index, "noise") == LUA_TNIL) {
         lua_pop(L, 1);
@@ -182,11 +176,19 @@ int nodeSetMedium(lua_State* L) {
     const char* call = "node:set_medium";
     checkArgCount(L, call, 2, 2, "(medium)");
     auto node = checkNode(L, 1, call, "self");
-    if (!node->shape && !node->compound)
-        throw InputError(std::string(call) + ": node '" + node->name +
-                         "' has no shape; a medium fills a closed shape (a sphere, cube, mesh "
-                         "or CSG node), and gr.fog fills all space");
-    node->medium = checkMedium(L, 2, call);
+    auto medium = checkMedium(L, 2, call);
+    if (!node->shape && !node->compound) {
+        // A group node holds a grid's smoke in the box of its voxels.
+        const AABB box = medium->density->bounds();
+        if (!isFinite(box.lo) || !isFinite(box.hi) || box.empty())
+            throw InputError(std::string(call) + ": node '" + node->name +
+                             "' has no shape; a medium fills a closed shape (a sphere, cube, "
+                             "mesh or CSG node), a group node only a VDB grid's box, and gr.fog "
+                             "fills all space");
+        node->shape = sceneBuilder(L).unitCube;
+        node->shapeTransform = glm::scale(glm::translate(Mat4(1.0), box.lo), box.hi - box.lo);
+    }
+    node->medium = std::move(medium);
     return 0;
 }
 

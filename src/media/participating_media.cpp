@@ -47,10 +47,18 @@ ParticipatingMedia::ParticipatingMedia(std::vector<Instance> boundaries, const M
     if (boundaries_.size() > 63)
         throw InputError("at most 63 nodes may hold a medium, the scene has " +
                          std::to_string(boundaries_.size()));
-    for (const Instance& b : boundaries_)
-        tracked_.push_back(std::make_unique<TrackedMedium>(*b.medium, b.worldToObject,
-                                                           b.shape->bounds(),
-                                                           settings_.majorantResolution));
+    for (const Instance& b : boundaries_) {
+        // The density lives in the node's space: the shape's space, then its placement.
+        const Mat4 placement = b.mediumPlacement ? *b.mediumPlacement : Mat4(1.0);
+        AABB box;
+        const AABB shapeBox = b.shape->bounds();
+        for (int corner = 0; corner < 8; ++corner)
+            box.extend(transformPoint(placement, Vec3(corner & 1 ? shapeBox.hi.x : shapeBox.lo.x,
+                                                      corner & 2 ? shapeBox.hi.y : shapeBox.lo.y,
+                                                      corner & 4 ? shapeBox.hi.z : shapeBox.lo.z)));
+        tracked_.push_back(std::make_unique<TrackedMedium>(*b.medium, placement * b.worldToObject,
+                                                           box, settings_.majorantResolution));
+    }
     if (fog) {
         tracked_.push_back(
             std::make_unique<TrackedMedium>(*fog, Mat4(1.0), fogBox, settings_.majorantResolution));
