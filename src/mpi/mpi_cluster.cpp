@@ -27,7 +27,7 @@ constexpr int kTagLease = 1;   // rank 0 -> worker: tile positions; none means "
 constexpr int kTagResult = 2;  // worker -> rank 0: a finished lease (or its failure)
 constexpr int kTagDone = 3;    // worker -> rank 0: its rays and busy time, after its last lease
 /// Leases a worker holds at once: it renders one while the answer to the last is on its way.
-constexpr int kLeaseAhead = 2;
+constexpr int kLeaseAhead = 3;
 /// The most tiles in one lease.
 constexpr int kMaxLease = 8;
 
@@ -160,15 +160,15 @@ std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& pos
 #pragma omp parallel for schedule(dynamic, 1) num_threads(work.threads)
     for (int i = 0; i < static_cast<int>(positions.size()); ++i) {
         const int thread = omp_get_thread_num();
-        const double start = threadCpuSeconds();
         try {
+            const double start = threadCpuSeconds();
             work.renderTile(positions[i], image, rays[thread]);
+            clock.seconds[thread] += threadCpuSeconds() - start;
             if (thread == 0 && between) between();
         } catch (...) {
 #pragma omp critical(rb_mpi_failure)
             if (!failure) failure = std::current_exception();
         }
-        clock.seconds[thread] += threadCpuSeconds() - start;
     }
     return failure;
 }
@@ -400,8 +400,15 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
     BatchClock clock(work.threads);
     WorkerReport report;
     std::exception_ptr failure;
-    // Render each lease and send it back; each answer brings the next lease (or none).
-    while (!leases.empty()) {
+    // Render each lease and send it back; each result is answered by the next lease (or
+    // none), which is taken in when it has arrived, or waited for once nothing else is left.
+    int answersDue = 0;
+    auto takeAnswer = [&] {
+        leases.push_back(leasePositions(receive(0, kTagLease, &status)));
+        --answersDue;
+    };
+    while (!leases.empty() || answersDue > 0) {
+        if (leases.empty()) takeAnswer();
         const std::vector<int> lease = std::move(leases.front());
         leases.pop_front();
         if (lease.empty()) continue;
@@ -417,7 +424,11 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
             report.work.tiles += lease.size();
         }
         report.work.bytesSent += send(result, 0, kTagResult);
-        leases.push_back(leasePositions(receive(0, kTagLease, &status)));
+        ++answersDue;
+        for (int arrived = 1; answersDue > 0 && arrived;) {
+            MPI_Iprobe(0, kTagLease, MPI_COMM_WORLD, &arrived, &status);
+            if (arrived) takeAnswer();
+        }
     }
     // The report: counters holds this rank's pre-pass rays (its photon share) already.
     for (const RayCounters& r : rays) counters.merge(r);
