@@ -161,7 +161,7 @@ golden-update: configure
 	done
 
 # Benchmarks against POV-Ray and Embree (not a test: CI never gates on timings).
-bench: bench-deps configure
+bench: bench-deps mpi-deps configure
 	cmake -S . -B $(BUILD) >/dev/null
 	cmake --build $(BUILD) -j $(JOBS)
 	bash tests/perf/bench.sh $(BUILD)

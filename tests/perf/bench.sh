@@ -300,6 +300,16 @@ progress "make grade, a class of ${GRADE_STUDENTS:-100}"
 say ""
 bash "$root/tests/perf/grade/grade_speed.sh" "$out/grade" 13 "${GRADE_STUDENTS:-100}" | tee "$out/grade.txt" | tee -a "$report"
 
+# ---- Rendering on many processes (issue 23) ------------------------------------------------
+# Overhead, bytes per frame, startup and balance under mpirun; kept in BUILD_DIR/bench/mpi.txt
+# for the summary. Needs rt built with Open MPI (make bench installs it).
+rm -f "$out/mpi.txt"
+if command -v mpirun >/dev/null; then
+  progress "MPI: overhead, bytes, startup, balance"
+  say ""
+  BENCH_RUNS=$runs bash "$root/tests/perf/mpi/mpi_bench.sh" "$build" | tee "$out/mpi.txt" | tee -a "$report"
+fi
+
 # ---- raybook's BVH against Embree ----------------------------------------------------------
 # Each run's output is also kept in BUILD_DIR/bench/bvh_vs_embree.Nt.txt: the summary below reads
 # its "target NAME VALUE" lines (1 thread, as the issue measures).
@@ -422,5 +432,13 @@ record_row "  the same, raybook's progressive defaults (x)" "$(target_line caust
 say ""
 say "Issue 21 (a course can run it) targets, this run:"
 target_row "make grade, 100 students of chapter 13 (min)" "$(target_line grade_minutes_per_100 "$out/grade.txt")" "<=" 30 "(grade_speed.sh, a cold start)"
+say ""
+say "Issue 23 (rendering on many processes) targets, this run:"
+target_row "2 ranks x 1 thread / 1 rank x 2 threads (x)" "$(target_line mpi_throughput_2x1 "$out/mpi.txt")" ">=" 0.95 "(mpi_bench.sh, showcase 320x200)"
+target_row "bytes sent per frame / film, 2 ranks (x)" "$(target_line mpi_bytes_per_film_2ranks "$out/mpi.txt")" "<=" 1.1 "(tile exchange; photon join apart)"
+target_row "bytes sent per frame / film, 4 ranks (x)" "$(target_line mpi_bytes_per_film_4ranks "$out/mpi.txt")" "<=" 1.1 "(tile exchange; photon join apart)"
+target_row "startup, 4 ranks / 1 rank (x)" "$(target_line mpi_startup_4_over_1 "$out/mpi.txt")" "<=" 1.1 "(16x16 showcase under mpirun)"
+target_row "busy CPU spread at 4 ranks, dynamic" "$(target_line mpi_balance_spread_dynamic "$out/mpi.txt")" "<=" 0.10 "(half_glass.lua; max |rank - mean| / mean)"
+record_row "busy CPU spread at 4 ranks, static split" "$(target_line mpi_balance_spread_static "$out/mpi.txt")" "(no target; the same scene in bands of rows)"
 echo
 echo "bench: table saved to $report"
