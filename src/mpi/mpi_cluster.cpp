@@ -403,6 +403,7 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
     // Render each lease and send it back; each result is answered by the next lease (or
     // none), which is taken in when it has arrived, or waited for once nothing else is left.
     int answersDue = 0;
+    std::deque<std::pair<MPI_Request, std::vector<std::byte>>> sending;  // results in flight
     auto takeAnswer = [&] {
         leases.push_back(leasePositions(receive(0, kTagLease, &status)));
         --answersDue;
@@ -423,13 +424,23 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
                     put(result, v);
             report.work.tiles += lease.size();
         }
-        report.work.bytesSent += send(result, 0, kTagResult);
+        // Sent without waiting: a lease of tiles is larger than Open MPI sends eagerly, and a
+        // blocking send would wait until rank 0 finishes the tile it is rendering.
+        report.work.bytesSent += result.size();
+        sending.emplace_back(MPI_REQUEST_NULL, std::move(result));
+        MPI_Isend(sending.back().second.data(), static_cast<int>(sending.back().second.size()),
+                  MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD, &sending.back().first);
+        for (int sent = 1; !sending.empty() && sent;) {
+            MPI_Test(&sending.front().first, &sent, MPI_STATUS_IGNORE);
+            if (sent) sending.pop_front();
+        }
         ++answersDue;
         for (int arrived = 1; answersDue > 0 && arrived;) {
             MPI_Iprobe(0, kTagLease, MPI_COMM_WORLD, &arrived, &status);
             if (arrived) takeAnswer();
         }
     }
+    for (auto& [request, bytes] : sending) MPI_Wait(&request, MPI_STATUS_IGNORE);
     // The report: counters holds this rank's pre-pass rays (its photon share) already.
     for (const RayCounters& r : rays) counters.merge(r);
     report.rays = counters;
