@@ -4,7 +4,7 @@
 -- light draws a shaft across the room; a plume of smoke from a NanoVDB grid
 -- (assets/plume.nvdb, made by rb_make_plume) rises from the floor into the shaft, bright where
 -- the sun strikes it and shadowing the floor behind it. The camera stands inside the fog.
-gr.antialias{sampler = 'jittered', samples = 64}
+gr.antialias{sampler = 'jittered', samples = 144}
 gr.option('max_depth', 4)
 
 local white = gr.material{kd = {0.75, 0.75, 0.72}, ks = {0, 0, 0}, shininess = 1}
@@ -42,7 +42,7 @@ root:add_child(air)
 
 -- The smoke: a group node holds a grid in the box of its voxels (1 x 2 x 1, standing on y = 0).
 local smoke = gr.node('smoke')
-smoke:set_medium(gr.medium{sigma_s = 14, sigma_a = 1.5, g = 0.2,
+smoke:set_medium(gr.medium{sigma_s = 30, sigma_a = 3, g = 0.2,
                            density = {file = 'assets/plume.nvdb', grid = 'density'}})
 smoke:scale(0.8, 0.8, 0.8)
 smoke:translate(-0.3, 0.0, -0.1)
@@ -50,6 +50,8 @@ root:add_child(smoke)
 
 -- The sun: far off beyond the window, without falloff.
 local sun = gr.light({-6, 5.2, -0.35}, {3.0, 2.8, 2.4}, {1, 0, 0})
+-- A dim lamp under the ceiling, behind the camera: the smoke outside the shaft takes shape.
+local lamp = gr.light({0.3, 1.85, 1.6}, {0.35, 0.33, 0.3}, {1, 0, 0})
 gr.render(root, 'chapter17-media.png', 192, 144,
           {0, 1.0, 1.95}, {0, -0.12, -1}, {0, 1, 0}, 62,
-          {0.06, 0.06, 0.06}, {sun})
+          {0.08, 0.08, 0.08}, {sun, lamp})
