@@ -19,20 +19,22 @@ enum class LeasePolicy {
 class LeaseSchedule {
   public:
     /// Lease `tiles` (positions in render order, or in scanline order for Static, whose bands
-    /// are contiguous runs of that order) to `ranks` ranks.
-    LeaseSchedule(std::vector<int> tiles, int ranks, LeasePolicy policy);
+    /// are contiguous runs of that order) to ranks with threads[r] threads each.
+    LeaseSchedule(std::vector<int> tiles, std::vector<int> threads, LeasePolicy policy);
 
-    /// The next tiles for `rank`: at most `limit`, empty when it has none left. Dynamic
-    /// batches shrink as the queue empties (a quarter of a fair share of what is left), so the
-    /// last leases are single tiles and no rank is left holding a long batch at the end.
-    std::vector<int> next(int rank, int limit);
+    /// The next tiles for `rank`: at most `perThread` per thread of that rank, empty when it
+    /// has none left. A dynamic lease is a quarter of the rank's fair share (by threads) of
+    /// what is left, but at least one tile per thread, so the leases shrink as the queue
+    /// empties and no rank is left holding a long batch at the end.
+    std::vector<int> next(int rank, int perThread);
 
     /// Tiles not leased yet, over every rank.
     std::size_t remaining() const;
 
   private:
     std::vector<std::deque<int>> queues_;  // Dynamic: one shared queue; Static: one per rank
-    int ranks_;
+    std::vector<int> threads_;
+    int totalThreads_ = 0;
     LeasePolicy policy_;
 };
 

@@ -28,8 +28,8 @@ constexpr int kTagResult = 2;  // worker -> rank 0: a finished lease (or its fai
 constexpr int kTagDone = 3;    // worker -> rank 0: its rays and busy time, after its last lease
 /// Leases a worker holds at once: it renders one while the answer to the last is on its way.
 constexpr int kLeaseAhead = 3;
-/// The most tiles in one lease.
-constexpr int kMaxLease = 8;
+/// The most tiles in one lease, per thread of the rank that takes it.
+constexpr int kMaxLeasePerThread = 8;
 
 /// CPU seconds the calling thread has used (not wall time, so oversubscription does not blur it).
 double threadCpuSeconds() {
@@ -267,9 +267,12 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
             failure = std::current_exception();
         }
     }
+    std::vector<int> threads(static_cast<std::size_t>(size_));
     try {
         agree(failure);
         checkSameRender(work.identity);
+        // Leases are sized by each rank's threads (--threads may differ between machines).
+        MPI_Allgather(&work.threads, 1, MPI_INT, threads.data(), 1, MPI_INT, MPI_COMM_WORLD);
     } catch (...) {
         // A run that never started leaves no journal; a resumed one keeps the tiles it had.
         if (journal_ && !work.resume) journal_->discard();
@@ -279,7 +282,7 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
     // Step 2: the exchange; a rank that fails goes on answering until every rank is done.
     try {
         if (rank_ == 0)
-            lead(work, image, counters, todo);
+            lead(work, image, counters, todo, threads);
         else
             follow(work, image, counters);
     } catch (const RenderStopped&) {
@@ -293,8 +296,8 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
 }
 
 void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
-                      const std::vector<int>& todo) {
-    LeaseSchedule schedule(todo, size_, policy_);
+                      const std::vector<int>& todo, const std::vector<int>& threads) {
+    LeaseSchedule schedule(todo, threads, policy_);
     work_.assign(static_cast<std::size_t>(size_), RankWork{});
     std::exception_ptr failure;
     bool stopping = false, remoteFailed = false;
@@ -304,7 +307,7 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
     // What a worker gets next: a lease, or none once the render is ending.
     auto nextLease = [&](int worker) {
         const bool ending = stopping || failure || remoteFailed;
-        return ending ? std::vector<int>{} : schedule.next(worker, kMaxLease);
+        return ending ? std::vector<int>{} : schedule.next(worker, kMaxLeasePerThread);
     };
     // Take in one message: a finished lease (answered with the next) or a worker's report.
     auto serveOne = [&](bool wait) {
@@ -367,7 +370,7 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
             stopping = true;
             break;
         }
-        const std::vector<int> lease = schedule.next(0, std::max(kMaxLease, work.threads));
+        const std::vector<int> lease = schedule.next(0, kMaxLeasePerThread);
         if (lease.empty()) break;
         if (std::exception_ptr e = renderBatch(work, lease, image, rays, clock, serveWaiting))
             failure = e;

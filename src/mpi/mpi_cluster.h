@@ -43,9 +43,10 @@ class MpiCluster final : public Cluster {
     std::FILE* errorStream() const override { return errors_; }
 
   private:
-    /// Rank 0's part: lease, render its own batches, take the others' tiles back.
+    /// Rank 0's part: lease `todo` to ranks of threads[r] threads, render its own batches,
+    /// take the others' tiles back.
     void lead(const TileWork& work, Image& image, RayCounters& counters,
-              const std::vector<int>& todo);
+              const std::vector<int>& todo, const std::vector<int>& threads);
     /// Every other rank's part: render the leases rank 0 sends until it sends none.
     void follow(const TileWork& work, Image& image, RayCounters& counters);
     /// Throw InputError on every rank unless all ranks were given the same render.
