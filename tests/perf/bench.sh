@@ -293,6 +293,24 @@ if [ -x "$build/rt_ch16" ]; then
   PHOTON_RUNS=$runs bash "$root/tests/perf/ch16/photon_speed.sh" "$build" | tee "$out/ch16-speed.txt" | tee -a "$report"
 fi
 
+# ---- Media against POV-Ray's media, the 2-thread speedup and the majorant grid (chapter 17) --
+# A light shaft in homogeneous fog (tests/perf/ch17/shaft.lua) against
+# tests/perf/povray/chapter17-media.pov at equal error (it needs the ch08 RMSE tool), then the
+# chapter scene's 2-thread speedup and ch17_majorant's null collisions per real collision. Each
+# output is also kept in BUILD_DIR/bench/ch17-povray.txt and ch17-speed.txt: the summary below
+# reads their "target NAME VALUE" lines.
+rm -f "$out/ch17-povray.txt" "$out/ch17-speed.txt"  # no stale figures
+if [ -x "$build/rt_ch17" ]; then
+  if [ -x "$build/tests/perf/ch08/ch08_aa_charts" ]; then
+    progress "media against POV-Ray's media"
+    say ""
+    bash "$root/tests/perf/ch17/media_vs_povray.sh" "$build" "$out/ch17" | tee "$out/ch17-povray.txt" | tee -a "$report"
+  fi
+  progress "media speed"
+  say ""
+  MEDIA_RUNS=$runs bash "$root/tests/perf/ch17/media_speed.sh" "$build" | tee "$out/ch17-speed.txt" | tee -a "$report"
+fi
+
 # ---- make grade at class scale (issue 21) ---------------------------------------------------
 # A class of GRADE_STUDENTS (default 100) chapter-13 projects graded from a cold start; kept in
 # BUILD_DIR/bench/grade.txt for the summary.
@@ -429,6 +447,22 @@ record_row "caustics vs POV-Ray photons, equal error (x)" "$(target_line caustic
            "(no target; raybook / POV-Ray time, raybook k = 50 nearest)"
 record_row "  the same, raybook's progressive defaults (x)" "$(target_line caustics_povray_progressive "$ch16povray")" \
            "(no target; n/a where no error level is shared)"
+
+# Issue 22's (chapter 17's) targets, from the chapter 17 block above; n/a when rt_ch17 was not
+# built. The POV-Ray ratios and the null collisions have no target: they are printed for the
+# record.
+ch17speed=$out/ch17-speed.txt
+ch17povray=$out/ch17-povray.txt
+say ""
+say "Issue 22 (chapter 17) targets, this run:"
+say "$(printf "  %-46s %8s %9s  %-6s %s" measure value target "" "")"
+target_row "chapter 17 scene, 2-thread speedup (x)" "$(target_line media_speedup "$ch17speed")" ">=" 1.9 "(rt_ch17 --stats, scenes/chapter17-media.lua)"
+record_row "fog shaft vs POV-Ray media, equal error (x)" "$(target_line media_povray "$ch17povray")" \
+           "(no target; raybook delta tracking / POV-Ray method 3, 1 thread)"
+record_row "  the same, raybook's ray marching (x)" "$(target_line media_povray_march "$ch17povray")" \
+           "(no target; n/a where no error level is shared)"
+record_row "null per real collision, global majorant" "$(target_line null_per_real_global "$ch17speed")" "(no target; ch17_majorant, plume)"
+record_row "null per real collision, 16^3 majorant grid" "$(target_line null_per_real_16 "$ch17speed")" "(no target; the default --media-majorant)"
 say ""
 say "Issue 21 (a course can run it) targets, this run:"
 target_row "make grade, 100 students of chapter 13 (min)" "$(target_line grade_minutes_per_100 "$out/grade.txt")" "<=" 30 "(grade_speed.sh, a cold start)"
