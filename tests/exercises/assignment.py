@@ -96,12 +96,12 @@ def owner(path: str, chapters: dict[int, dict]) -> int | None:
 
 def left_out(path: str) -> bool:
     """Files of the whole book that an assignment does not ship: the showcase and seed scenes
-    and their goldens, the docs build, CI, the maintainer's ladder and the front door (the
-    export writes its own Makefile and README)."""
+    and their goldens, the docs build, CI, the maintainer's ladder, the MPI tests (they render
+    the showcase) and the front door (the export writes its own Makefile and README)."""
     prefixes = ("scenes/seeds/", "scenes/showcase", ".ci/", "docs/", "tests/ladder.sh",
                 "tests/docs_warnings.sh", "tests/scenes/seeds.sh", "tests/perf/", "tests/fuzz/",
                 "tests/exercises/README.md", "tests/exercises/student_docs.py",
-                "tests/student_docs.sh")
+                "tests/student_docs.sh", "tests/mpi/")
     # Build folders and exported projects in the working tree are nobody's source, even when
     # .gitignore does not name them (build-ex/, assignment-ch05/): an export would copy them.
     top = path.split("/", 1)[0]
