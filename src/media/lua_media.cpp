@@ -14,6 +14,8 @@
 //                        one the shape only bounds the medium (a box of smoke).
 //   gr.fog(m)            m fills all space outside the media of nodes, for the renders
 //                        requested after the call; gr.fog(nil) clears it.
+//   gr.option('media_bounces', n)   scatterings after the first (0: single scattering);
+//                        --media-bounces wins
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
@@ -210,6 +212,7 @@ void bindMedia(LuaBindings& lua) {
     lua.function("medium", luaGuard<grMedium>);
     lua.function("fog", luaGuard<grFog>);
     lua.nodeMethod("set_medium", luaGuard<nodeSetMedium>);
+    lua.option("media_bounces", 17, 0, 1e6, true);
 }
 
 }  // namespace rb

@@ -27,6 +27,8 @@ MediaSettings mediaSettings(const RenderContext& context) {
         s.step = parseNumberOption("--media-step", step);
         if (!(s.step > 0.0)) throw InputError("--media-step: must be > 0, got " + step);
     }
+    // Scatterings: --media-bounces, else the scene's gr.option('media_bounces', n), else 256.
+    s.bounces = static_cast<int>(context.sceneOption("media_bounces", s.bounces));
     const std::string bounces = context.cliOption("media-bounces");
     if (!bounces.empty()) {
         const double n = parseNumberOption("--media-bounces", bounces);
@@ -98,7 +100,7 @@ Feature mediaFeature() {
               "1/400 of the scene's size (fog box diagonal)"},
              {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
              {"media-bounces", "N", "scatterings after the first (0: single scattering)",
-              "256"}}};
+              "the scene's media_bounces, else 256"}}};
 }
 
 }  // namespace rb

@@ -187,7 +187,9 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
 // [media-light-scattered]
 Colour ParticipatingMedia::lightScattered(const ShadeContext& ctx, const Vec3& x,
                                           const Vec3& travel, const Medium& m) const {
-    Colour light(0.0);
+    // A4's ambient light arrives from every direction alike, and the phase function integrates
+    // to 1: a particle scatters all of it, as a white diffuse surface returns kd · ambient.
+    Colour light = ctx.scene.ambient;
     for (const PointLight& source : ctx.scene.lights) {
         const bool area = source.shape && ctx.scene.sampleAreaLights;
         const int perAxis = !area                    ? 1

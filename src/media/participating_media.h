@@ -44,8 +44,9 @@ class ParticipatingMedia final : public MediaTerm {
     /// The stretches of the ray between t = 0 and tEnd, in order; empty space is left out.
     void pieces(const Ray& ray, double tEnd, std::vector<Piece>& out) const;
 
-    /// The light of every light that a particle at x of medium m scatters along the unit
-    /// direction `travel` reversed, through attenuated shadow rays (single scattering).
+    /// The light that a particle at x of medium m scatters along the unit direction `travel`
+    /// reversed: A4's ambient light, and every light through attenuated shadow rays (single
+    /// scattering).
     Colour lightScattered(const ShadeContext& ctx, const Vec3& x, const Vec3& travel,
                           const Medium& m) const;
 
