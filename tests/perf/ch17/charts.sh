@@ -141,10 +141,10 @@ if med:
 sentence += (
     f"; ray marching costs far more per sample (a marched shadow ray at every step) and its error "
     f"stops at a floor set by its step ({floors}, each within 5% of the previous sample count's)")
-for k in falling:
-    n = sorted(series[k])
-    sentence += (f", while step {step(k)} still falls, to {series[k][n[-1]][1]:.4f} at {n[-1]} "
-                 f"samples ({series[k][n[-1]][0]:.2f} s)")
+if falling:
+    sentence += ", while " + " and ".join(
+        f"step {step(k)} still falls, to {series[k][max(series[k])][1]:.4f} at {max(series[k])} "
+        f"samples ({series[k][max(series[k])][0]:.2f} s)" for k in falling)
 sentence += (
     f" (whole-image RMSE against an 8100-sample ratio-tracking reference whose own error is about "
     f"{ref_error:.4f}).")
@@ -184,8 +184,8 @@ set logscale xy
 set format x '%g'
 set format y '%g'
 set grid
-set yrange [0.0008:0.15]
-set key bottom left reverse Left box opaque font ',9'
+set yrange [0.0008:0.5]
+set key top right reverse Left box opaque font ',8'
 set label sprintf('own error of the reference (estimated): %.4f', $refError) at graph 0.55, first $refError offset 0,0.7 font ',9' tc rgb 'gray40'
 plot '$data/convergence.dat' index 0 using 2:3 with linespoints pt 7 lw 2.5 lc rgb '#dd3333' title 'ratio tracking (shadows), delta tracking (camera rays)', \\
      '' index 0 using 2:3:1 with labels offset char 0,-1 font ',8' tc rgb '#dd3333' notitle, \\
@@ -242,7 +242,9 @@ set key top right reverse Left box opaque font ',9'
 plot '$data/povray/povray.dat' index 1 using 3:4 with linespoints pt 5 lc rgb '#1f4e8c' title 'POV-Ray, media { intervals 1 samples N }' noenhanced, \\
      '' index 1 using 3:4:2 with labels offset char 0,1 font ',8' tc rgb '#1f4e8c' notitle, \\
      '' index 0 using 3:4 with linespoints pt 7 lw 2 lc rgb '#dd3333' title 'raybook, N spp (delta tracking)', \\
-     '' index 0 using 3:4:2 with labels offset char 0,-1 font ',8' tc rgb '#dd3333' notitle
+     '' index 0 using 3:4:2 with labels offset char 0,-1 font ',8' tc rgb '#dd3333' notitle, \\
+     '' index 2 using 3:4 with linespoints pt 6 lw 2 lc rgb '#e8a33d' title 'raybook ray marching, step S, 1 spp', \\
+     '' index 2 using 3:4:2 with labels offset char 0,-1 font ',8' tc rgb '#e8a33d' notitle
 "
 else
     echo "charts: povray is not installed; ch17-povray not redrawn (make charts installs it)"
