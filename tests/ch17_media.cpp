@@ -37,7 +37,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 /// The seed of every random stream in this file: 1, or RB_CH17_SEED.
-std::uint64_t seed() { return rbtest::seedFromEnv("RB_CH17_SEED"); }
+std::uint64_t seed() {
+    return rbtest::seedFromEnv("RB_CH17_SEED");
+}
 
 /// Density a + b·x inside the box [0, d]³ (zero outside), with its bound over a box scaled by
 /// `slack` (1: the true maximum; 10: a majorant ten times too large).
@@ -122,7 +124,9 @@ double chiSquarePValue(const std::vector<double>& observed, const std::vector<do
 }
 
 /// Šidák's per-test level for k tests at family-wise level alpha.
-double sidak(double alpha, int k) { return 1.0 - std::pow(1.0 - alpha, 1.0 / k); }
+double sidak(double alpha, int k) {
+    return 1.0 - std::pow(1.0 - alpha, 1.0 / k);
+}
 
 }  // namespace
 
@@ -136,8 +140,8 @@ SCENARIO("Light through a homogeneous medium falls off as Beer–Lambert says", 
         rb::Sampler sampler(seed(), 0, 0);
         WHEN("a ray of direction length 2 crosses t = 0.5 to 2 (a distance of 3)") {
             const rb::Ray ray{Vec3(0.0), Vec3(0.0, 0.0, 2.0)};
-            const Colour t = rb::estimateTransmittance(tracked, ray, 0.5, 2.0,
-                                                       rb::TransmittanceMethod::Ratio, 0.1, sampler);
+            const Colour t = rb::estimateTransmittance(
+                tracked, ray, 0.5, 2.0, rb::TransmittanceMethod::Ratio, 0.1, sampler);
             THEN("each channel is exactly e^(−σt·3)") {
                 // Source: Beer–Lambert, T = exp(−σt d), σt = σa + σs = 0.5 in every channel.
                 CHECK(t.r == Approx(std::exp(-1.5)).epsilon(1e-14));
@@ -161,8 +165,9 @@ SCENARIO("Ray marching a linear ramp of density is off by exactly its jitter", "
                 const double u = copy.next1D();  // the jitter the march draws first
                 const Colour t = rb::estimateTransmittance(
                     tracked, ray, 0.0, d, rb::TransmittanceMethod::March, h, sampler);
-                THEN("its optical depth is a·d + b·d²/2 + b·d·h·(u − ½), the midpoint rule "
-                     "shifted by the jitter") {
+                THEN(
+                    "its optical depth is a·d + b·d²/2 + b·d·h·(u − ½), the midpoint rule "
+                    "shifted by the jitter") {
                     // Source: Σ_k (a + b (k + u) h) h over k < N = d/h is a d + b h² (N²/2 +
                     // N (u − ½)) = a d + b d²/2 + b d h (u − ½): exact for u = ½, first order in
                     // h otherwise, and exact on average over u.
@@ -174,9 +179,10 @@ SCENARIO("Ray marching a linear ramp of density is off by exactly its jitter", "
     }
 }
 
-SCENARIO("Delta and ratio tracking estimate a ramp's transmittance without bias, whatever the "
-         "majorant",
-         "[ch17][ex17.2][ex17.3]") {
+SCENARIO(
+    "Delta and ratio tracking estimate a ramp's transmittance without bias, whatever the "
+    "majorant",
+    "[ch17][ex17.2][ex17.3]") {
     GIVEN("density σ(x) = 0.5 + 1·x on [0, 1], so T = e^−(0.5 + 0.5) = e^−1 across it") {
         // Source: T = exp(−∫σ) = exp(−(a d + b d²/2)).
         const double exact = std::exp(-1.0);
@@ -199,7 +205,8 @@ SCENARIO("Delta and ratio tracking estimate a ramp's transmittance without bias,
                             .r;
                     });
                     THEN("the mean lies within the z-test's bound of e^−1") {
-                        INFO("mean " << mean << " ± " << error << ", z = " << (mean - exact) / error);
+                        INFO("mean " << mean << " ± " << error
+                                     << ", z = " << (mean - exact) / error);
                         CHECK(std::abs(mean - exact) < z * error);
                     }
                 }
@@ -238,7 +245,8 @@ SCENARIO("Free flights through a ramp are distributed as σ(t)·T(t)", "[ch17][e
     }
 }
 
-SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws it", "[ch17][ex17.1]") {
+SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws it",
+         "[ch17][ex17.1]") {
     for (const double g : {-0.9, 0.0, 0.5, 0.9}) {
         GIVEN("g = " + std::to_string(g)) {
             THEN("2π ∫ p(μ) dμ over μ in [−1, 1] is 1") {
@@ -266,7 +274,8 @@ SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws
                     const double mu = glm::dot(w, forward);
                     const double phi = std::atan2(glm::dot(w, up), glm::dot(w, side)) + kPi;
                     const int a = std::min(muBins - 1, static_cast<int>((mu + 1.0) / 2.0 * muBins));
-                    const int b = std::min(phiBins - 1, static_cast<int>(phi / (2 * kPi) * phiBins));
+                    const int b =
+                        std::min(phiBins - 1, static_cast<int>(phi / (2 * kPi) * phiBins));
                     observed[a * phiBins + b] += 1;
                 }
                 // Expected: 2π ∫ p dμ over each μ bin (Simpson, 200 intervals), split evenly
@@ -314,7 +323,8 @@ struct Slab {
 
 }  // namespace
 
-SCENARIO("A slab lit from behind shows single scattering's closed form", "[ch17][ex17.1][ex17.2][ex17.3]") {
+SCENARIO("A slab lit from behind shows single scattering's closed form",
+         "[ch17][ex17.1][ex17.2][ex17.3]") {
     // Source: every point of the slab sees the light through e^(−σt (ℓ − s)) and the eye through
     // e^(−σt s), so L = ∫ σs p(cos 0) I e^(−σt ℓ) ds = σs p(1) ℓ e^(−σt ℓ) I, times π for A4's
     // lights (a white diffuse surface returns I cos θ / r², π times a physical light's).
@@ -358,13 +368,14 @@ SCENARIO("A slab lit from behind shows single scattering's closed form", "[ch17]
     }
 }
 
-SCENARIO("A media furnace: an albedo-1 medium under a uniform sky gives back the sky", "[ch17][ex17.2]") {
+SCENARIO("A media furnace: an albedo-1 medium under a uniform sky gives back the sky",
+         "[ch17][ex17.2]") {
     // Source: with no absorption and a sky of radiance 1 on every side, radiance is 1 everywhere
     // inside and in every direction, whatever the density and the phase function.
     for (const double tau : {0.1, 1.0, 10.0, 100.0})
         for (const double g : {-0.9, 0.0, 0.9}) {
-            GIVEN("a unit ball of σs = " + std::to_string(tau) + " (σt R = σs), g = " +
-                  std::to_string(g) + ", seen from its centre") {
+            GIVEN("a unit ball of σs = " + std::to_string(tau) +
+                  " (σt R = σs), g = " + std::to_string(g) + ", seen from its centre") {
                 const rb::Medium m = medium(0.0, tau, std::make_shared<rb::ConstantDensity>(), g);
                 rbtest::TestWorld world;
                 world.addSphere(rb::Mat4(1.0), nullptr, "ball");
@@ -384,8 +395,8 @@ SCENARIO("A media furnace: an albedo-1 medium under a uniform sky gives back the
                         const rb::Integrator integrator(world.scene, world.pipeline);
                         rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 6);
                         const double l =
-                            integrator.trace(rb::Ray{Vec3(0.0), rng.unitVector()}, sampler,
-                                             counters, 0)
+                            integrator
+                                .trace(rb::Ray{Vec3(0.0), rng.unitVector()}, sampler, counters, 0)
                                 .g;
                         lowest = std::min(lowest, l);
                         highest = std::max(highest, l);
@@ -414,9 +425,11 @@ root:add_child(wall)
 local box = gr.cube('smoke')
 box:scale(2, 2, 2)
 box:translate(-1, -1, -1.5)
-box:set_medium(gr.medium)" + medium + R"()
+box:set_medium(gr.medium)" +
+           medium + R"()
 root:add_child(box)
-)" + extra + R"(
+)" + extra +
+           R"(
 gr.render(root, 'x.png', 32, 32, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 40, {0.1, 0.1, 0.1},
           {gr.light({1, 2, 3}, {1, 1, 1}, {1, 0, 0})})
 )";
@@ -444,9 +457,11 @@ SCENARIO("The image does not depend on the majorant", "[ch17][ex17.2][ex17.3]") 
                 medium(0.5, 2.0, std::make_shared<RampDensity>(0.2, 3.0, 1.0, slack), 0.3);
             rb::Box box;
             rbtest::TestWorld world;
-            const rb::Material* white = world.material(rb::Material{Colour(0.8), Colour(0.0), 1.0, {}, {}});
+            const rb::Material* white =
+                world.material(rb::Material{Colour(0.8), Colour(0.0), 1.0, {}, {}});
             world.addBox(rbtest::boxFromTo(Vec3(-2, -2, -2.2), Vec3(2, 2, -2)), white, "wall");
-            world.add(box, rbtest::boxFromTo(Vec3(-1, -1, -1.5), Vec3(1, 1, 0.5)), nullptr, "smoke");
+            world.add(box, rbtest::boxFromTo(Vec3(-1, -1, -1.5), Vec3(1, 1, 0.5)), nullptr,
+                      "smoke");
             rb::Instance& smoke = world.scene.instances.back();
             smoke.medium = &m;
             smoke.mediumBoundaryOnly = true;
@@ -458,18 +473,23 @@ SCENARIO("The image does not depend on the majorant", "[ch17][ex17.2][ex17.3]") 
             const rb::Integrator integrator(world.scene, world.pipeline);
             std::vector<double> image(32 * 32, 0.0);
             for (int p = 0; p < 32 * 32; ++p) {
-                const Vec3 target(-1.2 + 2.4 * (p % 32 + 0.5) / 32, -1.2 + 2.4 * (p / 32 + 0.5) / 32, 0.5);
+                const Vec3 target(-1.2 + 2.4 * (p % 32 + 0.5) / 32,
+                                  -1.2 + 2.4 * (p / 32 + 0.5) / 32, 0.5);
                 for (int k = 0; k < 64; ++k) {
                     rb::Sampler sampler(seed(), static_cast<std::uint64_t>(p), k + 64 * cells);
                     rb::RayCounters counters;
-                    image[p] += integrator.trace(rb::Ray{Vec3(0, 0, 4), target - Vec3(0, 0, 4)},
-                                                 sampler, counters, 0).g / 64;
+                    image[p] += integrator
+                                    .trace(rb::Ray{Vec3(0, 0, 4), target - Vec3(0, 0, 4)}, sampler,
+                                           counters, 0)
+                                    .g /
+                                64;
                 }
             }
             return image;
         };
-        WHEN("it is rendered with the true maximum in one cell, and with 10× majorants in 16³ "
-             "cells") {
+        WHEN(
+            "it is rendered with the true maximum in one cell, and with 10× majorants in 16³ "
+            "cells") {
             const std::vector<double> tight = render(1.0, 1), loose = render(10.0, 16);
             THEN("the pixel differences have mean zero (a t-test over the 1024 pixels)") {
                 // The two renders draw different numbers, so each pixel's difference is noise
@@ -503,15 +523,19 @@ SCENARIO("Media sit where the scene graph puts them", "[ch17]") {
     };
     // Each crossing restarts the ray just beyond the surface (the ray offset, ~1e-9 of the
     // coordinates), so lengths inside agree to about 1e-9 per crossing: 1e-8 below.
-    const std::string light = "gr.render(root, 'x.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, "
-                              "40, {0, 0, 0}, {gr.light({0, 9, 0}, {1, 1, 1}, {1, 0, 0})})\n";
+    const std::string light =
+        "gr.render(root, 'x.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, "
+        "40, {0, 0, 0}, {gr.light({0, 9, 0}, {1, 1, 1}, {1, 0, 0})})\n";
     GIVEN("a ball of radius 1 with σt = 1 at the origin") {
-        const std::string lua = "local root = gr.node('root')\n"
-                                "local s = gr.sphere('s')\n"
-                                "s:set_medium(gr.medium{sigma_s = 1})\n"
-                                "root:add_child(s)\n" + light;
-        THEN("a segment that starts inside it (a camera in the fog) is dimmed by its length "
-             "inside, e^−1 from the centre out") {
+        const std::string lua =
+            "local root = gr.node('root')\n"
+            "local s = gr.sphere('s')\n"
+            "s:set_medium(gr.medium{sigma_s = 1})\n"
+            "root:add_child(s)\n" +
+            light;
+        THEN(
+            "a segment that starts inside it (a camera in the fog) is dimmed by its length "
+            "inside, e^−1 from the centre out") {
             CHECK(transmittanceThrough(lua, Vec3(0.0), Vec3(0, 0, 5)) ==
                   Approx(std::exp(-1.0)).epsilon(1e-8));
             CHECK(transmittanceThrough(lua, Vec3(0, 0, -0.5), Vec3(0, 0, 0.5)) ==
@@ -519,37 +543,43 @@ SCENARIO("Media sit where the scene graph puts them", "[ch17]") {
         }
     }
     GIVEN("a concave medium: a 2 × 2 × 2 box with a ball of radius 0.8 cut out of it (CSG)") {
-        const std::string lua = "local root = gr.node('root')\n"
-                                "local b = gr.cube('b') b:scale(2, 2, 2) b:translate(-1, -1, -1)\n"
-                                "local s = gr.sphere('s') s:scale(0.8, 0.8, 0.8)\n"
-                                "local c = gr.difference(b, s, 'c')\n"
-                                "c:set_medium(gr.medium{sigma_s = 1})\n"
-                                "root:add_child(c)\n" + light;
+        const std::string lua =
+            "local root = gr.node('root')\n"
+            "local b = gr.cube('b') b:scale(2, 2, 2) b:translate(-1, -1, -1)\n"
+            "local s = gr.sphere('s') s:scale(0.8, 0.8, 0.8)\n"
+            "local c = gr.difference(b, s, 'c')\n"
+            "c:set_medium(gr.medium{sigma_s = 1})\n"
+            "root:add_child(c)\n" +
+            light;
         THEN("a ray through the middle is dimmed only by the two walls of 0.2: e^−0.4") {
             CHECK(transmittanceThrough(lua, Vec3(0, 0, -3), Vec3(0, 0, 3)) ==
                   Approx(std::exp(-0.4)).epsilon(1e-8));
         }
     }
     GIVEN("a ball of σt = 3 and radius 0.5 nested (as a child) in a ball of σt = 1, radius 1") {
-        const std::string lua = "local root = gr.node('root')\n"
-                                "local outer = gr.sphere('outer')\n"
-                                "outer:set_medium(gr.medium{sigma_s = 1})\n"
-                                "local inner = gr.sphere('inner') inner:scale(0.5, 0.5, 0.5)\n"
-                                "inner:set_medium(gr.medium{sigma_s = 3})\n"
-                                "outer:add_child(inner)\n"
-                                "root:add_child(outer)\n" + light;
+        const std::string lua =
+            "local root = gr.node('root')\n"
+            "local outer = gr.sphere('outer')\n"
+            "outer:set_medium(gr.medium{sigma_s = 1})\n"
+            "local inner = gr.sphere('inner') inner:scale(0.5, 0.5, 0.5)\n"
+            "inner:set_medium(gr.medium{sigma_s = 3})\n"
+            "outer:add_child(inner)\n"
+            "root:add_child(outer)\n" +
+            light;
         THEN("the inner medium replaces the outer inside it: e^−(1·1 + 3·1)") {
             CHECK(transmittanceThrough(lua, Vec3(0, 0, -3), Vec3(0, 0, 3)) ==
                   Approx(std::exp(-4.0)).epsilon(1e-8));
         }
     }
     GIVEN("two overlapping sibling balls, σt = 1 then σt = 2, centres 1 apart on z") {
-        const std::string lua = "local root = gr.node('root')\n"
-                                "local a = gr.sphere('a')\n"
-                                "a:set_medium(gr.medium{sigma_s = 1})\n"
-                                "local b = gr.sphere('b') b:translate(0, 0, 1)\n"
-                                "b:set_medium(gr.medium{sigma_s = 2})\n"
-                                "root:add_child(a) root:add_child(b)\n" + light;
+        const std::string lua =
+            "local root = gr.node('root')\n"
+            "local a = gr.sphere('a')\n"
+            "a:set_medium(gr.medium{sigma_s = 1})\n"
+            "local b = gr.sphere('b') b:translate(0, 0, 1)\n"
+            "b:set_medium(gr.medium{sigma_s = 2})\n"
+            "root:add_child(a) root:add_child(b)\n" +
+            light;
         THEN("the later node fills the overlap: e^−(1·1 + 2·2) along the z axis") {
             // a covers z in [−1, 1], b covers [0, 2]: a alone on [−1, 0], b on [0, 2].
             CHECK(transmittanceThrough(lua, Vec3(0, 0, -3), Vec3(0, 0, 3)) ==
@@ -566,8 +596,9 @@ SCENARIO("Media sit where the scene graph puts them", "[ch17]") {
                       "parent:add_child(s" + std::to_string(k) + ") parent = s" +
                       std::to_string(k) + "\n";
         lua = mediumScene("{sigma_s = 0, sigma_a = 0}", shells);
-        THEN("with --max-depth 1 the wall still shades as without them: interfaces cost no "
-             "depth") {
+        THEN(
+            "with --max-depth 1 the wall still shades as without them: interfaces cost no "
+            "depth") {
             const auto with = rbtest::worldFromLua(lua, rbtest::chapters(17));
             with->scene.maxDepth = 1;
             const Colour c = rbtest::traceOne(*with, rb::Ray{Vec3(0, 0, 4), Vec3(0, 0, -1)});
@@ -600,7 +631,9 @@ SCENARIO("A scene without media pays nothing for chapter 17", "[ch17]") {
         std::ifstream in(std::string(RB_SOURCE_DIR) + "/scenes/chapter16-photon-mapping.lua");
         const std::string lua{std::istreambuf_iterator<char>(in), {}};
         const auto world = rbtest::worldFromLua(lua, rbtest::chapters(17));
-        THEN("no media term is installed") { CHECK(world->pipeline.media == nullptr); }
+        THEN("no media term is installed") {
+            CHECK(world->pipeline.media == nullptr);
+        }
     }
 }
 
@@ -609,8 +642,8 @@ SCENARIO("Bad media are refused with the call and what was expected", "[ch17]") 
         return rbtest::loadError(mediumScene(medium), rbtest::chapters(17));
     };
     THEN("negative coefficients, |g| ≥ 1, unknown fields and bad densities are refused") {
-        CHECK_THAT(error("{sigma_a = -1}"), Contains("scene.lua:") && Contains("sigma_a") &&
-                                                Contains("≥ 0"));
+        CHECK_THAT(error("{sigma_a = -1}"),
+                   Contains("scene.lua:") && Contains("sigma_a") && Contains("≥ 0"));
         CHECK_THAT(error("{sigma_s = {1, -2, 1}}"), Contains("sigma_s") && Contains("≥ 0"));
         CHECK_THAT(error("{g = 1}"), Contains("'g'") && Contains("between −1 and 1"));
         CHECK_THAT(error("{g = -1.5}"), Contains("'g'"));

@@ -168,7 +168,6 @@ class Integrator {
     const Pipeline& pipeline() const { return pipeline_; }
 
   private:
-
     const Scene& scene_;
     const Pipeline& pipeline_;
 };

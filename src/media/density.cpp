@@ -16,13 +16,17 @@ AABB everywhere() {
 
 }  // namespace
 
-AABB ConstantDensity::bounds() const { return everywhere(); }
+AABB ConstantDensity::bounds() const {
+    return everywhere();
+}
 
 double NoiseDensity::at(const Vec3& p) const {
     const double n = fractalNoise(frequency_ * p, octaves_, seed_);
     return std::clamp(bias_ + gain_ * n, 0.0, 1.0);
 }
 
-AABB NoiseDensity::bounds() const { return everywhere(); }
+AABB NoiseDensity::bounds() const {
+    return everywhere();
+}
 
 }  // namespace rb

@@ -104,8 +104,9 @@ std::shared_ptr<const DensityField> checkDensityTable(lua_State* L, int index) {
     }
     if (lua_getfield(L, index, "noise") == LUA_TNIL) {
         lua_pop(L, 1);
-        throw InputError(call + " must be a number, {file = 'grid.nvdb', grid = 'density'} or "
-                                "{noise = frequency, octaves =, bias =, gain =, seed =}");
+        throw InputError(call +
+                         " must be a number, {file = 'grid.nvdb', grid = 'density'} or "
+                         "{noise = frequency, octaves =, bias =, gain =, seed =}");
     }
     lua_pop(L, 1);
     checkFields(L, index, {"noise", "octaves", "bias", "gain", "seed"}, call);
@@ -144,7 +145,8 @@ int grMedium(lua_State* L) {
                          formatNumber(medium->g));
     const int type = lua_getfield(L, 1, "density");
     if (type == LUA_TNIL || type == LUA_TNUMBER) {
-        const double scale = type == LUA_TNIL ? 1.0 : checkNumberAt(L, -1, "gr.medium: field 'density'");
+        const double scale =
+            type == LUA_TNIL ? 1.0 : checkNumberAt(L, -1, "gr.medium: field 'density'");
         if (!(scale >= 0.0))
             throw InputError("gr.medium: field 'density' must be ≥ 0, got " + formatNumber(scale));
         medium->sigmaA *= scale;
@@ -154,7 +156,8 @@ int grMedium(lua_State* L) {
         medium->density = checkDensityTable(L, -1);
     } else {
         throw InputError(std::string("gr.medium: field 'density' must be a number or a table, "
-                                     "got ") + luaL_typename(L, -1));
+                                     "got ") +
+                         luaL_typename(L, -1));
     }
     lua_pop(L, 1);
     chargeMemory(L, sizeof(Medium));

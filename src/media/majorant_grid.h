@@ -74,8 +74,8 @@ void MajorantGrid::traverse(const Ray& ray, double tMin, double tMax, Visit&& vi
     double t = tMin;
     while (t < tMax) {
         // The wall crossed first ends this cell.
-        const int a = nextT[0] < nextT[1] ? (nextT[0] < nextT[2] ? 0 : 2)
-                                          : (nextT[1] < nextT[2] ? 1 : 2);
+        const int a =
+            nextT[0] < nextT[1] ? (nextT[0] < nextT[2] ? 0 : 2) : (nextT[1] < nextT[2] ? 1 : 2);
         const double tEnd = std::min(nextT[a], tMax);
         if (tEnd > t && !visit(t, tEnd, cell(cellIndex[0], cellIndex[1], cellIndex[2]))) return;
         t = tEnd;

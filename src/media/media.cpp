@@ -74,13 +74,15 @@ void installMedia(Pipeline& pipeline, Scene& scene, const RenderContext& context
     // A scene without media pays nothing: no term.
     if (boundaries.empty() && !fog) return;
     // Nested media come later in the scene graph's order, and win inside.
-    std::stable_sort(boundaries.begin(), boundaries.end(),
-                     [](const Instance& a, const Instance& b) { return a.mediumIndex < b.mediumIndex; });
+    std::stable_sort(
+        boundaries.begin(), boundaries.end(),
+        [](const Instance& a, const Instance& b) { return a.mediumIndex < b.mediumIndex; });
     const AABB box = fogBounds(scene.instances, scene, context.job);
     // A shape that only bounds a medium is no surface.
     std::erase_if(scene.instances, [](const Instance& i) { return i.mediumBoundaryOnly; });
     if (settings.step == 0.0) settings.step = glm::length(box.hi - box.lo) / 400.0;
-    pipeline.media = std::make_shared<ParticipatingMedia>(std::move(boundaries), fog, box, settings);
+    pipeline.media =
+        std::make_shared<ParticipatingMedia>(std::move(boundaries), fog, box, settings);
 }
 // [install-media]
 

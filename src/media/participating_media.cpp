@@ -18,7 +18,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kMaxCrossings = 64;
 
 /// The largest channel.
-double maxChannel(const Colour& c) { return std::max({c.r, c.g, c.b}); }
+double maxChannel(const Colour& c) {
+    return std::max({c.r, c.g, c.b});
+}
 
 /// Where the ray crosses the surface of `boundary`, from t = 0 to infinity, in order.
 int crossings(const Instance& boundary, const Ray& ray, double* ts) {
@@ -164,8 +166,13 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
                 throughput = beta;
                 return radiance;
             }
-            const ShadeContext next{ctx.scene, ctx.integrator, ctx.sampler, ctx.counters,
-                                    ctx.depth + 1, ctx.media, ctx.weight * maxChannel(beta)};
+            const ShadeContext next{ctx.scene,
+                                    ctx.integrator,
+                                    ctx.sampler,
+                                    ctx.counters,
+                                    ctx.depth + 1,
+                                    ctx.media,
+                                    ctx.weight * maxChannel(beta)};
             return radiance +
                    beta * (found ? ctx.integrator.shade(next, r, hit) : ctx.scene.background);
         }
@@ -192,7 +199,7 @@ Colour ParticipatingMedia::lightScattered(const ShadeContext& ctx, const Vec3& x
     Colour light = ctx.scene.ambient;
     for (const PointLight& source : ctx.scene.lights) {
         const bool area = source.shape && ctx.scene.sampleAreaLights;
-        const int perAxis = !area                    ? 1
+        const int perAxis = !area                        ? 1
                             : ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples
                                                          : source.shape->samplesPerAxis();
         Colour sum(0.0);
@@ -250,8 +257,8 @@ Colour ParticipatingMedia::transmittance(const Vec3& a, const Vec3& b, Sampler& 
         settings_.march ? TransmittanceMethod::March : settings_.shadows;
     Colour tr(1.0);
     for (const Piece& piece : stretches) {
-        tr *= estimateTransmittance(*piece.medium, ray, piece.t0, piece.t1, method,
-                                    settings_.step, sampler);
+        tr *= estimateTransmittance(*piece.medium, ray, piece.t0, piece.t1, method, settings_.step,
+                                    sampler);
         if (!(maxChannel(tr) > 0.0)) break;
     }
     return tr;

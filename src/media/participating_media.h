@@ -16,7 +16,7 @@ namespace rb {
 struct MediaSettings {
     bool march = false;  ///< Ray marching (single scattering only) instead of tracking.
     TransmittanceMethod shadows = TransmittanceMethod::Ratio;  ///< Shadow-ray estimator.
-    double step = 0.0;         ///< Marching step in world units; 0: 1/200 of the scene's size.
+    double step = 0.0;  ///< Marching step in world units; 0: 1/400 of the fog box diagonal.
     int majorantResolution = 16;  ///< Majorant grid cells per axis.
     /// Scatterings a path may take in media after the first (0: single scattering only).
     int bounces = 256;

@@ -8,7 +8,9 @@ namespace rb {
 namespace {
 
 /// The largest channel.
-double maxChannel(const Colour& c) { return std::max({c.r, c.g, c.b}); }
+double maxChannel(const Colour& c) {
+    return std::max({c.r, c.g, c.b});
+}
 
 /// The next tentative collision after t with majorant mu per unit of t: an exponential step.
 double nextCollision(double t, double mu, Sampler& sampler) {
@@ -21,15 +23,16 @@ TrackedMedium::TrackedMedium(const Medium& medium_, const Mat4& worldToMedium_,
                              const AABB& shapeBox, int majorantResolution)
     : medium(medium_),
       worldToMedium(worldToMedium_),
-      majorants(*medium_.density,
-                [&] {
-                    // Track only where the density and the medium's shape overlap.
-                    AABB box = medium_.density->bounds();
-                    box.lo = glm::max(box.lo, shapeBox.lo);
-                    box.hi = glm::min(box.hi, shapeBox.hi);
-                    return box;
-                }(),
-                majorantResolution) {}
+      majorants(
+          *medium_.density,
+          [&] {
+              // Track only where the density and the medium's shape overlap.
+              AABB box = medium_.density->bounds();
+              box.lo = glm::max(box.lo, shapeBox.lo);
+              box.hi = glm::min(box.hi, shapeBox.hi);
+              return box;
+          }(),
+          majorantResolution) {}
 
 Colour beerLambert(const Colour& sigmaT, double d) {
     return {std::exp(-sigmaT.r * d), std::exp(-sigmaT.g * d), std::exp(-sigmaT.b * d)};

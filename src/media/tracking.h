@@ -30,8 +30,8 @@ struct TrackedMedium {
 struct FreeFlight {
     enum class Event { None, Scattered, Absorbed };
     Event event = Event::None;
-    double t = 0.0;       ///< Where it scattered.
-    Colour weight{1.0};   ///< Throughput from t0 to the event (or to t1 when there is none).
+    double t = 0.0;      ///< Where it scattered.
+    Colour weight{1.0};  ///< Throughput from t0 to the event (or to t1 when there is none).
 };
 
 /// Follow a ray from t0 to t1 by delta tracking against the majorant grid (spectral tracking
