@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <functional>
@@ -46,6 +47,10 @@ struct TileWork {
     std::function<void(int k, Image& image, RayCounters& rays)> renderTile;
     /// Asked between batches on the first process; true stops the render (Ctrl-C, --time-limit).
     std::function<bool()> shouldStop;
+    /// For the progress bar, on every process: tile k of the job (any process's) is started,
+    /// and finished having traced `rays` rays (a remote lease's rays go to its first tile).
+    std::function<void(int k)> tileStarted;
+    std::function<void(int k, std::uint64_t rays)> tileFinished;
 };
 
 /// The processes of one run. Every call below is collective: each process makes it, in the

@@ -188,9 +188,17 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
             renderImageTile(tiles[k], pipeline, integrator, camera, width, height, spp,
                             settings.seed, film, rays);
         };
-        settings.cluster->renderTiles(
-            {tiles, threads, settings.resume, *settings.identity, renderOne, settings.shouldStop},
-            image, counters);
+        const auto started = [&](int k) { progress.tileStarted(k); };
+        const auto finished = [&](int k, std::uint64_t rays) { progress.tileDone(k, rays); };
+        try {
+            settings.cluster->renderTiles({tiles, threads, settings.resume, *settings.identity,
+                                           renderOne, settings.shouldStop, started, finished},
+                                          image, counters);
+        } catch (...) {
+            progress.finish();
+            throw;
+        }
+        progress.finish();
         return image;
     }
 

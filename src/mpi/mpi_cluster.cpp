@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 #include "core/error.h"
 #include "core/interrupt.h"
@@ -162,7 +163,10 @@ std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& pos
         const int thread = omp_get_thread_num();
         try {
             const double start = threadCpuSeconds();
+            const std::uint64_t raysBefore = rays[thread].total();
+            work.tileStarted(positions[i]);
             work.renderTile(positions[i], image, rays[thread]);
+            work.tileFinished(positions[i], rays[thread].total() - raysBefore);
             clock.seconds[thread] += threadCpuSeconds() - start;
             if (thread == 0 && between) between();
         } catch (...) {
@@ -253,6 +257,8 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
                                      std::to_string(t.position) + ") this image does not have");
                 placeTile(image, work.tiles[k], t.pixels.data());
                 done[k] = true;
+                work.tileStarted(t.position);  // the progress bar counts it as done
+                work.tileFinished(t.position, 0);
             }
             journal_ = std::make_unique<JournalWriter>(path, work.identity, kept);
             for (std::size_t k = 0; k < work.tiles.size(); ++k)
@@ -307,7 +313,10 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
     // What a worker gets next: a lease, or none once the render is ending.
     auto nextLease = [&](int worker) {
         const bool ending = stopping || failure || remoteFailed;
-        return ending ? std::vector<int>{} : schedule.next(worker, kMaxLeasePerThread);
+        std::vector<int> lease =
+            ending ? std::vector<int>{} : schedule.next(worker, kMaxLeasePerThread);
+        for (int p : lease) work.tileStarted(p);
+        return lease;
     };
     // Take in one message: a finished lease (answered with the next) or a worker's report.
     auto serveOne = [&](bool wait) {
@@ -330,9 +339,10 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
             --workersLeft;
             return true;
         }
-        // A finished lease: [failed][count][positions][pixels of each tile, in order].
+        // A finished lease: [failed][count][rays][positions][pixels of each tile, in order].
         const std::int32_t failed = take<std::int32_t>(bytes, at);
         const std::int32_t count = take<std::int32_t>(bytes, at);
+        std::uint64_t leaseRays = take<std::uint64_t>(bytes, at);
         std::vector<int> positions(static_cast<std::size_t>(count));
         for (int& p : positions) p = take<std::int32_t>(bytes, at);
         if (failed) remoteFailed = true;
@@ -341,6 +351,7 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
             const ImageTile& tile = work.tiles[static_cast<std::size_t>(p)];
             const auto* pixels = reinterpret_cast<const float*>(bytes.data() + at);
             placeTile(image, tile, pixels);
+            work.tileFinished(p, std::exchange(leaseRays, 0));
             at += static_cast<std::size_t>(tile.pixels()) * 3 * sizeof(float);
             // A journal that cannot be written fails the render, which still ends in order.
             try {
@@ -416,10 +427,17 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
         const std::vector<int> lease = std::move(leases.front());
         leases.pop_front();
         if (lease.empty()) continue;
+        const auto raysSoFar = [&] {
+            std::uint64_t total = 0;
+            for (const RayCounters& r : rays) total += r.total();
+            return total;
+        };
+        const std::uint64_t raysBefore = raysSoFar();
         if (!failure) failure = renderBatch(work, lease, image, rays, clock, nullptr);
         std::vector<std::byte> result;
         put(result, static_cast<std::int32_t>(failure ? 1 : 0));
         put(result, static_cast<std::int32_t>(lease.size()));
+        put(result, raysSoFar() - raysBefore);
         for (int p : lease) put(result, static_cast<std::int32_t>(p));
         if (!failure) {
             for (int p : lease)

@@ -44,7 +44,7 @@ expect "broken scene on rank 0 only" "the student forgot an end" \
     -np 1 "$RT" --quiet broken.lua : -np 2 "$RT" "${GOOD[@]}"
 expect "a photon pass over --max-memory on rank 1 only, while rank 0 traces its share" \
     "photon pass 1 (200000 photons) needs about" \
-    -np 1 "$RT" "${GOOD[@]}" --photons=200000 : -np 1 "$RT" "${GOOD[@]}" --photons=200000 --max-memory 32M
+    -np 1 "$RT" "${GOOD[@]}" --photons=200000 : -np 1 "$RT" "${GOOD[@]}" --photons=200000 --max-memory 128M
 expect "ranks given different seeds" "the ranks were given different renders" \
     -np 1 "$RT" "${GOOD[@]}" --seed 1 : -np 1 "$RT" "${GOOD[@]}" --seed 2
 expect "an output folder that does not exist" "does not exist" \

@@ -7,6 +7,8 @@
 /// for another render (another seed, size, scene or rt version) is refused with a message that
 /// names what differs. The tests write journals into a temporary folder and cut them at every
 /// byte of their last record.
+#include "mpi/journal.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
@@ -17,7 +19,6 @@
 #include <vector>
 
 #include "core/error.h"
-#include "mpi/journal.h"
 
 namespace {
 
@@ -100,7 +101,9 @@ SCENARIO("a journal gives back every tile it was given, bit for bit, in order", 
         WHEN("the image is written and the journal discarded") {
             rb::JournalWriter journal(path, identity("out.png"), {});
             journal.discard();
-            THEN("no file is left") { CHECK_FALSE(fs::exists(path)); }
+            THEN("no file is left") {
+                CHECK_FALSE(fs::exists(path));
+            }
         }
     }
 }
@@ -126,7 +129,9 @@ SCENARIO("a record cut short by a kill is dropped, and every earlier one survive
                 const auto tiles = rb::readJournal((dir / "cut").string(), identity("out.png"));
                 if (tiles.size() != 1 || !sameBits(tiles[0].pixels, a)) ++wrong;
             }
-            THEN("each cut gives back exactly the first tile") { CHECK(wrong == 0); }
+            THEN("each cut gives back exactly the first tile") {
+                CHECK(wrong == 0);
+            }
         }
         WHEN("one byte of the last record's pixels is damaged") {
             std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
