@@ -366,6 +366,39 @@ SCENARIO("A slab lit from behind shows single scattering's closed form",
             }
         }
     }
+    GIVEN(
+        "a coloured slab: σa = (0.1, 0.3, 0.5), σs = (0.6, 0.4, 0.2), so each channel has "
+        "its own σt") {
+        // One path carries all three channels, drawn by the largest; spectral tracking's
+        // weights keep each channel's mean at its own closed form.
+        rb::Medium m = medium(0.0, 0.0, std::make_shared<TrackedConstant>(1.0), g);
+        m.sigmaA = Colour(0.1, 0.3, 0.5);
+        m.sigmaS = Colour(0.6, 0.4, 0.2);
+        const Slab slab(m, length, single);
+        WHEN("the ray along the axis is traced 200000 times") {
+            std::vector<Colour> samples(200000);
+            for (int i = 0; i < 200000; ++i) {
+                rb::RayCounters counters;
+                const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+                rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 7);
+                samples[i] = integrator.trace(ray, sampler, counters, 0);
+            }
+            THEN(
+                "each channel passes a z-test against π p(1) σs ℓ e^(−σt ℓ) with its own "
+                "coefficients") {
+                const double zc = rbtest::zCritical(sidak(0.001, 3));
+                for (int c = 0; c < 3; ++c) {
+                    const double want = kPi * rb::henyeyGreenstein(1.0, g) * m.sigmaS[c] * length *
+                                        std::exp(-(m.sigmaA[c] + m.sigmaS[c]) * length);
+                    const auto [mean, error] =
+                        meanAndError(200000, [&](int i) { return samples[i][c]; });
+                    INFO("channel " << c << ": mean " << mean << " ± " << error << " against "
+                                    << want);
+                    CHECK(std::abs(mean - want) < zc * error);
+                }
+            }
+        }
+    }
 }
 
 SCENARIO("A media furnace: an albedo-1 medium under a uniform sky gives back the sky",
