@@ -647,13 +647,18 @@ SCENARIO("A dense medium renders without black or NaN pixels", "[ch17]") {
             const rb::Image image = renderMedia(lua, 4);
             THEN("every pixel is finite, and every pixel of the box's face is lit") {
                 CHECK(rbtest::allFiniteNonNegative(image));
-                // The box covers the middle of the view; its face scatters the light back.
+                // The box covers the middle of the view; its face scatters the light back. A4's
+                // ambient (0.1) alone would give 0.1, and single scattering adds about an eighth
+                // of a white wall's light (the first particle sees the light through the cloud
+                // only at grazing depth), together about 0.2; multiple scattering brings the
+                // face near a white wall's 0.5 to 0.9. So a face darker than 0.25 means the
+                // light got lost in the cloud.
                 float darkest = 1e9f;
                 for (int y = 12; y < 20; ++y)
                     for (int x = 12; x < 20; ++x)
                         darkest = std::min(darkest, image.data()[3 * (y * 32 + x)]);
                 INFO("darkest pixel of the face " << darkest);
-                CHECK(darkest > 0.05f);
+                CHECK(darkest > 0.25f);
             }
         }
     }
