@@ -162,10 +162,12 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
         settings_.radius > 0.0 ? settings_.radius : kCausticFootprints * footprint;
     const double indirectR0 =
         settings_.radius > 0.0 ? settings_.radius : kIndirectFootprints * footprint;
-    // Step 2: each pass traces new photons for each map and sorts them into a grid sized for
-    // that pass's radius.
+    // Step 2: each pass traces new photons for each map; then each pass's photons are sorted
+    // into a grid sized for that pass's radius. The grids do not depend on one another, so they
+    // are built side by side, one pass to a thread.
     auto tracePasses = [&](PhotonPaths paths, double r0, PhotonPasses& map) {
         map.radii = passRadii(r0, settings_.alpha, settings_.passes, settings_.classic);
+        std::vector<std::vector<Photon>> traced(settings_.passes);
         for (int pass = 0; pass < settings_.passes; ++pass) {
             if (ctx.memory)
                 ctx.memory->require(photonPassBytes(settings_.photons), where_,
@@ -177,10 +179,13 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
             trace.pass = pass;
             trace.seed = ctx.seed;
             trace.cluster = ctx.cluster;
-            std::vector<Photon> photons = tracePhotons(scene, scattering, trace, ctx.counters);
-            map.stored += photons.size();
-            map.grids.emplace_back(std::move(photons), map.radii[pass]);
+            traced[pass] = tracePhotons(scene, scattering, trace, ctx.counters);
+            map.stored += traced[pass].size();
         }
+        map.grids.resize(settings_.passes);
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int pass = 0; pass < settings_.passes; ++pass)
+            map.grids[pass] = PhotonGrid(std::move(traced[pass]), map.radii[pass]);
     };
     if (settings_.caustics) tracePasses(PhotonPaths::Caustic, causticR0, caustics_);
     if (settings_.indirect) tracePasses(PhotonPaths::Indirect, indirectR0, indirect_);
