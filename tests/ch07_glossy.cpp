@@ -49,6 +49,7 @@ using rb::Vec2;
 using rb::Vec3;
 using rbtest::bitIdentical;
 using rbtest::chapters;
+using rbtest::sidak;
 using rbtest::zCritical;
 
 namespace {
@@ -65,13 +66,6 @@ std::uint64_t testSeed() {
 /// P(χ²_dof > x): the p-value of a chi-square statistic.
 double chiSquareTail(double x, int dof) {
     return rbtest::upperGammaQ(0.5 * dof, 0.5 * x);
-}
-
-/// Šidák's per-test level for k independent tests at family-wise level alpha.
-/// Source: Šidák, "Rectangular confidence regions for the means of multivariate normal
-/// distributions", JASA 62 (1967).
-double sidak(double alpha, int k) {
-    return 1.0 - std::pow(1.0 - alpha, 1.0 / k);
 }
 
 /// The family-wise significance level of every test in this file.

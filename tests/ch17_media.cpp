@@ -31,6 +31,7 @@
 using Catch::Contains;
 using rb::Colour;
 using rb::Vec3;
+using rbtest::sidak;
 
 namespace {
 
@@ -121,11 +122,6 @@ double chiSquarePValue(const std::vector<double>& observed, const std::vector<do
         }
     }
     return rbtest::upperGammaQ(0.5 * (bins - 1), 0.5 * x2);
-}
-
-/// Šidák's per-test level for k tests at family-wise level alpha.
-double sidak(double alpha, int k) {
-    return 1.0 - std::pow(1.0 - alpha, 1.0 / k);
 }
 
 }  // namespace

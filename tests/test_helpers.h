@@ -432,6 +432,13 @@ inline std::uint64_t ulpDistance(double a, double b) {
     return ia > ib ? static_cast<std::uint64_t>(ia - ib) : static_cast<std::uint64_t>(ib - ia);
 }
 
+/// Šidák's per-test level for k independent tests at family-wise level alpha.
+/// Source: Šidák, "Rectangular confidence regions for the means of multivariate normal
+/// distributions", JASA 62 (1967).
+inline double sidak(double alpha, int k) {
+    return 1.0 - std::pow(1.0 - alpha, 1.0 / k);
+}
+
 /// The z with P(|Z| > z) = alpha for a standard normal Z: erfc(z/√2) = alpha, by bisection.
 inline double zCritical(double alpha) {
     double lo = 0, hi = 40;
