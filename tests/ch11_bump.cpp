@@ -90,6 +90,17 @@ std::string writeRampPng(const rbtest::TempDir& dir) {
     return path;
 }
 
+/// Write a 4 × 256 grey PNG whose row y, counted from the top as the file stores it, has level
+/// 255 − y (a ramp that rises towards the image's top, +v) into `dir` and return its path.
+std::string writeUpwardRampPng(const rbtest::TempDir& dir) {
+    std::vector<unsigned char> pixels;
+    for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 4; ++x) pixels.push_back(static_cast<unsigned char>(255 - y));
+    const std::string path = (dir.path() / "upward-ramp.png").string();
+    REQUIRE(stbi_write_png(path.c_str(), 4, 256, 1, pixels.data(), 4) != 0);
+    return path;
+}
+
 }  // namespace
 
 // [ch11-bumped-normal-alone]
@@ -196,7 +207,8 @@ SCENARIO("a planar height ramp tilts the normal by atan(slope)", "[ch11][ex11.1]
                     std::make_shared<rb::Bump>(std::make_shared<rb::RampHeight>(Vec3(s, 0, 0)), a);
                 const rb::Material m = bumpedMaterial(bump);
                 const rb::Instance cube = rbtest::makeInstance(box, rb::Mat4(1.0), &m);
-                WHEN("a ray straight down meets the face at (0.3, 1, 0.6) and the bump tilts it") {
+                WHEN("a ray straight down meets the face at (0.3, 1, 0.6) and the bump of slope "
+                     << s << " at strength " << a << " tilts it") {
                     const rb::Ray ray{Vec3(0.3, 3, 0.6), Vec3(0, -2, 0)};
                     rb::Hit hit = hitOf(cube, ray);
                     bump->perturb(ray, hit);
@@ -259,7 +271,7 @@ SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11][e
                 "gr.render(root, 'out.png', 8, 8, {0, 5, 0}, {0, -1, 0}, {0, 0, 1}, 50,\n"
                 "          {0, 0, 0}, {gr.light({0.3, 1000, 0.2}, {1, 1, 1}, {1, 0, 0})})\n";
             const auto world = rbtest::worldFromLua(lua, withBump());
-            WHEN("the camera ray meets the floor under the light") {
+            WHEN("the camera ray meets the floor under the light, for the slope s = " << s) {
                 const Colour c =
                     rbtest::traceOne(*world, rb::Ray{Vec3(0, 5, 0), Vec3(0.3, -5, 0.2)});
                 THEN("the radiance is kd · cos(atan(s / 10))") {
@@ -286,15 +298,16 @@ SCENARIO("a zero bump leaves every normal unchanged",
             std::make_shared<rb::RippleHeight>(std::vector<Vec3>{Vec3(0.3, 0.9, 0)}, 0.2),
             std::make_shared<rb::NoiseHeight>(0.3, 4, 7)};
         const rb::Mat4 place = rbtest::placeAtScale(2.0, Vec3(1.0, 0.4, 2.0));
-        for (const auto& field : fields) {
-            const rb::Bump zero(field, 0.0), tiny(field, 1e-12);
+        for (size_t k = 0; k < fields.size(); ++k) {
+            const rb::Bump zero(fields[k], 0.0), tiny(fields[k], 1e-12);
             const rb::Instance ball = rbtest::makeInstance(sphere, place);
-            WHEN("strength 0 and strength 1e-12 perturb 200 random hits") {
-                for (const rbtest::SurfacePoint& sp : rbtest::sampleSurface(ball, rng, 200)) {
-                    rb::Hit a = sp.hit, b = sp.hit;
-                    zero.perturb(sp.probe, a);
-                    tiny.perturb(sp.probe, b);
-                    THEN("strength 0 keeps ns bit for bit; 1e-12 moves it by less than 1e-10") {
+            WHEN("strength 0 and strength 1e-12 of the " << (k == 0 ? "ripples" : "noise")
+                                                         << " perturb 200 random hits") {
+                THEN("strength 0 keeps ns bit for bit; 1e-12 moves it by less than 1e-10") {
+                    for (const rbtest::SurfacePoint& sp : rbtest::sampleSurface(ball, rng, 200)) {
+                        rb::Hit a = sp.hit, b = sp.hit;
+                        zero.perturb(sp.probe, a);
+                        tiny.perturb(sp.probe, b);
                         REQUIRE(a.ns == sp.hit.ns);
                         REQUIRE(angleBetween(b.ns, sp.hit.ns) < 1e-10);
                     }
@@ -529,7 +542,8 @@ SCENARIO("a strength that would flip the normal is held on the viewer's side",
             const rb::Bump bump(std::make_shared<ConstantJunk>(slope), 1e300);
             rb::Hit hit = hitOf(cube, ray);
             bump.perturb(ray, hit);
-            THEN("the normal is finite, unit length, and faces the viewer") {
+            THEN("the normal is finite, unit length, and faces the viewer, for the slope "
+                 << slope) {
                 REQUIRE(rb::isFinite(hit.ns));
                 CHECK(glm::length(hit.ns) == Approx(1.0).epsilon(1e-12));
                 CHECK(glm::dot(hit.ns, -glm::normalize(ray.d)) > 0.0);
@@ -697,7 +711,7 @@ SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11
             const rb::Ray ray{Vec3(0.37, 3, 0.6), Vec3(0, -1, 0)};
             rb::Hit hit = hitOf(cube, ray);
             bump.perturb(ray, hit);
-            THEN("the normal leans by atan(a · 256/255) away from uphill (+x)") {
+            THEN("the normal leans by atan(a · 256/255) away from uphill (+x), for a = " << a) {
                 CHECK(angleBetween(hit.ns, hit.ng) ==
                       Approx(std::atan(std::abs(a) * dh_du)).margin(1e-5));
                 CHECK(hit.ns.x * a < 0.0);
@@ -824,6 +838,60 @@ SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11
 }
 // [ch11-height-map]
 
+// [ch11-height-map-v]
+SCENARIO("a height map that rises towards the image's top tilts the normal down, away from +v",
+         "[ch11][ex11.1][ex11.3]") {
+    rbtest::TempDir dir;
+    const auto heights =
+        std::make_shared<rb::HeightImage>(*rb::loadTextureImage(writeUpwardRampPng(dir)));
+    // Source: the file's top row (y = 0) is v = 1 and holds level 255, row y holds 255 − y, so
+    // the height rises by 1/255 per texel of 1/256 in v: h = (256 v − 0.5)/255, dh/dv = 256/255.
+    const double dh_dv = 256.0 / 255.0;
+    GIVEN("the image read as heights") {
+        THEN("the bottom rows (small v) are low and the top rows high") {
+            CHECK(heights->at(rb::Vec2(0.5, (10 + 0.5) / 256)) == Approx(10 / 255.0).margin(1e-6));
+            CHECK(heights->at(rb::Vec2(0.5, (245 + 0.5) / 256)) ==
+                  Approx(245 / 255.0).margin(1e-6));
+        }
+    }
+    GIVEN("the unit cube's front face (z = 1), where u runs along +x and v up along +y") {
+        rb::Box box;
+        const rb::Instance cube = rbtest::makeInstance(box, rb::Mat4(1.0));
+        const rb::Ray ray{Vec3(0.37, 0.6, 3), Vec3(0, 0, -1)};
+        THEN("at strength a the normal leans by atan(a · 256/255 / |dp/dv|), |dp/dv| = 1, down") {
+            for (const double a : {1.0, 0.3, -2.0}) {
+                const rb::HeightMapBump bump(heights, a, 1.0);
+                rb::Hit hit = hitOf(cube, ray);
+                bump.perturb(ray, hit);
+                // Source: n' ∝ n − a·(dh/dv)·∇v with ∇v = dp/dv / |dp/dv|² = +y, so
+                // n' ∝ (0, −a·256/255, 1): the tilt is atan(|a|·256/255) and n'.y has a's
+                // opposite sign; nothing varies along u, so n'.x = 0.
+                INFO("a = " << a);
+                CHECK(angleBetween(hit.ns, hit.ng) ==
+                      Approx(std::atan(std::abs(a) * dh_dv)).margin(1e-5));
+                CHECK(hit.ns.y * a < 0.0);
+                CHECK(hit.ns.x == Approx(0.0).margin(1e-12));
+            }
+        }
+    }
+    GIVEN("the unit sphere at its equator, where dp/dv points up (+y) with length π") {
+        rb::Sphere sphere;
+        const rb::Instance ball = rbtest::makeInstance(sphere, rb::Mat4(1.0));
+        const rb::HeightMapBump bump(heights, 1.0, 1.0);
+        const rb::Ray ray{Vec3(0, 0, -3), Vec3(0, 0, 1)};  // meets (0, 0, −1): v = 1/2
+        rb::Hit hit = hitOf(ball, ray);
+        bump.perturb(ray, hit);
+        THEN("the normal leans down by atan(256/255 / π)") {
+            // Source: v = θ/π with θ from the south pole, so dp/dv = π·(+y) at the equator and
+            // the slope along the surface is (dh/dv)/|dp/dv| = (256/255)/π.
+            CHECK(angleBetween(hit.ns, hit.ng) ==
+                  Approx(std::atan(dh_dv / glm::pi<double>())).margin(1e-5));
+            CHECK(hit.ns.y < 0.0);
+        }
+    }
+}
+// [ch11-height-map-v]
+
 // [ch11-height-map-stability]
 SCENARIO("a height map steep enough to flip the normal is held on the viewer's side",
          "[ch11][stability][ex11.1][ex11.3]") {
@@ -840,7 +908,8 @@ SCENARIO("a height map steep enough to flip the normal is held on the viewer's s
             const rb::HeightMapBump bump(heights, a, 1.0);
             rb::Hit hit = hitOf(cube, ray);
             bump.perturb(ray, hit);
-            THEN("the normal is finite and held at cos = kMinCosView on the viewer's side") {
+            THEN("the normal is finite and held at cos = kMinCosView on the viewer's side, for a = "
+                 << a) {
                 REQUIRE(rb::isFinite(hit.ns));
                 CHECK(glm::dot(hit.ns, -glm::normalize(ray.d)) ==
                       Approx(rb::kMinCosView).margin(1e-9));
