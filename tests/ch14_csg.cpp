@@ -14,7 +14,9 @@
 /// intersection of two spheres focuses a paraxial ray where the thick-lens formula says, a
 /// hollow glass shell (a difference of spheres) enters and leaves the medium stack at each of
 /// its four surfaces, shadows see one solid, and each operand keeps its material. Stability:
-/// coplanar faces make no surface inside the result, and rays may start inside any operand.
+/// coplanar faces make no surface inside the result, where A's and B's faces coincide the
+/// result's surface there is A's (its material, normal and texture coordinates), and rays may
+/// start inside any operand.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
@@ -665,6 +667,114 @@ SCENARIO("coplanar faces make no surface inside the result, under any rotation",
     CHECK(spurious == 0);
 }
 // [ch14-coplanar-test]
+
+namespace {
+
+/// Check one crossing of a result: where, which way, and whose surface (material, normal, uv).
+void checkSurface(const Crossing& c, double t, bool entering, const rb::Material* material,
+                  const Vec3& n, const rb::Vec2& uv) {
+    INFO("the crossing expected at t = " << t << (entering ? ", entering" : ", leaving"));
+    CHECK(c.hit.t == Approx(t));
+    CHECK(c.entering == entering);
+    CHECK(c.hit.material == material);
+    CHECK(glm::length(c.hit.n - n) < 1e-12);
+    CHECK(glm::length(c.hit.uv - uv) < 1e-12);
+}
+
+}  // namespace
+
+// [ch14-tie-test]
+SCENARIO(
+    "where A's and B's faces coincide the result reports A's; B's only where B alone bounds it",
+    "[ch14][ex14.1][ex14.3][ex14.4]") {
+    static const rb::Box box;
+    // A is the unit cube [0,1]³. Each B is a cube stretched to 2 in y and z, so that on the
+    // faces x = 0 and x = 1 its texture coordinates (y/2, z/2) differ from A's (y, z).
+    const rb::Instance a = rbtest::makeInstance(box, Mat4(1.0), &kMatA);
+    const auto cubeB = [](double x0) {
+        return rbtest::makeInstance(
+            box, glm::scale(glm::translate(Mat4(1.0), Vec3(x0, 0, 0)), Vec3(1, 2, 2)), &kMatB);
+    };
+    const auto crossings = [](CsgOp op, const rb::Instance& first, const rb::Instance& second,
+                              const Ray& ray) {
+        CrossingList list;
+        rb::CsgShape(op, rb::CsgLeaf::from(first), rb::CsgLeaf::from(second)).crossings(ray, list);
+        return list;
+    };
+    // Lines along +x and −x through y = 0.25, z = 0.5, at x = −2 and x = 3 when t = 0.
+    const Ray forward{Vec3(-2, 0.25, 0.5), Vec3(1, 0, 0)};
+    const Ray backward{Vec3(3, 0.25, 0.5), Vec3(-1, 0, 0)};
+    // Source: the box's face x = c has uv = (y, z) in its object space; B's object y, z are
+    // half the world's.
+    const rb::Vec2 uvA(0.25, 0.5), uvB(0.125, 0.25);
+    const Vec3 minusX(-1, 0, 0), plusX(1, 0, 0);
+    GIVEN("B = [0,1] × [0,2]², sharing A's faces x = 0 and x = 1") {
+        const rb::Instance b = cubeB(0.0);
+        WHEN("they are intersected: entering needs both operands there, leaving either one") {
+            const CrossingList c = crossings(CsgOp::Intersection, a, b, forward);
+            THEN("both surfaces of A ∩ B = [0, 1] are A's: its material, normal and uv") {
+                REQUIRE(c.size() == 2);
+                checkSurface(c[0], 2, true, &kMatA, minusX, uvA);
+                checkSurface(c[1], 3, false, &kMatA, plusX, uvA);
+            }
+        }
+        WHEN("they are united: entering needs either operand there, leaving both") {
+            const CrossingList c = crossings(CsgOp::Union, a, b, forward);
+            THEN("both surfaces of A ∪ B = [0, 1] are A's") {
+                REQUIRE(c.size() == 2);
+                checkSurface(c[0], 2, true, &kMatA, minusX, uvA);
+                checkSurface(c[1], 3, false, &kMatA, plusX, uvA);
+            }
+        }
+        WHEN("the operands are swapped, B ∩ A and B ∪ A") {
+            THEN("both surfaces are B's: the first operand wins a tie, whatever it is") {
+                for (const CsgOp op : {CsgOp::Intersection, CsgOp::Union}) {
+                    const CrossingList c = crossings(op, b, a, forward);
+                    REQUIRE(c.size() == 2);
+                    checkSurface(c[0], 2, true, &kMatB, minusX, uvB);
+                    checkSurface(c[1], 3, false, &kMatB, plusX, uvB);
+                }
+            }
+        }
+    }
+    GIVEN("B = [−1,0] × [0,2]², touching A's face x = 0 from outside") {
+        const rb::Instance b = cubeB(-1.0);
+        WHEN("B is subtracted, and the line along +x leaves B where it enters A") {
+            const CrossingList c = crossings(CsgOp::Difference, a, b, forward);
+            THEN("A − B is A along it: both surfaces A's, facing out of A") {
+                // Source: B's back face turned round, −x, is A's own normal there; B removes
+                // nothing, so the result looks as A alone does.
+                REQUIRE(c.size() == 2);
+                checkSurface(c[0], 2, true, &kMatA, minusX, uvA);
+                checkSurface(c[1], 3, false, &kMatA, plusX, uvA);
+            }
+        }
+        WHEN("the line runs along −x, leaving A where it enters B") {
+            const CrossingList c = crossings(CsgOp::Difference, a, b, backward);
+            THEN("again both surfaces are A's") {
+                REQUIRE(c.size() == 2);
+                checkSurface(c[0], 2, true, &kMatA, plusX, uvA);
+                checkSurface(c[1], 3, false, &kMatA, minusX, uvA);
+            }
+        }
+    }
+    GIVEN("B = [0.5,1.5] × [0,2]², biting off A's far half") {
+        const rb::Instance b = cubeB(0.5);
+        WHEN("B is subtracted, along +x") {
+            const CrossingList c = crossings(CsgOp::Difference, a, b, forward);
+            THEN(
+                "A − B = [0, 0.5] leaves through B's face, B's material, uv and normal turned "
+                "round") {
+                // Source: at x = 0.5 only B's change (entering it) ends the result; at x = 1,
+                // inside B, A's face bounds nothing. B's face x = 0.5 has the outward normal −x.
+                REQUIRE(c.size() == 2);
+                checkSurface(c[0], 2, true, &kMatA, minusX, uvA);
+                checkSurface(c[1], 2.5, false, &kMatB, plusX, uvB);
+            }
+        }
+    }
+}
+// [ch14-tie-test]
 
 SCENARIO("CSG renders without NaN, negative or infinite pixels, even through glass",
          "[ch14][stability]") {

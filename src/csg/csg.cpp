@@ -55,7 +55,7 @@ void combineCrossings(CsgOp op, const CrossingList& a, const CrossingList& b, Cr
         const double t = std::min(i < a.size() ? a[i].hit.t : b[j].hit.t,
                                   j < b.size() ? b[j].hit.t : a[i].hit.t);
         const double tolerance = kCoincident * std::abs(t);
-        const bool wasInside = inside, wasInsideB = insideB;
+        const bool wasInside = inside, wasInsideA = insideA;
         const Crossing* candidates[2] = {nullptr, nullptr};  // the first of A and of B here
         for (; i < a.size() && a[i].hit.t <= t + tolerance; ++i) {
             insideA = a[i].entering;
@@ -67,9 +67,9 @@ void combineCrossings(CsgOp op, const CrossingList& a, const CrossingList& b, Cr
         }
         inside = csgInside(op, insideA, insideB);
         if (inside == wasInside) continue;  // an inner surface: not on the result's boundary
-        // The surface here is A's when A's change alone changes the result, else B's.
-        const bool byA = candidates[0] && csgInside(op, insideA, wasInsideB) != wasInside;
-        const Crossing* surface = byA || !candidates[1] ? candidates[0] : candidates[1];
+        // The surface here is A's wherever A's state changes: on a tie A's wins, and B's is
+        // kept only where B alone changes the result (ch14-ties).
+        const Crossing* surface = insideA != wasInsideA ? candidates[0] : candidates[1];
         Crossing c = *surface;
         orientToResult(c, inside);
         out.push(c);
