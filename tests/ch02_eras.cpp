@@ -271,6 +271,203 @@ SCENARIO("--lenient renders what raybook understands and lists what it ignored",
     }
 }
 
+SCENARIO("--lenient reads a known call without the arguments it cannot read",
+         "[ch02][lenient][ex2.2]") {
+    rb::SceneLoadOptions lenient;
+    lenient.lenient = true;
+    GIVEN("gr.render with another course's trailing arguments: a quality name and a table") {
+        const std::string lua =
+            "root = gr.node('root')\nroot:add_child(gr.sphere('s'))\n"
+            "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50,"
+            " {0.1, 0.1, 0.1}, {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0})}, 'high', {4})\n";
+        WHEN("it is loaded without --lenient") {
+            THEN("argument 11 is an error, as before") {
+                CHECK_THAT(rbtest::loadError(lua, rbtest::chapters(7)),
+                           Contains("scene.lua:3: gr.render: argument 11 (aa) must be a number, "
+                                    "got string"));
+            }
+        }
+        WHEN("it is loaded with --lenient") {
+            const Loaded l = load(lua, lenient);
+            THEN(
+                "it renders from its first ten arguments, and its extras are no sign of seed 001") {
+                REQUIRE(l.renders.size() == 1);
+                CHECK(l.renders[0].instances.size() == 1);
+                CHECK(l.renders[0].job.options.count("aa") == 0);
+                CHECK(l.report.era.era == rb::Era::Modern);
+                CHECK_THAT(l.report.era.line, !Contains("seed 001"));
+            }
+            THEN("one line lists the call: what it could not read, what it did, and where") {
+                CHECK(l.report.ignored.empty());
+                REQUIRE(l.report.unreadable.size() == 1);
+                CHECK_THAT(l.report.unreadable[0],
+                           Contains("gr.render (arguments raybook cannot read: argument 11 (aa) "
+                                    "must be a number, got string; read with its first 10 "
+                                    "arguments), first at ") &&
+                               Contains("scene.lua:3"));
+            }
+        }
+    }
+    GIVEN("a material with a reflectivity of 1.5, outside raybook's range, in a chapter-4 build") {
+        const std::string lua =
+            rbtest::oneMaterialScene("gr.material({0.1, 0.8, 0.1}, {0.2, 0.2, 0.2}, 25, 1.5)");
+        THEN("without --lenient it is an error, as before") {
+            CHECK_THAT(rbtest::loadError(lua, rbtest::chapters(4)),
+                       Contains("scene.lua:1: gr.material: argument 4 (reflectivity) must be "
+                                "from 0 to 1"));
+        }
+        THEN("with --lenient the material is read without it: the student's colours, no mirror") {
+            const Loaded l = load(lua, lenient, 4);
+            const rb::Material* m = l.renders.at(0).instances.at(0).material;
+            REQUIRE(m != nullptr);
+            CHECK(rbtest::near(m->kd, Vec3(0.1, 0.8, 0.1)));
+            CHECK(m->shininess == 25);
+            CHECK(m->params.count("reflect") == 0);
+            REQUIRE(l.report.unreadable.size() == 1);
+            CHECK_THAT(l.report.unreadable[0], Contains("read with its first 3 arguments)"));
+        }
+    }
+}
+
+SCENARIO("--lenient puts a stand-in where a known call cannot be read at all",
+         "[ch02][lenient][ex2.2]") {
+    rb::SceneLoadOptions lenient;
+    lenient.lenient = true;
+    GIVEN("two material calls with a table for the shininess, on lines 1 and 2") {
+        const std::string lua =
+            "local a = gr.material({0.1, 0.8, 0.1}, {0.2, 0.2, 0.2}, {25})\n"
+            "local b = gr.material({0.1, 0.1, 0.8}, {0.2, 0.2, 0.2}, {40})\n"
+            "root = gr.node('root')\n"
+            "local s = gr.sphere('s')\ns:set_material(a)\nroot:add_child(s)\n"
+            "local t = gr.sphere('t')\nt:set_material(b)\nroot:add_child(t)\n" +
+            rbtest::renderLine();
+        const Loaded l = load(lua, lenient);
+        THEN("both spheres wear the magenta stand-in") {
+            REQUIRE(l.renders.at(0).instances.size() == 2);
+            for (const rb::Instance& i : l.renders[0].instances) {
+                REQUIRE(i.material != nullptr);
+                CHECK(rbtest::near(i.material->kd, Vec3(0.8, 0.2, 0.8)));
+            }
+        }
+        THEN("one line lists the call, with the first line and the count") {
+            REQUIRE(l.report.unreadable.size() == 1);
+            CHECK_THAT(l.report.unreadable[0],
+                       Contains("gr.material (arguments raybook cannot read: argument 3 "
+                                "(shininess) must be a number, got table; a stand-in took its "
+                                "place), first at ") &&
+                           Contains("scene.lua:1 (2 times)"));
+        }
+    }
+    GIVEN("a material whose second argument cannot be read, followed by a fourth") {
+        // Read again without arguments 2 to 4, the call is one argument short: a stand-in.
+        const Loaded l =
+            load(rbtest::oneMaterialScene("gr.material({1, 0, 0}, {1, 1}, 25, 0.5)"), lenient, 4);
+        THEN("the call is listed once, by what its first reading found") {
+            CHECK(rbtest::near(l.renders.at(0).instances.at(0).material->kd, Vec3(0.8, 0.2, 0.8)));
+            REQUIRE(l.report.unreadable.size() == 1);
+            CHECK_THAT(l.report.unreadable[0],
+                       Contains("argument 2 (ks) must be a table of 3 numbers, got a table of 2; "
+                                "a stand-in took its place)") &&
+                           !Contains("times"));
+        }
+    }
+    GIVEN("node:rotate(30), a one-argument form of node:rotate(axis, degrees)") {
+        const std::string lua =
+            "root = gr.node('root')\nlocal s = gr.sphere('s')\ns:translate(3, 0, 0)\n"
+            "s:rotate(30)\nroot:add_child(s)\n" +
+            rbtest::renderLine();
+        THEN("without --lenient it is an error, as before") {
+            CHECK_THAT(rbtest::loadError(lua, rbtest::chapters(7)),
+                       Contains("scene.lua:4: node:rotate expects 2 arguments (axis, degrees), "
+                                "got 1"));
+        }
+        THEN("with --lenient the call is ignored: the sphere stays where it was put") {
+            const Loaded l = load(lua, lenient);
+            CHECK(rbtest::near(rbtest::boundsOf(l.renders.at(0), "s").lo, Vec3(2, -1, -1)));
+            REQUIRE(l.report.unreadable.size() == 1);
+            CHECK_THAT(l.report.unreadable[0],
+                       Contains("node:rotate (arguments raybook cannot read: expects 2 arguments "
+                                "(axis, degrees), got 1; the call was ignored), first at ") &&
+                           Contains("scene.lua:4"));
+        }
+    }
+    GIVEN("gr.light with a position alone") {
+        const Loaded l = load(
+            "root = gr.node('root')\nroot:add_child(gr.sphere('s'))\n"
+            "local spot = gr.light({0, 5, 5})\n"
+            "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50,"
+            " {0.1, 0.1, 0.1}, {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0}), spot})\n",
+            lenient);
+        THEN("the light is the dark stand-in, beside the scene's own") {
+            const auto& lights = l.renders.at(0).job.lights;
+            REQUIRE(lights.size() == 2);
+            CHECK(rbtest::near(lights[0].colour, Vec3(1.0)));
+            CHECK(rbtest::near(lights[1].colour, Vec3(0.0)));
+            REQUIRE(l.report.unreadable.size() == 1);
+            CHECK_THAT(l.report.unreadable[0], Contains("gr.light (") && Contains("scene.lua:3"));
+        }
+    }
+}
+
+SCENARIO("--lenient reads a light whose extra arguments mean something else as a point light",
+         "[ch02][lenient][ex2.2][needs-ch06]") {
+    rb::SceneLoadOptions lenient;
+    lenient.lenient = true;
+    // Another course's spot light: position, colour, falloff, 'spot', direction, angle.
+    const std::string lua =
+        "root = gr.node('root')\nroot:add_child(gr.sphere('s'))\n"
+        "local spot = gr.light({0, 5, 5}, {0.9, 0.8, 0.7}, {1, 0, 0}, 'spot', {0, -1, 0}, 30)\n"
+        "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50,"
+        " {0.1, 0.1, 0.1}, {spot})\n";
+    for (const int chapter : {1, 6}) {
+        GIVEN("a chapter-" + std::to_string(chapter) + " build (six arguments are seed 001's " +
+              (chapter < 6 ? "area light, which it lacks)" : "rectangular light)")) {
+            THEN("without --lenient it is an error, as before") {
+                CHECK_THAT(rbtest::loadError(lua, rbtest::chapters(chapter)),
+                           Contains("scene.lua:3: gr.light: "));
+            }
+            const Loaded l = load(lua, lenient, chapter);
+            THEN("with --lenient it is the point light of its first three arguments") {
+                const auto& lights = l.renders.at(0).job.lights;
+                REQUIRE(lights.size() == 1);
+                CHECK(rbtest::near(lights[0].position, Vec3(0, 5, 5)));
+                CHECK(rbtest::near(lights[0].colour, Vec3(0.9, 0.8, 0.7)));
+                CHECK(lights[0].shape == nullptr);
+                CHECK(l.report.era.era == rb::Era::Modern);
+                REQUIRE(l.report.unreadable.size() == 1);
+                CHECK_THAT(l.report.unreadable[0],
+                           Contains("gr.light (arguments raybook cannot read: ") &&
+                               Contains("read with its first 3 arguments), first at ") &&
+                               Contains("scene.lua:3"));
+            }
+        }
+    }
+}
+
+SCENARIO("--lenient ignores a texture call it cannot read", "[ch02][lenient][needs-ch10]") {
+    rb::SceneLoadOptions lenient;
+    lenient.lenient = true;
+    GIVEN("mat:set_texture('diffuse', 'wood.png'), a slot raybook does not have") {
+        const std::string lua = rbtest::oneMaterialScene("gr.material({1, 0, 0}, {0, 0, 0}, 1)",
+                                                         "m:set_texture('diffuse', 'wood.png')\n");
+        THEN("without --lenient it is an error, as before") {
+            CHECK_THAT(rbtest::loadError(lua, rbtest::chapters(10)),
+                       Contains("scene.lua:6: material:set_texture: slot 'diffuse' must be 'kd' "
+                                "or 'ks'"));
+        }
+        THEN("with --lenient the material keeps its colour and has no texture") {
+            const Loaded l = load(lua, lenient, 10);
+            const rb::Material* m = l.renders.at(0).instances.at(0).material;
+            CHECK(rbtest::near(m->kd, Vec3(1, 0, 0)));
+            CHECK(m->textures.empty());
+            REQUIRE(l.report.unreadable.size() == 1);
+            CHECK_THAT(l.report.unreadable[0],
+                       Contains("material:set_texture (arguments raybook cannot read: slot "
+                                "'diffuse' must be 'kd' or 'ks'; the call was ignored)"));
+        }
+    }
+}
+
 SCENARIO("a dialect file maps a student's own calls onto raybook's before the scene runs",
          "[ch02][dialect][ex2.2][needs-ch04]") {
     GIVEN(

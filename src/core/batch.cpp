@@ -101,6 +101,9 @@ struct SceneResult {
     std::string era;                    ///< The era --stats names ("  era  current ...").
     std::vector<std::string> errors;    ///< "rt: error:" lines, without the prefix.
     std::vector<std::string> warnings;  ///< "rt: warning:" lines, without the prefix.
+    /// --lenient: what the scene needed stand-ins for, one line per name or call (the list at
+    /// the end of its stderr, without the "rt:   " prefix).
+    std::vector<std::string> standIns;
     std::vector<std::string> other;     ///< Every other stderr line outside the stats.
     std::vector<ImageInfo> images;      ///< In the order the scene wrote them.
     std::string stdoutLog, stderrLog;   ///< The child's logs, relative to DIR.
@@ -313,7 +316,8 @@ std::vector<std::string> readStderr(const std::string& text, SceneResult* result
     std::vector<std::string> images;
     std::istringstream in(text);
     std::string line, rest;
-    bool inStats = false;  // the indented lines after "stats for FILE"
+    bool inStats = false;    // the indented lines after "stats for FILE"
+    bool inLenient = false;  // the list after "rt: --lenient ignored ..."
     while (std::getline(in, line)) {
         if (afterPrefix(line, "stats for ", &rest)) {
             images.push_back(rest);
@@ -325,9 +329,13 @@ std::vector<std::string> readStderr(const std::string& text, SceneResult* result
                 result->era = rest.substr(std::min(rest.size(), rest.find_first_not_of(' ')));
             if (line.starts_with("  time") && numberAfter(line, "render ") >= 0)
                 result->renderSeconds += numberAfter(line, "render ");
+        } else if (inLenient && afterPrefix(line, "rt:   ", &rest)) {
+            result->standIns.push_back(rest);
         } else {
-            inStats = false;
-            if (afterPrefix(line, "rt: error: ", &rest))
+            inStats = inLenient = false;
+            if (line.starts_with("rt: --lenient ignored "))
+                inLenient = true;  // its list follows
+            else if (afterPrefix(line, "rt: error: ", &rest))
                 result->errors.push_back(rest);
             else if (afterPrefix(line, "rt: warning: ", &rest))
                 result->warnings.push_back(rest);
@@ -438,10 +446,18 @@ int jobCount(const CommandLine& cl, size_t scenes) {
     return std::max(1, std::min(jobs, static_cast<int>(scenes)));
 }
 
-/// One stdout line for a finished scene: status, wall time, path, and its first error.
+/// "with 3 stand-ins (--lenient)" for a scene that needed them, else "".
+std::string standInNote(const SceneResult& r) {
+    const size_t n = r.standIns.size();
+    if (n == 0) return "";
+    return "with " + std::to_string(n) + " stand-in" + (n == 1 ? "" : "s") + " (--lenient)";
+}
+
+/// One stdout line for a finished scene: status, wall time, path, and its first error (for a
+/// scene rendered with stand-ins, how many).
 void printSceneLine(const SceneResult& r) {
     std::string why = !r.errors.empty() ? r.errors.front() : r.note;
-    if (r.status == Status::Ok) why.clear();
+    if (r.status == Status::Ok) why = standInNote(r);
     if (r.status == Status::Helper) why = "never calls gr.render";
     if (why.size() > 110) why = why.substr(0, 107) + "...";
     char time[32] = "      -  ";
@@ -666,6 +682,8 @@ ul.msgs li { padding: 3px 8px; margin: 2px 0; border-radius: 4px; overflow-wrap:
 ul.errors li { background: #ffebe9; color: #82071e; }
 ul.warnings li { background: #fff8c5; color: #4d2d00; }
 ul.compare li { background: #ddf4ff; color: #0a3069; }
+ul.standins li { background: #fbefff; color: #6e1a74; }
+.badge.standin { background: #bf3989; }
 .thumbs figure.own img { border: 2px solid #0969da; }
 .note { font-style: italic; color: #57606a; }
 details { margin-top: 4px; color: #57606a; }
@@ -703,7 +721,7 @@ std::string thumbnails(const SceneResult& r) {
     return "<div class=\"thumbs\">" + html + "</div>";
 }
 
-/// A list of messages of one kind (errors or warnings), escaped; empty if there are none.
+/// A list of messages of one kind (errors, warnings or stand-ins), escaped; empty if none.
 std::string messageList(const std::vector<std::string>& messages, const char* kind) {
     if (messages.empty()) return "";
     std::string html = std::string("<ul class=\"msgs ") + kind + "\">";
@@ -753,7 +771,8 @@ std::string eraLine(const std::string& era) {
 std::string sceneCard(const SceneResult& r) {
     std::string html = std::string("<section class=\"scene ") + statusClass(r.status) + "\" id=\"" +
                        escapeHtml(urlPath(r.path)) + "\" data-path=\"" + escapeHtml(r.path) +
-                       "\" data-status=\"" + statusWord(r.status) + "\">";
+                       "\" data-status=\"" + statusWord(r.status) + "\" data-stand-ins=\"" +
+                       std::to_string(r.standIns.size()) + "\">";
     html += thumbnails(r) + "<div>";
     html += "<div class=\"head\"><span class=\"path mono\">" + escapeHtml(r.path) +
             "</span><span class=\"badge\">" + statusWord(r.status) + "</span>";
@@ -762,12 +781,16 @@ std::string sceneCard(const SceneResult& r) {
     if (!warnings.empty())
         html += "<span class=\"badge warn\">" + std::to_string(warnings.size()) +
                 (warnings.size() == 1 ? " warning" : " warnings") + "</span>";
+    if (!r.standIns.empty())
+        html += "<span class=\"badge standin\">" + std::to_string(r.standIns.size()) +
+                (r.standIns.size() == 1 ? " stand-in" : " stand-ins") + "</span>";
     html += "</div>";
     if (!r.era.empty()) html += eraLine(r.era);
     html += "<div class=\"meta\">" + metaLine(r) + "</div>";
     if (!r.note.empty()) html += "<div class=\"note\">" + escapeHtml(r.note) + "</div>";
     html += messageList(r.errors, "errors");
     html += messageList(warnings, "warnings");
+    html += messageList(r.standIns, "standins");
     html += comparisonList(r);
     if (!r.other.empty()) {
         std::string text;
@@ -788,8 +811,9 @@ size_t countOf(const std::vector<SceneResult>& results, Status s) {
                                              [&](const SceneResult& r) { return r.status == s; }));
 }
 
-/// The summary at the top: one coloured count per status and links to the scenes that need a
-/// look (every status but ok and helper).
+/// The summary at the top: one coloured count per status, links to the scenes that need a
+/// look (every status but ok and helper), and links to those that rendered with stand-ins
+/// (--lenient), whose images are not wholly the student's.
 std::string summary(const std::vector<SceneResult>& results) {
     std::string html = "<div class=\"counts\">";
     for (const Status s :
@@ -806,6 +830,15 @@ std::string summary(const std::vector<SceneResult>& results) {
                          escapeHtml(r.path) + "</a>";
     if (!attention.empty())
         html += "<div class=\"attention\"><strong>Needs a look:</strong> " + attention + "</div>";
+    std::string standIns;
+    for (const SceneResult& r : results)
+        if (!r.standIns.empty())
+            standIns += "<a class=\"mono\" href=\"#" + escapeHtml(urlPath(r.path)) + "\">" +
+                        escapeHtml(r.path) + "</a>";
+    if (!standIns.empty())
+        html +=
+            "<div class=\"attention standins\"><strong>Needed stand-ins (--lenient):</strong> " +
+            standIns + "</div>";
     return html;
 }
 

@@ -59,7 +59,8 @@ int grNhSphere(lua_State* L) {
     auto node = newNode(L, "gr.nh_sphere");
     const Vec3 centre = checkVec3(L, 2, "gr.nh_sphere", "centre");
     const double radius = checkNumber(L, 3, "gr.nh_sphere", "radius");
-    if (!(radius > 0.0)) throw InputError("gr.nh_sphere: argument 3 (radius) must be positive");
+    if (!(radius > 0.0))
+        throw ArgumentError("gr.nh_sphere: argument 3 (radius) must be positive", 3);
     node->shape = sceneBuilder(L).unitSphere;
     node->shapeTransform = glm::scale(glm::translate(Mat4(1.0), centre), Vec3(radius));
     pushNode(L, node);
@@ -72,7 +73,7 @@ int grNhBox(lua_State* L) {
     auto node = newNode(L, "gr.nh_box");
     const Vec3 corner = checkVec3(L, 2, "gr.nh_box", "minimum corner");
     const double size = checkNumber(L, 3, "gr.nh_box", "size");
-    if (!(size > 0.0)) throw InputError("gr.nh_box: argument 3 (size) must be positive");
+    if (!(size > 0.0)) throw ArgumentError("gr.nh_box: argument 3 (size) must be positive", 3);
     node->shape = sceneBuilder(L).unitCube;
     node->shapeTransform = glm::scale(glm::translate(Mat4(1.0), corner), Vec3(size));
     pushNode(L, node);
@@ -95,7 +96,7 @@ int materialTable(lua_State* L) {
         // The key is at -2, the value at -1.
         if (lua_type(L, -2) != LUA_TSTRING) {
             lua_pop(L, 2);
-            throw InputError("gr.material: the table's keys must be field names");
+            throw ArgumentError("gr.material: the table's keys must be field names");
         }
         const std::string key = lua_tostring(L, -2);
         const int top = lua_gettop(L);
@@ -121,9 +122,10 @@ int materialTable(lua_State* L) {
 
 int a4Material(lua_State* L) {
     if (lua_gettop(L) > 3 && lua_type(L, 4) == LUA_TSTRING)
-        throw InputError(
+        throw ArgumentError(
             "gr.material: more than 3 arguments is seed 000's dialect (\"reflect\", "
-            "\"refract\", \"glossy\"), which needs chapter 4 (reflection) or later");
+            "\"refract\", \"glossy\"), which needs chapter 4 (reflection) or later",
+            4);
     checkArgCount(L, "gr.material", 3, 3, "(kd, ks, shininess)");
     auto m = std::make_shared<Material>();
     m->kd = checkVec3(L, 1, "gr.material", "kd");
@@ -150,9 +152,10 @@ int grOption(lua_State* L) {
         std::string title;
         const int chapter = missingChapter(L, name, title);
         if (chapter)
-            throw InputError("gr.option: '" + name + "' needs chapter " + std::to_string(chapter) +
-                             " (" + title + "), which this build does not have");
-        throw InputError("gr.option: unknown option '" + name + "'");
+            throw ArgumentError("gr.option: '" + name + "' needs chapter " +
+                                std::to_string(chapter) + " (" + title +
+                                "), which this build does not have");
+        throw ArgumentError("gr.option: unknown option '" + name + "'");
     }
     setSceneOption(L, name, checkNumber(L, 2, "gr.option", "value"), "gr.option: '" + name + "'");
     return 0;
@@ -169,9 +172,10 @@ int collectLight(lua_State* L) {
 
 int grLight(lua_State* L) {
     if (lua_gettop(L) == 6)
-        throw InputError(
+        throw ArgumentError(
             "gr.light: 6 arguments is seed 001's rectangular area light, which needs chapter 6 "
-            "(soft_shadows)");
+            "(soft_shadows)",
+            4);
     checkArgCount(L, "gr.light", 3, 3, "(position, colour, {c0,c1,c2})");
     PointLight light;
     light.position = checkVec3(L, 1, "gr.light", "position");
@@ -179,7 +183,8 @@ int grLight(lua_State* L) {
     light.falloff = checkVec3(L, 3, "gr.light", "falloff");
     if (light.falloff.x < 0 || light.falloff.y < 0 || light.falloff.z < 0 ||
         !(light.falloff.x + light.falloff.y + light.falloff.z > 0))
-        throw InputError("gr.light: argument 3 (falloff) must be non-negative and not all zero");
+        throw ArgumentError("gr.light: argument 3 (falloff) must be non-negative and not all zero",
+                            3);
     pushLight(L, light);
     return 1;
 }
@@ -201,9 +206,9 @@ std::shared_ptr<SceneNode> checkSelf(lua_State* L, const char* call, int count,
         lua_settop(L, count + 1);
     }
     if (lua_gettop(L) - 1 != count)
-        throw InputError(std::string(call) + " expects " + std::to_string(count) + " argument" +
-                         (count == 1 ? "" : "s") + " " + signature + ", got " +
-                         std::to_string(lua_gettop(L) - 1));
+        throw ArgumentError(std::string(call) + " expects " + std::to_string(count) + " argument" +
+                            (count == 1 ? "" : "s") + " " + signature + ", got " +
+                            std::to_string(lua_gettop(L) - 1));
     return node;
 }
 
@@ -236,7 +241,7 @@ int nodeScale(lua_State* L) {
     const Vec3 s(checkNumber(L, 2, "node:scale", "x"), checkNumber(L, 3, "node:scale", "y"),
                  checkNumber(L, 4, "node:scale", "z"));
     if (s.x == 0.0 || s.y == 0.0 || s.z == 0.0)
-        throw InputError("node:scale: scale factors must be non-zero");
+        throw ArgumentError("node:scale: scale factors must be non-zero");
     notePlacement(L, node, 'S', glm::scale(Mat4(1.0), s));
     applyTransform(L, *node, glm::scale(Mat4(1.0), s));
     return 0;
@@ -263,7 +268,8 @@ int nodeRotate(lua_State* L) {
     else if (axisName == "z" || axisName == "Z")
         axis.z = 1.0;
     else
-        throw InputError("node:rotate: the axis must be 'x', 'y' or 'z', got '" + axisName + "'");
+        throw ArgumentError("node:rotate: the axis must be 'x', 'y' or 'z', got '" + axisName + "'",
+                            2);
     notePlacement(L, node, 'R', glm::rotate(Mat4(1.0), glm::radians(degrees), axis));
     applyTransform(L, *node, glm::rotate(Mat4(1.0), glm::radians(degrees), axis));
     return 0;
@@ -311,8 +317,9 @@ std::shared_ptr<SceneNode> snapshot(const std::shared_ptr<SceneNode>& node,
 int integerArg(lua_State* L, int arg, const char* name) {
     const double v = checkNumber(L, arg, "gr.render", name);
     if (v != std::floor(v) || std::abs(v) > 1e9)
-        throw InputError(std::string("gr.render: argument ") + std::to_string(arg) + " (" + name +
-                         ") must be a whole number");
+        throw ArgumentError(std::string("gr.render: argument ") + std::to_string(arg) + " (" +
+                                name + ") must be a whole number",
+                            arg);
     return static_cast<int>(v);
 }
 
@@ -382,18 +389,21 @@ void pushLight(lua_State* L, const PointLight& light) {
 PointLight checkLight(lua_State* L, int arg, const char* call, const char* argName) {
     void* p = luaL_testudata(L, arg, kLightType);
     if (!p)
-        throw InputError(std::string(call) + ": " + argName + " is not a light made by gr.light");
+        throw ArgumentError(std::string(call) + ": " + argName + " is not a light made by gr.light",
+                            arg);
     return *static_cast<PointLight*>(p);
 }
 
 std::vector<PointLight> checkLights(lua_State* L, int arg) {
     if (lua_type(L, arg) != LUA_TTABLE)
-        throw InputError("gr.render: argument " + std::to_string(arg) +
-                         " (lights) must be a table of lights");
+        throw ArgumentError(
+            "gr.render: argument " + std::to_string(arg) + " (lights) must be a table of lights",
+            arg);
     const lua_Unsigned n = lua_rawlen(L, arg);
     if (n == 0)
-        throw InputError("gr.render: argument " + std::to_string(arg) +
-                         " (lights) is empty; a scene needs at least one light");
+        throw ArgumentError("gr.render: argument " + std::to_string(arg) +
+                                " (lights) is empty; a scene needs at least one light",
+                            arg);
     std::vector<PointLight> lights;
     for (lua_Unsigned i = 1; i <= n; ++i) {
         lua_rawgeti(L, arg, static_cast<lua_Integer>(i));
@@ -403,6 +413,10 @@ std::vector<PointLight> checkLights(lua_State* L, int arg) {
                 L, top, "gr.render",
                 ("argument " + std::to_string(arg) + " (lights): element " + std::to_string(i))
                     .c_str()));
+        } catch (const ArgumentError& e) {
+            // The element is read from a slot above the arguments: the lights are at fault.
+            lua_pop(L, 1);
+            throw ArgumentError(e.what(), arg);
         } catch (...) {
             lua_pop(L, 1);
             throw;

@@ -85,9 +85,12 @@ SceneBuilder& sceneBuilder(lua_State* L) {
 }
 
 std::string luaCaller(lua_State* L) {
+    // The nearest Lua code: a call made by another C function (chapter 6's gr.light calls the
+    // core's) is the script's line too.
     lua_Debug ar;
-    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar) && ar.currentline > 0)
-        return std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
+    for (int level = 1; lua_getstack(L, level, &ar); ++level)
+        if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0)
+            return std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
     return sceneBuilder(L).scenePath;
 }
 
@@ -134,11 +137,11 @@ void checkArgCount(lua_State* L, const char* call, int min, int max, const char*
         return;
     }
     if (n < min || n > max)
-        throw InputError(std::string(call) + " expects " +
-                         (min == max ? std::to_string(min)
-                                     : std::to_string(min) + " to " + std::to_string(max)) +
-                         " argument" + (max == 1 ? "" : "s") + " " + signature + ", got " +
-                         std::to_string(n));
+        throw ArgumentError(std::string(call) + " expects " +
+                            (min == max ? std::to_string(min)
+                                        : std::to_string(min) + " to " + std::to_string(max)) +
+                            " argument" + (max == 1 ? "" : "s") + " " + signature + ", got " +
+                            std::to_string(n));
 }
 
 namespace {
@@ -150,10 +153,11 @@ std::string argumentLabel(const char* call, int arg, const char* argName) {
 
 double checkNumberAt(lua_State* L, int index, const std::string& label) {
     if (lua_type(L, index) != LUA_TNUMBER)
-        throw InputError(label + " must be a number, got " + typeName(L, index));
+        throw ArgumentError(label + " must be a number, got " + typeName(L, index), index);
     const double v = lua_tonumber(L, index);
     if (!std::isfinite(v))
-        throw InputError(label + " must be finite, got " + (std::isnan(v) ? "nan" : "inf"));
+        throw ArgumentError(label + " must be finite, got " + (std::isnan(v) ? "nan" : "inf"),
+                            index);
     return v;
 }
 
@@ -163,8 +167,8 @@ double checkNumber(lua_State* L, int arg, const char* call, const char* argName)
 
 std::string checkString(lua_State* L, int arg, const char* call, const char* argName) {
     if (lua_type(L, arg) != LUA_TSTRING)
-        throw InputError(argumentLabel(call, arg, argName) + " must be a string, got " +
-                         typeName(L, arg));
+        throw ArgumentError(
+            argumentLabel(call, arg, argName) + " must be a string, got " + typeName(L, arg), arg);
     size_t len = 0;
     const char* s = lua_tolstring(L, arg, &len);
     return std::string(s, len);
@@ -172,21 +176,24 @@ std::string checkString(lua_State* L, int arg, const char* call, const char* arg
 
 std::vector<double> checkTupleAt(lua_State* L, int index, int n, const std::string& label) {
     const std::string what = label + " must be a table of " + std::to_string(n) + " numbers";
-    if (lua_type(L, index) != LUA_TTABLE) throw InputError(what + ", got " + typeName(L, index));
+    if (lua_type(L, index) != LUA_TTABLE)
+        throw ArgumentError(what + ", got " + typeName(L, index), index);
     const lua_Unsigned len = lua_rawlen(L, index);
     if (len != static_cast<lua_Unsigned>(n))
-        throw InputError(what + ", got a table of " + std::to_string(len));
+        throw ArgumentError(what + ", got a table of " + std::to_string(len), index);
     std::vector<double> values(n);
     for (int i = 1; i <= n; ++i) {
         const int type = lua_rawgeti(L, index, i);
         const double v = lua_tonumber(L, -1);
         lua_pop(L, 1);
         if (type != LUA_TNUMBER)
-            throw InputError(what + ", but element " + std::to_string(i) + " is a " +
-                             lua_typename(L, type));
+            throw ArgumentError(
+                what + ", but element " + std::to_string(i) + " is a " + lua_typename(L, type),
+                index);
         if (!std::isfinite(v))
-            throw InputError(what + ", but element " + std::to_string(i) + " is " +
-                             (std::isnan(v) ? "nan" : "inf"));
+            throw ArgumentError(what + ", but element " + std::to_string(i) + " is " +
+                                    (std::isnan(v) ? "nan" : "inf"),
+                                index);
         values[i - 1] = v;
     }
     return values;
@@ -205,11 +212,12 @@ Vec3 checkVec3(lua_State* L, int arg, const char* call, const char* argName) {
 std::shared_ptr<SceneNode> checkNode(lua_State* L, int arg, const char* call, const char* argName) {
     void* p = luaL_testudata(L, arg, kNodeType);
     if (!p)
-        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
-                         ") must be a scene node, got " + typeName(L, arg) +
-                         (arg == 1 && std::strchr(call, ':')
-                              ? " (call methods with a colon: node:method(...))"
-                              : ""));
+        throw ArgumentError(std::string(call) + ": argument " + std::to_string(arg) + " (" +
+                                argName + ") must be a scene node, got " + typeName(L, arg) +
+                                (arg == 1 && std::strchr(call, ':')
+                                     ? " (call methods with a colon: node:method(...))"
+                                     : ""),
+                            arg);
     return *static_cast<std::shared_ptr<SceneNode>*>(p);
 }
 
@@ -217,8 +225,9 @@ std::shared_ptr<Material> checkMaterial(lua_State* L, int arg, const char* call,
                                         const char* argName) {
     void* p = luaL_testudata(L, arg, kMaterialType);
     if (!p)
-        throw InputError(std::string(call) + ": argument " + std::to_string(arg) + " (" + argName +
-                         ") must be a material, got " + typeName(L, arg));
+        throw ArgumentError(std::string(call) + ": argument " + std::to_string(arg) + " (" +
+                                argName + ") must be a material, got " + typeName(L, arg),
+                            arg);
     return *static_cast<std::shared_ptr<Material>*>(p);
 }
 
@@ -299,7 +308,7 @@ void setSceneOption(lua_State* L, const std::string& name, double value, const s
         char range[96];
         std::snprintf(range, sizeof range, "%s from %g to %g",
                       spec.integer ? "a whole number" : "a number", spec.min, spec.max);
-        throw InputError(what + " must be " + range);
+        throw ArgumentError(what + " must be " + range);
     }
     builder.sceneOptions[name] = value;
 }
@@ -319,16 +328,16 @@ void setMaterialParam(lua_State* L, Material& m, const std::string& name, double
         std::string title;
         const int chapter = missingChapter(L, name, title);
         if (chapter)
-            throw InputError(std::string(call) + ": material field '" + name + "' needs chapter " +
-                             std::to_string(chapter) + " (" + title +
-                             "), which this build does not have; " + chapterAdvice(chapter));
+            throw ArgumentError(std::string(call) + ": material field '" + name +
+                                "' needs chapter " + std::to_string(chapter) + " (" + title +
+                                "), which this build does not have; " + chapterAdvice(chapter));
         std::string known = "kd, ks, shininess";
         for (const auto& [field, ch] : builder.materialFields) known += ", " + field;
-        throw InputError(std::string(call) + ": unknown material field '" + name +
-                         "' (known: " + known + ")");
+        throw ArgumentError(std::string(call) + ": unknown material field '" + name +
+                            "' (known: " + known + ")");
     }
     if (!std::isfinite(value))
-        throw InputError(std::string(call) + ": material field '" + name + "' must be finite");
+        throw ArgumentError(std::string(call) + ": material field '" + name + "' must be finite");
     m.params[name] = value;
 }
 
@@ -492,6 +501,100 @@ int lenientCall(lua_State* L) {
     if (full.rfind("gr.", 0) != 0) return 0;
     return pushLenientStandIn(L, full.substr(3));
 }
+
+}  // namespace
+
+// ---- Arguments a known call cannot read (--lenient) ---------------------------------------
+
+LenientReading startReading(lua_State* L) {
+    LenientReading reading;
+    reading.arguments = lua_gettop(L);
+    reading.eraSigns = sceneBuilder(L).eraSigns.size();
+    return reading;
+}
+
+namespace {
+
+/// An ArgumentError's message split into the call it names and what it says after the name:
+/// "gr.material: argument 2 ..." gives "gr.material" and "argument 2 ...".
+std::pair<std::string, std::string> splitCall(const std::string& message) {
+    const size_t space = message.find(' ');
+    if (space == std::string::npos) return {message, ""};
+    std::string call = message.substr(0, space);
+    if (!call.empty() && call.back() == ':') call.pop_back();
+    return {call, message.substr(space + 1)};
+}
+
+/// List a call whose arguments could not be read: what its first reading said, where, and
+/// what became of it.
+void recordUnreadable(SceneBuilder& builder, const std::string& call, const std::string& said,
+                      const std::string& where, const std::string& outcome) {
+    recordKind(builder.unreadableKinds, builder.unreadableCounts, call,
+               call + " (arguments raybook cannot read: " + said + "; " + outcome + "), first at " +
+                   where);
+}
+
+/// What became of a call that could not be read at all: a gr call returns a stand-in, a method
+/// does nothing.
+std::string standInOutcome(const std::string& call) {
+    return call.rfind("gr.", 0) == 0 ? "a stand-in took its place" : "the call was ignored";
+}
+
+}  // namespace
+
+int lenientArgument(lua_State* L, const ArgumentError& e, LenientReading& reading) {
+    SceneBuilder& builder = sceneBuilder(L);
+    if (!builder.options.lenient) throw;
+    // What a failed reading took for a sign of an era may mean something else entirely.
+    builder.eraSigns.erase(builder.eraSigns.begin() + static_cast<long>(reading.eraSigns),
+                           builder.eraSigns.end());
+    const auto [call, said] = splitCall(e.what());
+    const bool first = builder.reread.call.empty();
+    if (e.argument > 1 && e.argument <= reading.arguments) {
+        // Leave out the argument and those after it; the first reading's line covers the call.
+        if (first) builder.reread = {call, said, luaCaller(L), e.argument - 1, false};
+        reading.ownsReread = first;
+        reading.rereadWith = e.argument - 1;
+        return 0;
+    }
+    if (first)
+        recordUnreadable(builder, call, said, luaCaller(L), standInOutcome(call));
+    else
+        builder.reread.stoodIn = true;
+    // A gr call's stand-in is chosen by its name; a method does nothing.
+    if (call.rfind("gr.", 0) != 0) return 0;
+    return pushLenientStandIn(L, call.substr(3));
+}
+
+int rereadLeniently(lua_State* L, const LenientReading& reading) {
+    lua_settop(L, reading.rereadWith);
+    lua_Debug ar;
+    lua_getstack(L, 0, &ar);
+    lua_getinfo(L, "f", &ar);  // the running function: a C function called directly is its own
+    lua_insert(L, 1);
+    const int status = lua_pcall(L, reading.rereadWith, LUA_MULTRET, 0);
+    if (reading.ownsReread) {
+        SceneBuilder& builder = sceneBuilder(L);
+        if (status == LUA_OK) {
+            const SceneBuilder::Reread& r = builder.reread;
+            const std::string kept =
+                r.kept == 1 ? "argument" : std::to_string(r.kept) + " arguments";
+            recordUnreadable(builder, r.call, r.first, r.where,
+                             r.stoodIn ? standInOutcome(r.call) : "read with its first " + kept);
+        }
+        builder.reread = {};
+    }
+    if (status == LUA_OK) return lua_gettop(L);
+    // The message of a call made from C has no "file:line:": add the script's.
+    if (status == LUA_ERRRUN) {
+        luaL_where(L, 1);
+        lua_insert(L, -2);
+        lua_concat(L, 2);
+    }
+    return lua_error(L);
+}
+
+namespace {
 
 /// Raise the error for a name nobody defined (argument 2 of an __index): which chapter provides
 /// it, or that it is unknown. `what` names it in the message ("gr.mesh", "method 'csg'").
@@ -747,6 +850,7 @@ std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& f
         report->era = era;
         report->warnings = withCounts(builder->warningKinds, builder->warningCounts);
         report->ignored = withCounts(builder->ignoredKinds, builder->ignoredCounts);
+        report->unreadable = withCounts(builder->unreadableKinds, builder->unreadableCounts);
     }
     return std::move(builder->renders);
 }

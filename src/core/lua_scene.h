@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "core/feature.h"
 #include "core/memory_budget.h"
 #include "core/scene_era.h"
@@ -58,7 +59,9 @@ struct SceneLoadReport {
     SceneLoadTimes times;
     EraDecision era;
     std::vector<std::string> warnings;  ///< "scene.lua:12: gr.sphere: ..." one per kind.
-    std::vector<std::string> ignored;   ///< --lenient: what was ignored, with counts.
+    std::vector<std::string> ignored;   ///< --lenient: unknown names ignored, with counts.
+    /// --lenient: known calls whose arguments could not be read, with counts.
+    std::vector<std::string> unreadable;
 };
 
 /// What the Lua calls build while the script runs. One per load; reached through the
@@ -104,6 +107,17 @@ struct SceneBuilder {
     std::map<std::string, int> warningCounts;
     std::vector<std::pair<std::string, std::string>> ignoredKinds;  ///< --lenient, the same way.
     std::map<std::string, int> ignoredCounts;
+    /// --lenient: known calls whose arguments could not be read, the same way.
+    std::vector<std::pair<std::string, std::string>> unreadableKinds;
+    std::map<std::string, int> unreadableCounts;
+    /// --lenient: the call being read again without the arguments it could not read, and
+    /// what its first reading said, and where; empty when no call is. A reading that fails again,
+    /// or stands in, belongs to the same call: the whole call gets one line.
+    struct Reread {
+        std::string call, first, where;
+        int kept = 0;          ///< The arguments it is read with.
+        bool stoodIn = false;  ///< A later reading failed too, and a stand-in was returned.
+    } reread;
     int lastChapter = 0;               ///< The newest chapter built into this binary.
     std::vector<int> builtChapters;    ///< Every chapter built in (they may land out of order).
     std::set<std::string> featuresOn;  ///< The features switched on for this run.
@@ -144,26 +158,72 @@ std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& f
 // argument; the wrapper adds "file:line:" and raises it as a Lua error. Never call lua_error or
 // luaL_error* inside such a body: they would jump over C++ destructors.
 
-/// Wrap a C++ body `int body(lua_State*)` that may throw into a lua_CFunction.
+/// An argument a known call cannot read: of the wrong type, one too few, or outside the range
+/// raybook allows. The message begins with the call's name, then a colon or " expects"
+/// ("gr.material: argument 2 (ks) must be ...", "node:scale expects 3 arguments ..."). Without
+/// --lenient it stops the scene like any InputError; under --lenient luaGuard reads the call
+/// without that argument, or returns a stand-in (see lenientArgument).
+class ArgumentError : public InputError {
+  public:
+    explicit ArgumentError(const std::string& message, int argument = 0)
+        : InputError(message), argument(argument) {}
+    /// The position of the argument at fault; 0 when no one argument is (a count, a field).
+    int argument;
+};
+
+/// What a call's first reading left for luaGuard to do under --lenient.
+struct LenientReading {
+    int arguments = -1;   ///< The call's arguments at the start, and what lenientArgument reads.
+    size_t eraSigns = 0;  ///< Era signs before the call: a failed reading's are taken back.
+    int rereadWith = 0;   ///< Read the call again with this many arguments (0: do not).
+    bool ownsReread = false;  ///< This reading began the call's rereading (lists the call).
+};
+
+/// Under --lenient, what becomes of a call whose argument `e` could not be read (rethrows `e`
+/// otherwise). An argument after the first, among those the call received, is left out with
+/// the ones after it: `reading.rereadWith` says how many to keep, and the caller calls again
+/// (rereadLeniently). Otherwise the call returns a stand-in chosen by its name, as an unknown
+/// name does (its result count is returned). Either way the call is listed at the end of the
+/// run. May throw InputError (the stand-in counts against the memory limit).
+int lenientArgument(lua_State* L, const ArgumentError& e, LenientReading& reading);
+/// Call the running function again with its first `reading.rereadWith` arguments, and return
+/// what it returns; the whole call gets one line in the list. May raise a Lua error: call it
+/// where no C++ object is alive.
+int rereadLeniently(lua_State* L, const LenientReading& reading);
+/// The call's arguments and era signs as a reading starts.
+LenientReading startReading(lua_State* L);
+
+/// Wrap a C++ body `int body(lua_State*)` that may throw into a lua_CFunction. Under
+/// --lenient, an ArgumentError becomes a second reading or a stand-in (lenientArgument).
 template <int (*Body)(lua_State*)>
 int luaGuard(lua_State* L) {
+    LenientReading reading = startReading(L);
     {
         std::string message;
         try {
-            return Body(L);
+            try {
+                return Body(L);
+            } catch (const ArgumentError& e) {
+                const int results = lenientArgument(L, e, reading);
+                if (reading.rereadWith == 0) return results;
+            }
         } catch (const std::exception& e) {
             message = e.what();
         }
-        luaL_where(L, 1);
-        lua_pushlstring(L, message.data(), message.size());
-        lua_concat(L, 2);
+        if (reading.rereadWith == 0) {
+            luaL_where(L, 1);
+            lua_pushlstring(L, message.data(), message.size());
+            lua_concat(L, 2);
+        }
     }
+    if (reading.rereadWith > 0) return rereadLeniently(L, reading);
     return lua_error(L);
 }
 
 /// The SceneBuilder of the running script.
 SceneBuilder& sceneBuilder(lua_State* L);
-/// "scene.lua:12": where the running Lua code called the current C function.
+/// "scene.lua:12": where the running Lua code called the current C function (through any C
+/// functions between them).
 std::string luaCaller(lua_State* L);
 /// Record a warning of kind `kind` (once per kind; later ones only count) at the caller's line.
 void sceneWarning(lua_State* L, const std::string& kind, const std::string& message);

@@ -331,12 +331,19 @@ int run(int argc, char** argv, Cluster& cluster) {
                 std::fprintf(stderr, "  %s\n", line.c_str());
         }
     }
-    // Under --lenient, stderr ends with everything that was ignored.
-    if (!load.ignored.empty()) {
-        std::fprintf(stderr, "rt: --lenient ignored %zu unknown name%s:\n", load.ignored.size(),
-                     load.ignored.size() == 1 ? "" : "s");
-        for (const std::string& line : load.ignored)
-            std::fprintf(stderr, "rt:   %s\n", line.c_str());
+    // Under --lenient, stderr ends with everything that was ignored: unknown names, then
+    // known calls whose arguments could not be read.
+    if (!load.ignored.empty() || !load.unreadable.empty()) {
+        const size_t names = load.ignored.size(), calls = load.unreadable.size();
+        std::string what;
+        if (names) what = std::to_string(names) + " unknown name" + (names == 1 ? "" : "s");
+        if (names && calls) what += " and ";
+        if (calls)
+            what += "unreadable arguments in " + std::to_string(calls) + " call" +
+                    (calls == 1 ? "" : "s");
+        std::fprintf(stderr, "rt: --lenient ignored %s:\n", what.c_str());
+        for (const auto* list : {&load.ignored, &load.unreadable})
+            for (const std::string& line : *list) std::fprintf(stderr, "rt:   %s\n", line.c_str());
     }
     return 0;
 }

@@ -210,8 +210,8 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
                                                    default: decided from the scene's calls
   --dialect FILE     a Lua file run before the scene, defining or overriding gr.* calls
                      and node methods (may be repeated)
-  --lenient          unknown calls, methods and primitives are warnings, not errors;
-                     stderr ends with the list of what was ignored
+  --lenient          unknown calls, methods and primitives, and arguments raybook
+                     cannot read, get stand-ins, not errors; stderr ends with the list
   --batch DIR        render every scene under DIR, each from its own folder, and write
                      DIR/raybook-report.html; the renders go to DIR/raybook-report/,
                      beside any image a student made, never over it

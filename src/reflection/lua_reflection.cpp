@@ -34,7 +34,7 @@ int studentMaterial(lua_State* L) {
     auto m = phongBase(L, "gr.material");
     const double r = checkNumber(L, 4, "gr.material", "reflectivity");
     if (r < 0.0 || r > 1.0)
-        throw InputError("gr.material: argument 4 (reflectivity) must be from 0 to 1");
+        throw ArgumentError("gr.material: argument 4 (reflectivity) must be from 0 to 1", 4);
     setIfNonZero(L, *m, "reflect", r, "gr.material");
     sceneWarning(L, "gr.material numeric",
                  std::string("gr.material: read numeric argument 4 as the reflectivity (the ") +
@@ -58,7 +58,8 @@ int grMaterialSeed000(lua_State* L) {
     for (int arg = 4; arg <= n; arg += 2) {
         const std::string key = checkString(L, arg, "gr.material", "keyword");
         if (arg + 1 > n)
-            throw InputError("gr.material: keyword \"" + key + "\" needs a number after it");
+            throw ArgumentError("gr.material: keyword \"" + key + "\" needs a number after it",
+                                arg);
         const double v = checkNumber(L, arg + 1, "gr.material", key.c_str());
         if (key == "reflect") setMaterialParam(L, *m, "reflect", v, "gr.material");
         else if (key == "refract") {
@@ -70,8 +71,9 @@ int grMaterialSeed000(lua_State* L) {
             }
         } else if (key == "glossy") setIfNonZero(L, *m, "glossiness", v, "gr.material");
         else
-            throw InputError("gr.material: unknown keyword \"" + key +
-                             "\" (expected \"reflect\", \"refract\" or \"glossy\")");
+            throw ArgumentError("gr.material: unknown keyword \"" + key +
+                                    "\" (expected \"reflect\", \"refract\" or \"glossy\")",
+                                arg);
     }
     pushMaterial(L, m);
     return 1;

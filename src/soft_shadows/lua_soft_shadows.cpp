@@ -26,21 +26,24 @@ constexpr int kMaxSamplesPerAxis = 256;
 /// Throw unless the falloff is non-negative and not all zero (A4's rule for gr.light).
 void checkFalloff(const Vec3& falloff, const std::string& what) {
     if (falloff.x < 0 || falloff.y < 0 || falloff.z < 0 || !(falloff.x + falloff.y + falloff.z > 0))
-        throw InputError(what + " must be non-negative and not all zero");
+        throw ArgumentError(what + " must be non-negative and not all zero");
 }
 
 /// Throw unless `normal` is non-zero and `left` is non-zero and not parallel to it. (The
 /// panel then uses left's part orthogonal to the normal: Gram–Schmidt, the normal wins.)
+/// `argument` is the normal's position among the call's arguments, 0 for a field.
 void checkPanelFrame(const Vec3& normal, const Vec3& left, const std::string& call,
-                     const std::string& normalName, const std::string& leftName) {
+                     const std::string& normalName, const std::string& leftName, int argument = 0) {
     if (!(glm::length(normal) > 0.0))
-        throw InputError(call + ": " + normalName + " must be a non-zero vector");
+        throw ArgumentError(call + ": " + normalName + " must be a non-zero vector", argument);
     const Vec3 n = glm::normalize(normal);
     const Vec3 inPlane = left - glm::dot(left, n) * n;
+    const int leftArgument = argument ? argument + 1 : 0;
     if (!(glm::length(left) > 0.0))
-        throw InputError(call + ": " + leftName + " must be a non-zero vector");
+        throw ArgumentError(call + ": " + leftName + " must be a non-zero vector", leftArgument);
     if (!(glm::length(inPlane) > 1e-6 * glm::length(left)))
-        throw InputError(call + ": " + leftName + " must not be parallel to the normal");
+        throw ArgumentError(call + ": " + leftName + " must not be parallel to the normal",
+                            leftArgument);
 }
 
 /// Reads the named fields of a table argument, with messages that name the call and field.
@@ -61,12 +64,12 @@ class Fields {
                 if (!ok) {
                     for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
                     lua_pop(L_, 1);
-                    throw InputError(std::string(call_) + ": unknown field '" + key +
-                                     "' (known: " + list + ")");
+                    throw ArgumentError(std::string(call_) + ": unknown field '" + key +
+                                        "' (known: " + list + ")");
                 }
             } else {
                 lua_pop(L_, 1);
-                throw InputError(std::string(call_) + ": the table's keys must be field names");
+                throw ArgumentError(std::string(call_) + ": the table's keys must be field names");
             }
         }
     }
@@ -83,11 +86,11 @@ class Fields {
         const int type = rawField(name);
         if (type == LUA_TNIL) {
             lua_pop(L_, 1);
-            throw InputError(std::string(call_) + ": missing field '" + name + "'");
+            throw ArgumentError(std::string(call_) + ": missing field '" + name + "'");
         }
         if (type != LUA_TTABLE || lua_rawlen(L_, -1) != static_cast<lua_Unsigned>(n)) {
             lua_pop(L_, 1);
-            throw InputError(what);
+            throw ArgumentError(what);
         }
         std::vector<double> values(n);
         for (int i = 1; i <= n; ++i) {
@@ -96,7 +99,8 @@ class Fields {
             lua_pop(L_, 1);
             if (t != LUA_TNUMBER || !std::isfinite(values[i - 1])) {
                 lua_pop(L_, 1);
-                throw InputError(what + " (finite), but element " + std::to_string(i) + " is not");
+                throw ArgumentError(what + " (finite), but element " + std::to_string(i) +
+                                    " is not");
             }
         }
         lua_pop(L_, 1);
@@ -113,9 +117,10 @@ class Fields {
         const double v = lua_tonumber(L_, -1);
         lua_pop(L_, 1);
         if (type == LUA_TNIL)
-            throw InputError(std::string(call_) + ": missing field '" + name + "'");
+            throw ArgumentError(std::string(call_) + ": missing field '" + name + "'");
         if (type != LUA_TNUMBER || !std::isfinite(v))
-            throw InputError(std::string(call_) + ": field '" + name + "' must be a finite number");
+            throw ArgumentError(std::string(call_) + ": field '" + name +
+                                "' must be a finite number");
         return v;
     }
     /// The optional field `samples`: a whole number of samples per axis, or fallback.
@@ -123,8 +128,9 @@ class Fields {
         if (!has("samples")) return fallback;
         const double v = number("samples");
         if (v != std::floor(v) || v < 1 || v > kMaxSamplesPerAxis)
-            throw InputError(std::string(call_) + ": field 'samples' (per axis) must be a whole " +
-                             "number from 1 to " + std::to_string(kMaxSamplesPerAxis));
+            throw ArgumentError(std::string(call_) +
+                                ": field 'samples' (per axis) must be a whole " +
+                                "number from 1 to " + std::to_string(kMaxSamplesPerAxis));
         return static_cast<int>(v);
     }
 
@@ -161,10 +167,13 @@ int seed001RectangleLight(lua_State* L) {
     PointLight light = checkLight(L, 7, call, "the point light");
     const auto size = checkTuple(L, 4, 2, call, "{length, width}");
     if (size[0] < 0 || size[1] < 0)
-        throw InputError("gr.light: argument 4 ({length, width}) must not be negative");
+        throw ArgumentError("gr.light: argument 4 ({length, width}) must not be negative", 4);
     const Vec3 normal = checkVec3(L, 5, call, "normal");
     const Vec3 left = checkVec3(L, 6, call, "left");
-    checkPanelFrame(normal, left, call, "argument 5 (normal)", "argument 6 (left)");
+    checkPanelFrame(normal, left, call, "argument 5 (normal)", "argument 6 (left)", 5);
+    // Only a light read whole is a sign of seed 001 (under --lenient the arguments after the
+    // third may mean something else, and be left out).
+    noteEraSign(L, Era::Legacy, "seed 001's 6-argument gr.light");
     light.shape = std::make_shared<RectangleLight>(size[0], size[1], normal, left);
     pushLight(L, light);
     return 1;
@@ -172,7 +181,7 @@ int seed001RectangleLight(lua_State* L) {
 // [lua-seed001-light]
 
 int lightArgCountError(lua_State* L) {
-    throw InputError(
+    throw ArgumentError(
         "gr.light expects 3 arguments (position, colour, {c0,c1,c2}) or 6 "
         "(..., {length, width}, normal, left), got " +
         std::to_string(lua_gettop(L)));
@@ -196,7 +205,6 @@ int grLight(lua_State* L) {
         lua_settop(L, keep);
         n = keep;
     }
-    if (n == 6) noteEraSign(L, Era::Legacy, "seed 001's 6-argument gr.light");
     lua_pushvalue(L, lua_upvalueindex(1));
     for (int i = 1; i <= 3; ++i) lua_pushvalue(L, i);
     const int status = lua_pcall(L, 3, 1, 0);
@@ -219,7 +227,7 @@ int grLight(lua_State* L) {
 int grAreaLight(lua_State* L) {
     const char* call = "gr.area_light";
     if (lua_gettop(L) != 1 || lua_type(L, 1) != LUA_TTABLE)
-        throw InputError(
+        throw ArgumentError(
             "gr.area_light expects one table {position=, colour=, falloff=, "
             "size={length, width}, normal=, left=, samples=}");
     const Fields fields(L, 1, call);
@@ -227,7 +235,7 @@ int grAreaLight(lua_State* L) {
     PointLight light = namedPointLight(fields, call);
     const auto size = fields.tuple("size", 2);
     if (size[0] < 0 || size[1] < 0)
-        throw InputError("gr.area_light: field 'size' must not be negative");
+        throw ArgumentError("gr.area_light: field 'size' must not be negative");
     const Vec3 normal = fields.vec3("normal");
     const Vec3 left = fields.vec3("left");
     checkPanelFrame(normal, left, call, "field 'normal'", "field 'left'");
@@ -252,7 +260,7 @@ int grBallLight(lua_State* L) {
         light = namedPointLight(fields, call);
         radius = fields.number("radius");
         samples = fields.samples(samples);
-        if (radius < 0) throw InputError("gr.ball_light: field 'radius' must not be negative");
+        if (radius < 0) throw ArgumentError("gr.ball_light: field 'radius' must not be negative");
     } else {
         checkArgCount(L, call, 4, 4, "(position, colour, {c0,c1,c2}, radius) or {...}");
         light.position = checkVec3(L, 1, call, "position");
@@ -260,7 +268,8 @@ int grBallLight(lua_State* L) {
         light.falloff = checkVec3(L, 3, call, "falloff");
         checkFalloff(light.falloff, "gr.ball_light: argument 3 (falloff)");
         radius = checkNumber(L, 4, call, "radius");
-        if (radius < 0) throw InputError("gr.ball_light: argument 4 (radius) must not be negative");
+        if (radius < 0)
+            throw ArgumentError("gr.ball_light: argument 4 (radius) must not be negative", 4);
     }
     light.shape = std::make_shared<BallLight>(radius, samples);
     pushLight(L, light);

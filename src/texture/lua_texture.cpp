@@ -106,7 +106,7 @@ int choiceField(lua_State* L, const char* name, std::initializer_list<const char
         ++k;
     }
     if (found < 0)
-        throw InputError(std::string("gr.texture: field '") + name + "' must be one of " + list);
+        throw ArgumentError(std::string("gr.texture: field '") + name + "' must be one of " + list);
     return found;
 }
 
@@ -134,22 +134,22 @@ int textureTable(lua_State* L) {
         if (key != "image" && key != "checker" && key != "wrap" && key != "filter" &&
             key != "mapping" && key != "scale" && key != "offset") {
             lua_pop(L, 1);
-            throw InputError("gr.texture: unknown field '" + key +
-                             "' (known: image, checker, wrap, filter, mapping, scale, offset)");
+            throw ArgumentError("gr.texture: unknown field '" + key +
+                                "' (known: image, checker, wrap, filter, mapping, scale, offset)");
         }
     }
     const bool hasImage = lua_getfield(L, 1, "image") != LUA_TNIL;
     const bool hasChecker = lua_getfield(L, 1, "checker") != LUA_TNIL;
     if (hasImage == hasChecker) {
         lua_pop(L, 2);
-        throw InputError(
+        throw ArgumentError(
             "gr.texture: give exactly one of image = 'file.png' or checker = {{r,g,b}, {r,g,b}}");
     }
     std::shared_ptr<SurfaceTexture> texture;
     if (hasImage) {
         if (lua_type(L, -2) != LUA_TSTRING) {
             lua_pop(L, 2);
-            throw InputError("gr.texture: field 'image' must be a file name");
+            throw ArgumentError("gr.texture: field 'image' must be a file name");
         }
         const std::string file = lua_tostring(L, -2);
         lua_pop(L, 2);
@@ -172,10 +172,11 @@ int textureTable(lua_State* L) {
         }
         lua_pop(L, 2);
         if (!ok)
-            throw InputError("gr.texture: field 'checker' must be two colours {{r,g,b}, {r,g,b}}");
+            throw ArgumentError(
+                "gr.texture: field 'checker' must be two colours {{r,g,b}, {r,g,b}}");
         if (choiceField(L, "wrap", {"repeat", "clamp"}) >= 0 ||
             choiceField(L, "filter", {"bilinear", "nearest"}) >= 0)
-            throw InputError("gr.texture: 'wrap' and 'filter' apply to images, not the checker");
+            throw ArgumentError("gr.texture: 'wrap' and 'filter' apply to images, not the checker");
         texture = std::make_shared<CheckerTexture>(colours[0], colours[1]);
     }
     const int mapping =
@@ -207,9 +208,10 @@ std::shared_ptr<const Texture> checkTexture(lua_State* L, int arg, const char* c
             static_cast<std::shared_ptr<const Texture>*>(luaL_testudata(L, arg, kTextureType)))
         return *p;
     if (lua_type(L, arg) == LUA_TSTRING) return defaultImageTexture(L, lua_tostring(L, arg), call);
-    throw InputError(std::string(call) + ": argument " + std::to_string(arg - 1) +
-                     " must be a texture (from gr.texture) or an image file name, got " +
-                     luaL_typename(L, arg));
+    throw ArgumentError(std::string(call) + ": argument " + std::to_string(arg - 1) +
+                            " must be a texture (from gr.texture) or an image file name, got " +
+                            luaL_typename(L, arg),
+                        arg);
 }
 
 namespace {
@@ -223,7 +225,8 @@ int materialSetTexture(lua_State* L) {
     if (lua_gettop(L) == 3) {
         slot = checkString(L, 2, call, "slot");
         if (slot != "kd" && slot != "ks")
-            throw InputError(std::string(call) + ": slot '" + slot + "' must be 'kd' or 'ks'");
+            throw ArgumentError(std::string(call) + ": slot '" + slot + "' must be 'kd' or 'ks'",
+                                2);
     }
     material->textures[slot] = checkTexture(L, lua_gettop(L), call);
     return 0;
