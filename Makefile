@@ -7,7 +7,7 @@ CHAPTERS   := $(sort $(patsubst 0%,%,$(shell ls scenes 2>/dev/null | sed -n 's/^
 CHAPTERS   := $(shell echo $(CHAPTERS) | tr ' ' '\n' | sort -n | tr '\n' ' ')
 LAST       := $(lastword $(CHAPTERS))
 CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
-DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3 libnanovdb-dev
+DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3 libnanovdb-dev ccache
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox
 # Open MPI, for rendering on many processes (mpirun -np N ./rt scene.lua): make mpi installs it,
 # and so does make test, so that the MPI tests always run.
@@ -20,7 +20,7 @@ FUZZ_TARGETS := obj lua_scene options
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: deps bench-deps mpi-deps mpi configure rt test test-exercises test-assignments assignment grade \
-        test-sanitize demo docs golden-update bench charts fuzz clean $(CHAPTER_TARGETS)
+        test-sanitize sanitize-build demo docs golden-update bench charts fuzz clean $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
 deps:
@@ -66,13 +66,29 @@ mpi: mpi-deps configure
 # ladder the way a student climbs it (make chapterN for each N), which leaves ./rt the newest,
 # then the check that the tests notice every exercise region blanked, then the assignments'
 # round trip and grading (make test-assignments).
+#
+# The loop after a change: the unit tests and golden images always run. The slower checks carry
+# content-hash stamps (tests/exercises/stamps.py, under BUILD/stamps/) and run again only when
+# the files they depend on changed: a chapter's mutation check, round trip and ladder rung when
+# that chapter's own files, core or the tools changed; the whole-book CTest suites (scenes,
+# determinism, bad input, MPI, batch, docs) when anything outside the chapter modules changed.
+# A skipped check says so. FULL=1, and CI (CI=true), drop the stamps and run everything.
+FULL ?= $(if $(filter true,$(CI)),1)
+STAMPS_PY := python3 tests/exercises/stamps.py
 test: mpi-deps configure
 	cmake -S . -B $(BUILD) >/dev/null
 	cmake --build $(BUILD) -j $(JOBS)
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
-	bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"
-	python3 tests/exercises/regions.py mutate $(BUILD)
-	$(MAKE) --no-print-directory test-assignments
+	$(if $(FULL),rm -rf $(BUILD)/stamps)
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L 'unit|golden'
+	@if $(STAMPS_PY) stale $(BUILD) suite suite; then \
+	  (cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'unit|golden') && \
+	  $(STAMPS_PY) record $(BUILD) suite suite; \
+	else \
+	  echo "skip the whole-book CTest suites: nothing outside the chapter modules changed since they passed (make test FULL=1 runs them)"; \
+	fi
+	LADDER_STAMPS=1 bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"
+	python3 tests/exercises/regions.py mutate $(BUILD) --changed
+	$(MAKE) --no-print-directory test-assignments ROUNDTRIP_STAMPS="--stamps $(BUILD)"
 
 # The tests prove they can fail: each exercise region, blanked one at a time, must make one of
 # its chapter's tests fail (only the test program is rebuilt, and only that chapter's tests run).
@@ -107,9 +123,14 @@ grade:
 # and only rows that need it) and make grade over an untouched, a solved and a buggy project.
 # One export folder and one build folder with a compiler cache serve every chapter.
 test-assignments:
-	python3 tests/exercises/assignment.py roundtrip $(BUILD)/assignments
-	bash tests/exercises/grade_test.sh $(BUILD)/grade-test
-	python3 tests/exercises/mc_golden.py $(BUILD)/mc-golden
+	python3 tests/exercises/assignment.py roundtrip $(BUILD)/assignments $(ROUNDTRIP_STAMPS)
+	@if [ -z "$(ROUNDTRIP_STAMPS)" ] || $(STAMPS_PY) stale $(BUILD) grading suite; then \
+	  bash tests/exercises/grade_test.sh $(BUILD)/grade-test && \
+	  python3 tests/exercises/mc_golden.py $(BUILD)/mc-golden && \
+	  { [ -z "$(ROUNDTRIP_STAMPS)" ] || $(STAMPS_PY) record $(BUILD) grading suite; }; \
+	else \
+	  echo "skip make grade's tests: nothing outside the chapter modules changed since they passed (make test FULL=1 runs them)"; \
+	fi
 
 # The same CTest suite (unit tests, golden images, determinism, bad input, scenes, batch,
 # interrupt, docs) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
@@ -124,10 +145,13 @@ test-assignments:
 SANITIZE_BUILD ?= build-sanitize
 SANITIZER_ENV  := ASAN_OPTIONS=halt_on_error=1:exitcode=66:detect_leaks=1:allocator_may_return_null=1 \
                   UBSAN_OPTIONS=halt_on_error=1:exitcode=66:print_stacktrace=1
-test-sanitize: deps
+test-sanitize: sanitize-build
+	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
+
+# The instrumented tree alone (.ci/run builds it on idle CPU while make test runs).
+sanitize-build: deps
 	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DRB_SANITIZE=ON
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
-	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
 
 demo: rt
 	./rt --features=all scenes/showcase.lua

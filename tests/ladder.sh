@@ -13,6 +13,8 @@
 #
 # Usage: bash tests/ladder.sh MAKE_COMMAND BUILD_DIR "1 2 3 ..."
 # Prints one line per check and a final "N passed, M failed"; exits 1 on any failure.
+# With LADDER_STAMPS=1 (make test without FULL=1), a rung whose chapter files are unchanged since
+# it passed is skipped, and a rung that passes is stamped (tests/exercises/stamps.py).
 set -u
 
 if [ $# -ne 3 ]; then
@@ -61,8 +63,15 @@ chapter_runs() {
 # The size of a PNG, "WxH", from its header.
 png_size() { python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print("%dx%d" % struct.unpack(">II", d[16:24]) if d[:8]==b"\x89PNG\r\n\x1a\n" else "not a PNG")' "$1"; }
 
+STAMPS="python3 $ROOT/tests/exercises/stamps.py"
+skipped=""
 for n in "${CHAPTERS[@]}"; do
     rung="chapter$n"
+    if [ "${LADDER_STAMPS:-}" = 1 ] && ! $STAMPS stale "$BUILD" "rung-ch$n" chapter "$n"; then
+        skipped+=" $n"
+        continue
+    fi
+    failed_before=$failed
     if ! $MAKE_CMD chapter"$n" >"$OUT/make-$n.log" 2>&1; then
         fail "$rung" "make chapter$n failed: $(tail -n 5 "$OUT/make-$n.log")"
         continue
@@ -110,7 +119,11 @@ for n in "${CHAPTERS[@]}"; do
         fail "$rung" "rendering a copy of $scene in $copy: $(head -c 300 "$OUT/copy-$n.log")"
     fi
     rm -rf "$copy"
+    if [ "${LADDER_STAMPS:-}" = 1 ] && [ "$failed" -eq "$failed_before" ]; then
+        $STAMPS record "$BUILD" "rung-ch$n" chapter "$n"
+    fi
 done
+[ -n "$skipped" ] && echo "skip rungs$skipped: unchanged since they passed (make test FULL=1 climbs them)"
 
 # The first rung not written is planned, and make says so instead of building something else.
 next=1

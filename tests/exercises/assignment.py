@@ -17,8 +17,9 @@ Commands (raybook's Makefile and the exported project's Makefile call them):
         "restored" state; never shipped to students, it reads raybook's source).
     assignment.py roundtrip WORK [--chapters 1 2 ...]
         CI: for every chapter with regions, export, check (every exercise must fail), solve,
-        check (everything must pass). One export folder and one build folder are reused, with
-        a compiler cache (objcache.py), so each chapter costs only what changed.
+        check (everything must pass). Two chapters at a time (--workers), each reusing its
+        export and build folder, with one compiler cache (objcache.py), so each chapter costs
+        only what changed. --stamps BUILD skips chapters unchanged since they passed.
     assignment.py list
         every chapter's exercises and the tests tagged [exN.k] for each.
     assignment.py tags BUILD --chapter N [--apply]
@@ -564,6 +565,18 @@ def row_spec(exercises: list[dict], k: int) -> str:
     return exercises[k]["tag"] + "".join("~" + e["tag"] for e in exercises[k + 1:])
 
 
+def configured(build: Path, project: Path, launcher: str | None) -> bool:
+    """Whether `build` is a configured build folder of `project`, with `launcher`."""
+    cache = build / "CMakeCache.txt"
+    if not cache.is_file() or not (build / "Makefile").is_file():
+        return False
+    text = cache.read_text(errors="replace")
+    home = re.search(r"^CMAKE_HOME_DIRECTORY:INTERNAL=(.*)$", text, re.M)
+    given = re.search(r"^CMAKE_CXX_COMPILER_LAUNCHER:[A-Z]+=(.*)$", text, re.M)
+    return (home is not None and Path(home.group(1)).resolve() == project.resolve()
+            and (given.group(1) if given else None) == launcher)
+
+
 def check_project(project: Path, build: Path, quiet: bool = False, golden: bool = True,
                   others: bool = True, rows: set[int] | None = None,
                   fail_fast: bool = False) -> dict:
@@ -582,7 +595,10 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     launcher = os.environ.get("RB_COMPILER_LAUNCHER")
     if launcher:
         configure.append(f"-DCMAKE_CXX_COMPILER_LAUNCHER={launcher}")
-    code, out = run(configure, 300)
+    # A build folder already configured for this project needs no second configure (2 s each
+    # time): `cmake --build` configures again by itself when a CMakeLists.txt or a globbed
+    # folder changed.
+    code, out = (0, "") if configured(build, project, launcher) else run(configure, 300)
     if code == 0:
         targets = ["raybook_check"] + ([f"rt_ch{n}", "rb_imgdiff"] if golden else [])
         code, out = run(["cmake", "--build", str(build), "-j", JOBS, "--target", *targets],
@@ -1060,25 +1076,50 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
 
 
 def roundtrip(args) -> int:
+    """Every chapter's round trip, `--workers` chapters at a time (default 2), each in a
+    project and build folder of its own (WORK/slotK), all sharing one object cache. Chapter 1
+    runs alone first: it fills the cache with the core every later chapter compiles. With
+    `--stamps BUILD`, a chapter unchanged since its round trip passed (stamps.py) is skipped,
+    and one that passes is stamped."""
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
-    project = work / "assignment"
-    build = work / "build"
     env_launcher = f"{sys.executable} {Path(__file__).resolve().parent / 'objcache.py'}"
     os.environ.setdefault("RB_COMPILER_LAUNCHER", env_launcher.replace(" ", ";"))
     os.environ.setdefault("RB_OBJCACHE", str(work / "objcache"))
     chapters = args.chapters or sorted({r.chapter for r in rg.find_regions()})
+    if args.stamps:
+        import stamps
+        fresh = [n for n in chapters
+                 if not stamps.stale(Path(args.stamps), f"roundtrip-ch{n:02d}", "chapter", n)]
+        if fresh:
+            print(f"round trip: chapters {' '.join(map(str, fresh))} unchanged since they "
+                  f"passed (make test FULL=1 reruns them)", flush=True)
+        chapters = [n for n in chapters if n not in fresh]
+    slots = queue.Queue()
+    for k in range(max(1, args.workers)):
+        slots.put(work / f"slot{k}")
+
+    def one(n: int) -> tuple[int, list[str]]:
+        slot = slots.get()
+        try:
+            start = time.monotonic()
+            problems, log = roundtrip_chapter(n, slot / "assignment", slot / "build",
+                                              not args.no_bugs)
+        finally:
+            slots.put(slot)
+        verdict = "ok" if not problems else "FAIL"
+        print(f"chapter {n}: {verdict} ({time.monotonic() - start:.0f} s): {log}" +
+              "".join("\n  " + p.replace("\n", "\n  ") for p in problems), flush=True)
+        if not problems and args.stamps:
+            stamps.record(Path(args.stamps), f"roundtrip-ch{n:02d}", "chapter", n)
+        return n, problems
+
     failures = []
     total = time.monotonic()
-    for n in chapters:
-        start = time.monotonic()
-        problems, log = roundtrip_chapter(n, project, build, not args.no_bugs)
-        verdict = "ok" if not problems else "FAIL"
-        print(f"chapter {n}: {verdict} ({time.monotonic() - start:.0f} s): {log}", flush=True)
-        for p in problems:
-            print("  " + p.replace("\n", "\n  "), flush=True)
-        if problems:
-            failures.append(n)
+    first, rest = chapters[:1], chapters[1:]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.workers)) as pool:
+        results = [one(n) for n in first] + list(pool.map(one, rest))
+    failures = [n for n, problems in results if problems]
     print(f"round trip: {len(chapters) - len(failures)} of {len(chapters)} chapters ok "
           f"in {time.monotonic() - total:.0f} s"
           + (f"; failed: {' '.join(map(str, failures))}" if failures else ""))
@@ -1114,6 +1155,10 @@ def main() -> int:
     p.add_argument("--chapters", type=int, nargs="*")
     p.add_argument("--no-bugs", action="store_true",
                    help="skip the planted bugs (each exercise replaced by its blank)")
+    p.add_argument("--workers", type=int, default=2,
+                   help="chapters checked side by side (default 2)")
+    p.add_argument("--stamps", metavar="BUILD",
+                   help="skip chapters unchanged since they passed; stamp those that pass")
     p.set_defaults(func=roundtrip)
     p = sub.add_parser("tags")
     p.add_argument("build")

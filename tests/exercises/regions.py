@@ -19,11 +19,13 @@ student would get, which throws.
 Commands:
     regions.py list
         print every region: exercise, chapter, file and lines.
-    regions.py mutate BUILD_DIR [--only ID]...
+    regions.py mutate BUILD_DIR [--only ID]... [--changed]
         the tests prove they can fail: for each region, put its blank in place, rebuild the
-        test program, run only that chapter's tests ([chNN]), and require at least one to fail.
-        The source is restored after each region, also on Ctrl-C. A region that no test
-        notices is a defect of the tests: fix the tests, never this check.
+        test program, run only that chapter's tests ([chNN]) until the first failure, and
+        require one. The source is restored after each region, also on Ctrl-C. A region that
+        no test notices is a defect of the tests: fix the tests, never this check. With
+        --changed, a chapter whose files are unchanged since all its blanks were caught is
+        skipped (content-hash stamps, stamps.py); a chapter that passes is stamped.
 """
 
 import argparse
@@ -131,6 +133,15 @@ def mutate(args) -> int:
     build = Path(args.build).resolve()
     tests = build / "tests" / "raybook_tests"
     regions = [r for r in find_regions() if not args.only or r.id in args.only]
+    if args.changed:
+        import stamps  # noqa: E402 (it imports assignment.py, which imports this file)
+        fresh = sorted({r.chapter for r in regions
+                        if not stamps.stale(build, f"mutate-ch{r.chapter:02d}", "chapter",
+                                            r.chapter)})
+        if fresh:
+            print(f"mutation check: chapters {' '.join(map(str, fresh))} unchanged since all "
+                  f"their blanks were caught (make test FULL=1 reruns them)")
+        regions = [r for r in regions if r.chapter not in fresh]
     jobs = str(os.cpu_count() or 2)
     failures = []
     original = {}
@@ -156,7 +167,8 @@ def mutate(args) -> int:
                 print(f"{r.name:9} {r.id:20} {'NO BUILD':8} {time.monotonic() - start:7.0f}  "
                       f"the blank does not compile:\n{out[-2000:]}")
                 continue
-            code, out = run([str(tests), f"[ch{r.chapter:02d}]"], 600)
+            # The first failing test is enough (--abort): a blank can make a slow test slower.
+            code, out = run([str(tests), "--abort", f"[ch{r.chapter:02d}]"], 600)
             restore()
             seconds = time.monotonic() - start
             # Catch2 prints "FAILED:" per failed assertion, with the scenario above it.
@@ -173,6 +185,9 @@ def mutate(args) -> int:
     # Leave the build as the source is.
     run(["cmake", "--build", str(build), "-j", jobs, "--target", "raybook_tests"], 900)
     print(f"{len(regions) - len(failures)} of {len(regions)} blanks caught")
+    if args.changed:
+        for n in sorted({r.chapter for r in regions} - {r.chapter for r in failures}):
+            stamps.record(build, f"mutate-ch{n:02d}", "chapter", n)
     return 1 if failures else 0
 
 
@@ -184,6 +199,8 @@ def main() -> int:
     m = sub.add_parser("mutate")
     m.add_argument("build")
     m.add_argument("--only", action="append", default=[])
+    m.add_argument("--changed", action="store_true",
+                   help="skip chapters unchanged since they passed; stamp those that pass")
     m.set_defaults(func=mutate)
     args = parser.parse_args()
     return args.func(args)
