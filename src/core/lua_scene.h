@@ -8,6 +8,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/error.h"
@@ -26,7 +27,7 @@ struct SceneLoadOptions {
     size_t memoryLimit = size_t(2) << 30;        ///< Bytes the script may allocate.
     MemoryBudget memory;  ///< The whole run's budget (--max-memory): meshes are checked against it.
     std::vector<std::string> assetDirs;  ///< --assets DIR, searched after the scene's folder.
-    bool lenient = false;  ///< --lenient: unknown calls and methods are ignored, with a warning.
+    bool lenient = false;  ///< --lenient: stand-ins for unknown names and unreadable arguments.
     std::vector<std::string> dialects;  ///< --dialect FILE.lua: run before the scene.
     /// The chapters' --name=value options, for calls that need one while the script runs
     /// (chapter 3's gr.mesh builds its BVH with --bvh's layout).
@@ -171,13 +172,15 @@ class ArgumentError : public InputError {
     int argument;
 };
 
-/// What a call's first reading left for luaGuard to do under --lenient.
+/// One reading of a call's arguments by luaGuard, and what it leaves to do under --lenient.
+/// Trivially destructible: it may live where Lua raises errors.
 struct LenientReading {
-    int arguments = -1;   ///< The call's arguments at the start, and what lenientArgument reads.
+    int arguments = -1;   ///< How many arguments the call received.
     size_t eraSigns = 0;  ///< Era signs before the call: a failed reading's are taken back.
     int rereadWith = 0;   ///< Read the call again with this many arguments (0: do not).
     bool ownsReread = false;  ///< This reading began the call's rereading (lists the call).
 };
+static_assert(std::is_trivially_destructible_v<LenientReading>);
 
 /// Under --lenient, what becomes of a call whose argument `e` could not be read (rethrows `e`
 /// otherwise). An argument after the first, among those the call received, is left out with
@@ -188,7 +191,7 @@ struct LenientReading {
 int lenientArgument(lua_State* L, const ArgumentError& e, LenientReading& reading);
 /// Call the running function again with its first `reading.rereadWith` arguments, and return
 /// what it returns; the whole call gets one line in the list. May raise a Lua error: call it
-/// where no C++ object is alive.
+/// where no C++ object with a destructor is alive.
 int rereadLeniently(lua_State* L, const LenientReading& reading);
 /// The call's arguments and era signs as a reading starts.
 LenientReading startReading(lua_State* L);

@@ -30,7 +30,7 @@ struct CommandLine {
     bool quiet = false;                  ///< --quiet.
     bool legacy = false;                 ///< --legacy: pre-2015 course scenes.
     bool modern = false;   ///< --modern: force the current framework's transform order.
-    bool lenient = false;  ///< --lenient: unknown calls are warnings, not errors.
+    bool lenient = false;  ///< --lenient: stand-ins for unknown calls and unreadable arguments.
     std::vector<std::string> dialects;  ///< --dialect FILE.lua (repeatable): run before the scene.
     std::string batchDir;               ///< --batch DIR: render every scene under DIR.
     double sceneTimeLimit = 300;        ///< --scene-time-limit S: per scene in --batch.
