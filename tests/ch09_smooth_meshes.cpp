@@ -480,7 +480,9 @@ SCENARIO("degenerate triangles and zero-length or cancelling normals give no NaN
                 rbtest::makeInstance(*mesh, rbtest::placeAtScale(scale, Vec3(1.0, 0.5, 2.0)));
             rbtest::Rng rng(kSeed);
             const auto points = rbtest::sampleSurface(instance, rng, 500);
-            THEN("normals are unit, shadow offsets finite and smaller than the object") {
+            // The scale in the name: sections of one name in a loop run only the first time.
+            THEN("normals are unit, shadow offsets finite and smaller than the object, at scale "
+                 << scale) {
                 CAPTURE(scale);
                 REQUIRE(points.size() == 500);
                 for (const auto& point : points) {

@@ -166,10 +166,13 @@ SCENARIO("every face of the box shows its texture upright and unmirrored from ou
                 const rb::SurfaceUV s = rb::boxFaceUV(p, axis);
                 Vec3 outward(0.0);
                 outward[axis] = side ? 1.0 : -1.0;
-                THEN("dp/du × dp/dv is the outward normal (u right, v up, seen from outside)") {
+                // The face in the names: sections of one name in a loop run only the first time.
+                THEN("dp/du × dp/dv is the outward normal (u right, v up, seen from outside), on "
+                     "face " << axis << side) {
                     CHECK(glm::cross(s.dpdu, s.dpdv) == outward);
                 }
-                THEN("(u, v) lies in the unit square and moves with dp/du and dp/dv") {
+                THEN("(u, v) lies in the unit square and moves with dp/du and dp/dv, on face "
+                     << axis << side) {
                     const Vec3 q = p + 0.1 * s.dpdu + 0.05 * s.dpdv;
                     const rb::SurfaceUV t = rb::boxFaceUV(q, axis);
                     CHECK(t.uv.x == Approx(s.uv.x + 0.1));
