@@ -133,8 +133,9 @@ test-assignments:
 	fi
 
 # The same CTest suite (unit tests, golden images, determinism, bad input, scenes, batch,
-# interrupt, docs) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
-# folder (no benchmarks; the ladder is left out, since it rebuilds ./rt). Any report fails its test:
+# interrupt, MPI) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
+# folder (no benchmarks; the ladder is left out, since it rebuilds ./rt, and so are the two docs
+# tests, which run Doxygen and no raybook code). Any report fails its test:
 #   halt_on_error, -fno-sanitize-recover=all  the first report ends the program;
 #   exitcode=66                               ... with an exit code no test expects;
 #   detect_leaks=1                            LeakSanitizer checks the heap at exit;
