@@ -308,25 +308,6 @@ SCENARIO("--lenient reads a known call without the arguments it cannot read",
             }
         }
     }
-    GIVEN("a material with a reflectivity of 1.5, outside raybook's range, in a chapter-4 build") {
-        const std::string lua =
-            rbtest::oneMaterialScene("gr.material({0.1, 0.8, 0.1}, {0.2, 0.2, 0.2}, 25, 1.5)");
-        THEN("without --lenient it is an error, as before") {
-            CHECK_THAT(rbtest::loadError(lua, rbtest::chapters(4)),
-                       Contains("scene.lua:1: gr.material: argument 4 (reflectivity) must be "
-                                "from 0 to 1"));
-        }
-        THEN("with --lenient the material is read without it: the student's colours, no mirror") {
-            const Loaded l = load(lua, lenient, 4);
-            const rb::Material* m = l.renders.at(0).instances.at(0).material;
-            REQUIRE(m != nullptr);
-            CHECK(rbtest::near(m->kd, Vec3(0.1, 0.8, 0.1)));
-            CHECK(m->shininess == 25);
-            CHECK(m->params.count("reflect") == 0);
-            REQUIRE(l.report.unreadable.size() == 1);
-            CHECK_THAT(l.report.unreadable[0], Contains("read with its first 3 arguments)"));
-        }
-    }
 }
 
 SCENARIO("--lenient puts a stand-in where a known call cannot be read at all",

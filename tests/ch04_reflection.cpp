@@ -801,3 +801,31 @@ SCENARIO("seed 000's keyword form rejects what it does not know", "[ch04]") {
         }
     }
 }
+
+SCENARIO("--lenient reads a material whose reflectivity is out of range without it",
+         "[ch04][lenient]") {
+    GIVEN("a material with a reflectivity of 1.5, outside raybook's range, in a chapter-4 build") {
+        const std::string lua =
+            rbtest::oneMaterialScene("gr.material({0.1, 0.8, 0.1}, {0.2, 0.2, 0.2}, 25, 1.5)");
+        THEN("without --lenient it is an error, as before") {
+            CHECK_THAT(rbtest::loadError(lua, rbtest::chapters(4)),
+                       Contains("scene.lua:1: gr.material: argument 4 (reflectivity) must be "
+                                "from 0 to 1"));
+        }
+        THEN("with --lenient the material is read without it: the student's colours, no mirror") {
+            rb::SceneLoadOptions lenient;
+            lenient.lenient = true;
+            rb::SceneLoadReport report;
+            rbtest::TempDir dir;
+            const auto renders =
+                rb::loadScene(dir.write("scene.lua", lua), rbtest::chapters(4), lenient, &report);
+            const rb::Material* m = renders.at(0).instances.at(0).material;
+            REQUIRE(m != nullptr);
+            CHECK(rbtest::near(m->kd, Vec3(0.1, 0.8, 0.1)));
+            CHECK(m->shininess == 25);
+            CHECK(m->params.count("reflect") == 0);
+            REQUIRE(report.unreadable.size() == 1);
+            CHECK_THAT(report.unreadable[0], Contains("read with its first 3 arguments)"));
+        }
+    }
+}

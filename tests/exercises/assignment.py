@@ -1086,6 +1086,7 @@ def roundtrip(args) -> int:
     env_launcher = f"{sys.executable} {Path(__file__).resolve().parent / 'objcache.py'}"
     os.environ.setdefault("RB_COMPILER_LAUNCHER", env_launcher.replace(" ", ";"))
     os.environ.setdefault("RB_OBJCACHE", str(work / "objcache"))
+    os.environ.setdefault("RB_OBJCACHE_STRIP", str(work))  # the slots share objects
     chapters = args.chapters or sorted({r.chapter for r in rg.find_regions()})
     if args.stamps:
         import stamps

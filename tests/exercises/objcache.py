@@ -2,18 +2,20 @@
 """A small compiler cache for the assignment round trip (assignment.py roundtrip), used as
 CMAKE_CXX_COMPILER_LAUNCHER: `objcache.py c++ ARGS... -o OBJ -c SOURCE`.
 
-The round trip exports chapter after chapter into one folder and builds it in one build folder.
-Most translation units do not change from one chapter to the next, but some flags do (chapter
-1's objects are compiled with -DRB_NEWEST_CHAPTER=N), so make would recompile them all. This
-launcher keys each object on the compiler, the flags that are not -D definitions (their effect
-is in the preprocessed text) and the preprocessed source, and copies a cached object (with its
-dependency file) instead of compiling when the key is known. The cache folder is $RB_OBJCACHE.
+The round trip exports chapter after chapter into the same folders and builds them there. Most
+translation units do not change from one chapter to the next, but an export rewrites some files
+with the same text, and some flags change (feature.cpp is compiled with -DRB_NEWEST_CHAPTER=N).
+This launcher keys each object on the compiler, the flags that are not -D definitions (their
+effect is in the preprocessed text) and the preprocessed source, and copies a cached object
+(with its dependency file) instead of compiling when the key is known. The cache folder is
+$RB_OBJCACHE.
 Anything it does not understand is compiled as it is, without the cache.
 
-With $RB_OBJCACHE_STRIP=FOLDER, projects side by side in FOLDER (grade_test.sh's class) share
-objects too: FOLDER/<project> is replaced by a placeholder in the key and in the dependency
-file. Such an object keeps the first project's paths in its __FILE__ strings, which only
-assertion messages show: fine for a test, never used by make grade.
+With $RB_OBJCACHE_STRIP=FOLDER, projects side by side in FOLDER (grade_test.sh's class, the
+round trip's slots) share objects too: FOLDER/<project> is replaced by a placeholder in the key
+and in the dependency file. Such an object keeps the first project's paths in its __FILE__
+strings, which only assertion messages show. An object compiled with a -D definition that names
+the project's folder (the tests' RB_SOURCE_DIR) is never shared: the path is in its code.
 """
 
 import hashlib
@@ -58,6 +60,11 @@ def main() -> int:
         pattern = re.escape(os.path.abspath(strip)) + r"/[^/\s]+"
         m = re.search(pattern, os.path.abspath(args[args.index("-c") + 1]))
         root = m.group(0) if m else None
+        # A definition that names the project's folder (the tests' RB_SOURCE_DIR, where they
+        # read scenes and meshes) is compiled into the object: such an object is the project's
+        # own, and its key keeps the folder.
+        if root and any(a.startswith("-D") and root in a for a in args):
+            root = None
         if root:
             text = text.replace(root.encode(), b"@ROOT@")
     h = hashlib.sha256()
