@@ -389,12 +389,15 @@ SCENARIO("antialiased images are the same for any thread count and any tile orde
                 rb::RayCounters c1, c2;
                 std::vector<int> tileThreads;
                 const rb::Image one = rbtest::renderAt(*w, 192, 144, {.threads = 1}, c1);
-                // On a busy machine one thread may take every tile; render again (at most five
+                // On a busy machine one thread may take every tile; render again (at most 50
                 // times) until both threads have rendered some, or the comparison proves nothing.
+                // A render that takes milliseconds (a blank sampler that returns black, planted
+                // by the assignments' round trip) lost that race five times in a row under the
+                // round trip's load, so 5 tries were too few.
                 rb::Image two =
                     rbtest::renderAt(*w, 192, 144, {.threads = 2, .tileThreads = &tileThreads}, c2);
                 for (int attempt = 1;
-                     attempt < 5 && std::count(tileThreads.begin(), tileThreads.end(), 1) == 0;
+                     attempt < 50 && std::count(tileThreads.begin(), tileThreads.end(), 1) == 0;
                      ++attempt)
                     two = rbtest::renderAt(*w, 192, 144,
                                            {.threads = 2, .tileThreads = &tileThreads}, c2);
