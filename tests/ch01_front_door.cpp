@@ -16,14 +16,14 @@
 #include <string>
 #include <vector>
 
+#include "app/options.h"
+#include "app/render_warnings.h"
+#include "app/version.h"
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/image.h"
-#include "core/lua_scene.h"
-#include "core/options.h"
-#include "core/render_warnings.h"
 #include "core/sphere.h"
-#include "core/version.h"
+#include "scene/lua_scene.h"
 #include "test_helpers.h"
 
 using Catch::Contains;

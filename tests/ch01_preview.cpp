@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/options.h"
+#include "app/options.h"
 #include "test_helpers.h"
 
 SCENARIO("--preview renders a quarter of each side with one sample of everything",

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "core/lua_scene.h"
-#include "core/scene_era.h"
+#include "scene/lua_scene.h"
+#include "scene/scene_era.h"
 #include "test_helpers.h"
 
 using Catch::Contains;

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
-#include "core/scene_era.h"
 #include "core/world.h"
+#include "scene/lua_scene.h"
+#include "scene/scene_era.h"
 #include "test_helpers.h"
 
 using Catch::Contains;

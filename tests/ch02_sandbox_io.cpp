@@ -19,7 +19,7 @@
 
 #include "bvh/mesh.h"
 #include "core/error.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 #include "test_helpers.h"
 
 using Catch::Contains;

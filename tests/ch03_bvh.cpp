@@ -26,8 +26,8 @@
 #include "core/aggregate.h"
 #include "core/box.h"
 #include "core/error.h"
-#include "core/lua_scene.h"
 #include "core/sphere.h"
+#include "scene/lua_scene.h"
 #include "test_helpers.h"
 
 using rb::Vec3;

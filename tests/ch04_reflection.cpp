@@ -29,7 +29,7 @@
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/image.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 #include "bvh/mesh.h"
 #include "core/render.h"
 #include "core/world.h"

@@ -33,13 +33,13 @@
 
 #include "core/error.h"
 #include "core/image.h"
-#include "core/lua_scene.h"
 #include "core/render.h"
 #include "core/world.h"
 #include "phong/phong.h"
 #include "reflection/reflection.h"
 #include "refraction/fresnel.h"
 #include "refraction/refraction.h"
+#include "scene/lua_scene.h"
 #include "test_helpers.h"
 
 using Catch::Contains;

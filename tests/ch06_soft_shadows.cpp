@@ -31,9 +31,9 @@
 #include <vector>
 
 #include "bvh/bvh_aggregate.h"
-#include "core/chapter_features.h"
 #include "core/world.h"
 #include "phong/phong.h"
+#include "scene/chapter_features.h"
 #include "soft_shadows/soft_shadows.h"
 #include "test_helpers.h"
 

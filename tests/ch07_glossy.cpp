@@ -34,13 +34,13 @@
 #include <vector>
 
 #include "core/image.h"
-#include "core/lua_scene.h"
 #include "core/material.h"
 #include "core/render.h"
 #include "core/render_context.h"
 #include "core/world.h"
 #include "glossy/glossy.h"
 #include "glossy/lobe_samplers.h"
+#include "scene/lua_scene.h"
 #include "test_helpers.h"
 
 using Catch::Contains;

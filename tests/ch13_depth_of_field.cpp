@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
+#include "app/render_warnings.h"
 #include "core/camera_rays.h"
 #include "core/error.h"
-#include "core/render_warnings.h"
 #include "dof/dof.h"
 #include "dof/lens_sampling.h"
 #include "dof/thin_lens.h"

@@ -29,14 +29,14 @@
 #include <vector>
 
 #include "core/box.h"
-#include "core/chapter_features.h"
+#include "scene/chapter_features.h"
 #include "phong/phong.h"
 #include "bvh/bvh_aggregate.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/instance.h"
 #include "core/integrator.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 #include "bvh/mesh.h"
 #include "bvh/obj.h"
 #include "core/render.h"

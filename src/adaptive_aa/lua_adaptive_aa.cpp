@@ -18,7 +18,7 @@
 
 #include "adaptive_aa/adaptive_aa.h"
 #include "core/error.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

@@ -21,7 +21,7 @@
 #include "bump/height_map.h"
 #include "bump/procedural_heights.h"
 #include "core/error.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 #include "texture/lua_texture.h"
 
 namespace rb {

@@ -1,8 +1,8 @@
 // Chapter 3 plugs in: gr.mesh and the two-level BVH.
 #include "bvh/bvh_aggregate.h"
 #include "core/integrator.h"
-#include "core/lua_scene.h"
 #include "core/render_context.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

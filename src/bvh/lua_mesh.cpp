@@ -9,7 +9,7 @@
 
 #include "bvh/mesh.h"
 #include "core/error.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

@@ -105,4 +105,15 @@ struct RenderJob {
     std::shared_ptr<const Medium> fog;      ///< Chapter 17's gr.fog: fills all space, or null.
 };
 
+/// A render request after the script ran: the job plus the world it renders.
+struct LoadedRender {
+    RenderJob job;
+    std::shared_ptr<const SceneNode> snapshot;              ///< The graph as it was at gr.render.
+    std::vector<Instance> instances;                        ///< Flattened from the snapshot.
+    std::shared_ptr<const Material> fallback;               ///< For instances without a material.
+    std::vector<std::shared_ptr<const Shape>> builtShapes;  ///< Made while flattening (CSG).
+    /// Compound operands left out because their feature is off, by feature.
+    std::map<std::string, size_t> leftOutOperands;
+};
+
 }  // namespace rb

@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "core/feature.h"
 #include "core/integrator.h"
-#include "core/lua_scene.h"
+#include "core/scene_graph.h"
 
 namespace rb {
 

@@ -2,7 +2,7 @@
 // the feature is on. Nothing is installed per render, so a scene without CSG pays nothing.
 #include "csg/csg_feature.h"
 
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

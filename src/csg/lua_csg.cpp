@@ -1,8 +1,8 @@
 // Chapter 14's Lua calls: gr.union, gr.intersection and gr.difference, which return new
 // nodes, and seed 001's nodeA:csg(nodeB, 'u'|'n'|'d'), which turns nodeA into the result.
 #include "core/error.h"
-#include "core/lua_scene.h"
 #include "csg/csg.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

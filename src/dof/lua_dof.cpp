@@ -18,8 +18,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
 #include "dof/dof.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

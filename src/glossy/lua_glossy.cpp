@@ -2,8 +2,8 @@
 // `glossy_sampler`. The seeds' calls that carry a glossiness (seed 000's "glossy", fuzz, seed
 // 001's gr.phongMat and gr.transMat, seed 002's gr.fancy_material) are bound by chapters 4 and
 // 5 and set this same field.
-#include "core/lua_scene.h"
 #include "glossy/glossy.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

@@ -21,11 +21,11 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
 #include "core/render_context.h"
 #include "media/media.h"
 #include "media/medium.h"
 #include "media/vdb_density.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

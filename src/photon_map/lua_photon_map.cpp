@@ -15,9 +15,9 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
 #include "core/render_context.h"
 #include "photon_map/photon_map.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

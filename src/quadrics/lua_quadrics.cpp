@@ -11,10 +11,10 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
 #include "quadrics/cone.h"
 #include "quadrics/cylinder.h"
 #include "quadrics/quadrics.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

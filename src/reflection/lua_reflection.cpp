@@ -4,8 +4,8 @@
 // transparency, glossiness) are set through setMaterialParam, which names the chapter a
 // build lacks.
 #include "core/error.h"
-#include "core/lua_scene.h"
 #include "reflection/reflection.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
 #include "refraction/refraction.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

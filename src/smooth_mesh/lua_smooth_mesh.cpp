@@ -15,7 +15,7 @@
 
 #include "bvh/lua_mesh.h"
 #include "core/error.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 #include "smooth_mesh/smooth_mesh.h"
 
 namespace rb {

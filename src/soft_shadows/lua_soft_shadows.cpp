@@ -14,7 +14,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 #include "soft_shadows/soft_shadows.h"
 
 namespace rb {

@@ -19,7 +19,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 #include "texture/surface_texture.h"
 #include "texture/texture.h"
 

@@ -18,7 +18,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 #include "tone_map/tone_map.h"
 
 namespace rb {

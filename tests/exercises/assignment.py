@@ -67,7 +67,8 @@ SUITES_NEEDING = {"resources": 3}  # its scenes read meshes
 
 def book_chapters(root: Path) -> dict[int, dict]:
     """The chapters of CMakeLists.txt's rb_chapter(NN name header function sources...) calls,
-    with the module folders their sources live in (chapter 1 owns src/core)."""
+    with the module folders their sources live in (chapter 1 owns src/core, src/scene and
+    src/app)."""
     text = (root / "CMakeLists.txt").read_text()
     chapters = {}
     for m in re.finditer(r"^rb_chapter\(([^)]*)\)", text, re.M):

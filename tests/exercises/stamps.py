@@ -10,7 +10,8 @@ A check that fails records nothing, so it runs again next time.
 What a chapter's checks depend on (chapter_files):
   - the chapter's own files, by the book's naming rules (assignment.owner): its module folder
     in src/, its tests, scene, golden image and page (not its benchmarks and charts);
-  - core (src/core/: chapter 1 and the interfaces every chapter builds on);
+  - core (src/core/: chapter 1 and the interfaces every chapter builds on), the scene language
+    (src/scene/) and the program (src/app/), which chapter 1's sources list holds;
   - the files no chapter owns that the checks read: the top-level and tests CMakeLists, the
     shared tests and helpers in tests/, the exercise and golden tools.
 A change inside one chapter's module reruns that chapter's checks only. Later chapters link
@@ -38,7 +39,8 @@ import assignment as asg  # noqa: E402
 ROOT = Path(__file__).resolve().parents[2]
 # Files no chapter owns that every chapter's checks read.
 SHARED = (r"^CMakeLists\.txt$", r"^tests/CMakeLists\.txt$", r"^tests/[^/]+\.(cpp|h|sh)$",
-          r"^tests/exercises/", r"^tests/golden/", r"^src/core/")
+          r"^tests/exercises/", r"^tests/golden/", r"^src/core/", r"^src/scene/",
+          r"^src/app/")
 # Files no check reads: the docs build, CI and the benchmarks and charts.
 NEVER_READ = (r"^docs/", r"^\.ci/", r"^tests/perf/")
 # ... and, for the whole-book suites, the book's text.

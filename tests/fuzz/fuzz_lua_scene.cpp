@@ -16,12 +16,12 @@
 #include <cstdint>
 #include <string>
 
+#include "app/render_warnings.h"
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/image.h"
-#include "core/lua_scene.h"
-#include "core/render_warnings.h"
 #include "core/world.h"
+#include "scene/lua_scene.h"
 
 namespace {
 

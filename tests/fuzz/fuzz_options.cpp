@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "app/options.h"
 #include "core/error.h"
 #include "core/image.h"
-#include "core/options.h"
 #include "core/world.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

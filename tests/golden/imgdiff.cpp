@@ -26,8 +26,8 @@
 #include <system_error>
 #include <vector>
 
+#include "app/html.h"
 #include "block_stats.h"
-#include "core/html.h"
 #include "image_compare.h"
 
 namespace fs = std::filesystem;

@@ -12,9 +12,9 @@
 
 #include "core/feature.h"
 #include "core/image.h"
-#include "core/lua_scene.h"
 #include "core/render.h"
 #include "core/world.h"
+#include "scene/lua_scene.h"
 
 namespace rbchart {
 

@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "chart_helpers.h"
-#include "core/chapter_features.h"
+#include "scene/chapter_features.h"
 #include "phong/phong.h"
 #include "bvh/bvh_aggregate.h"
 #include "core/image.h"

@@ -23,13 +23,13 @@
 #include "adaptive_aa/adaptive_aa.h"
 #include "bvh/bvh_aggregate.h"
 #include "chart_helpers.h"
-#include "core/chapter_features.h"
 #include "core/image.h"
 #include "glossy/glossy.h"
 #include "image_compare.h"
 #include "phong/phong.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
+#include "scene/chapter_features.h"
 #include "soft_shadows/soft_shadows.h"
 
 namespace {

@@ -24,12 +24,12 @@
 #include "adaptive_aa/adaptive_aa.h"
 #include "bvh/bvh_aggregate.h"
 #include "chart_helpers.h"
-#include "core/chapter_features.h"
 #include "core/image.h"
 #include "glossy/glossy.h"
 #include "phong/phong.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"
+#include "scene/chapter_features.h"
 #include "soft_shadows/soft_shadows.h"
 #include "texture/texture.h"
 

@@ -13,7 +13,7 @@
 // renders (an A4 deliverable) is never written over: the report shows it beside raybook's
 // render, with the RMSE between them. A report folder or page that the batch did not make is
 // never removed or replaced.
-#include "core/batch.h"
+#include "app/batch.h"
 
 #include <fcntl.h>
 #include <stb_image.h>
@@ -39,8 +39,8 @@
 #include <thread>
 #include <vector>
 
+#include "app/html.h"
 #include "core/error.h"
-#include "core/html.h"
 
 namespace rb {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/version.h"
+#include "app/version.h"
 
 namespace rb {
 

@@ -13,17 +13,17 @@
 #include <optional>
 #include <tuple>
 
-#include "core/batch.h"
+#include "app/batch.h"
+#include "app/options.h"
+#include "app/render_warnings.h"
+#include "app/version.h"
 #include "core/cluster.h"
 #include "core/error.h"
 #include "core/interrupt.h"
-#include "core/lua_scene.h"
-#include "core/options.h"
 #include "core/post_process.h"
 #include "core/render.h"
-#include "core/render_warnings.h"
-#include "core/version.h"
 #include "core/world.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 namespace {

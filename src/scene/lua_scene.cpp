@@ -1,4 +1,4 @@
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 
 #include <algorithm>
 #include <chrono>
@@ -11,8 +11,9 @@
 #include "core/box.h"
 #include "core/error.h"
 #include "core/interrupt.h"
-#include "core/lua_sandbox_io.h"
 #include "core/sphere.h"
+#include "scene/lua_sandbox_io.h"
+#include "scene/lua_types.h"
 
 namespace rb {
 
@@ -21,9 +22,6 @@ namespace fs = std::filesystem;
 // ---- Userdata types -----------------------------------------------------------------------
 
 namespace {
-constexpr const char* kNodeType = "rb.node";
-constexpr const char* kMaterialType = "rb.material";
-
 /// Place a shared_ptr in a new userdata whose metatable is `type` (destroyed by __gc).
 template <class T>
 void pushShared(lua_State* L, std::shared_ptr<T> p, const char* type) {
@@ -266,79 +264,6 @@ std::string findSceneFile(const SceneBuilder& builder, const std::string& name,
             (looked.empty() ? "" : ", ") + fs::absolute(place, ec).lexically_normal().string();
     throw InputError(call + ": cannot find '" + name + "'; looked in: " + looked +
                      " (add a folder to the search with --assets DIR)");
-}
-
-// ---- Bindings registry --------------------------------------------------------------------
-
-void LuaBindings::function(const char* name, lua_CFunction f) {
-    lua_getglobal(L_, "gr");
-    lua_pushcfunction(L_, f);
-    lua_setfield(L_, -2, name);
-    lua_pop(L_, 1);
-}
-
-void LuaBindings::nodeMethod(const char* name, lua_CFunction f) {
-    luaL_getmetatable(L_, kNodeType);
-    lua_getfield(L_, -1, "__index");
-    lua_pushcfunction(L_, f);
-    lua_setfield(L_, -2, name);
-    lua_pop(L_, 2);
-}
-
-void LuaBindings::materialMethod(const char* name, lua_CFunction f) {
-    luaL_getmetatable(L_, kMaterialType);
-    lua_getfield(L_, -1, "__index");
-    lua_pushcfunction(L_, f);
-    lua_setfield(L_, -2, name);
-    lua_pop(L_, 2);
-}
-
-void LuaBindings::materialField(const char* name, int chapter) {
-    sceneBuilder(L_).materialFields[name] = chapter;
-}
-
-void LuaBindings::option(const char* name, int chapter, double min, double max, bool integer) {
-    sceneBuilder(L_).optionNames[name] = {chapter, min, max, integer};
-}
-
-void setSceneOption(lua_State* L, const std::string& name, double value, const std::string& what) {
-    SceneBuilder& builder = sceneBuilder(L);
-    const auto& spec = builder.optionNames.at(name);
-    if (value < spec.min || value > spec.max || (spec.integer && value != std::floor(value))) {
-        char range[96];
-        std::snprintf(range, sizeof range, "%s from %g to %g",
-                      spec.integer ? "a whole number" : "a number", spec.min, spec.max);
-        throw ArgumentError(what + " must be " + range);
-    }
-    builder.sceneOptions[name] = value;
-}
-
-int missingChapter(lua_State* L, const std::string& name, std::string& title) {
-    const int chapter = chapterProviding(name, title);
-    // A chapter is missing when it is not built in, even below the newest one: chapters may
-    // land out of order (a build with 1-8 and 15 lacks chapter 14).
-    const std::vector<int>& built = sceneBuilder(L).builtChapters;
-    return chapter && std::find(built.begin(), built.end(), chapter) == built.end() ? chapter : 0;
-}
-
-void setMaterialParam(lua_State* L, Material& m, const std::string& name, double value,
-                      const char* call) {
-    const SceneBuilder& builder = sceneBuilder(L);
-    if (!builder.materialFields.count(name)) {
-        std::string title;
-        const int chapter = missingChapter(L, name, title);
-        if (chapter)
-            throw ArgumentError(std::string(call) + ": material field '" + name +
-                                "' needs chapter " + std::to_string(chapter) + " (" + title +
-                                "), which this build does not have; " + chapterAdvice(chapter));
-        std::string known = "kd, ks, shininess";
-        for (const auto& [field, ch] : builder.materialFields) known += ", " + field;
-        throw ArgumentError(std::string(call) + ": unknown material field '" + name +
-                            "' (known: " + known + ")");
-    }
-    if (!std::isfinite(value))
-        throw ArgumentError(std::string(call) + ": material field '" + name + "' must be finite");
-    m.params[name] = value;
 }
 
 // ---- The sandbox --------------------------------------------------------------------------

@@ -14,8 +14,8 @@
 #include "core/error.h"
 #include "core/feature.h"
 #include "core/memory_budget.h"
-#include "core/scene_era.h"
 #include "core/scene_graph.h"
+#include "scene/scene_era.h"
 
 namespace rb {
 
@@ -35,17 +35,6 @@ struct SceneLoadOptions {
     /// The script itself, when it is not to be read from the scene path (the fuzz harness);
     /// the path still names it in messages and still decides the scene's folder.
     std::string sceneText;
-};
-
-/// A render request after the script ran: the job plus the world it renders.
-struct LoadedRender {
-    RenderJob job;
-    std::shared_ptr<const SceneNode> snapshot;              ///< The graph as it was at gr.render.
-    std::vector<Instance> instances;                        ///< Flattened from the snapshot.
-    std::shared_ptr<const Material> fallback;               ///< For instances without a material.
-    std::vector<std::shared_ptr<const Shape>> builtShapes;  ///< Made while flattening (CSG).
-    /// Compound operands left out because their feature is off, by feature.
-    std::map<std::string, size_t> leftOutOperands;
 };
 
 /// Where the time of loading a scene went (for --stats).

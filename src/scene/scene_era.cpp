@@ -1,4 +1,4 @@
-#include "core/scene_era.h"
+#include "scene/scene_era.h"
 
 #include <algorithm>
 

@@ -2,8 +2,8 @@
 /// Batch mode: render every scene under a folder, as a TA renders a class, with a report.
 #pragma once
 
+#include "app/options.h"
 #include "core/cluster.h"
-#include "core/options.h"
 
 namespace rb {
 

@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "core/image.h"
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

@@ -4,7 +4,7 @@
 // luaL_error, every luaL_Buffer step, which may run out of memory) must not have a C++ object
 // with a destructor alive at that point. The C++ work (finding the file) therefore happens in
 // a scope of its own, and the error, if any, is raised after the scope has closed.
-#include "core/lua_sandbox_io.h"
+#include "scene/lua_sandbox_io.h"
 
 #include <algorithm>
 #include <cctype>
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "core/lua_scene.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

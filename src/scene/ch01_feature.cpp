@@ -1,7 +1,7 @@
 // Chapter 1 plugs in: the A4 scene calls, headlight shading and brute-force intersection.
-#include "core/chapter_features.h"
 #include "core/integrator.h"
-#include "core/lua_scene.h"
+#include "scene/chapter_features.h"
+#include "scene/lua_scene.h"
 
 namespace rb {
 

@@ -1,4 +1,4 @@
-#include "core/render_warnings.h"
+#include "app/render_warnings.h"
 
 #include <algorithm>
 #include <map>
