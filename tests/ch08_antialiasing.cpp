@@ -15,12 +15,13 @@
 /// are bit-identical on 1 and 2 threads, seed 001's aa = 1 is its "render at double size and
 /// average four pixels", and a scene that asks for no antialiasing renders exactly as in a
 /// chapter-7 build.
+#include <omp.h>
+
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <omp.h>
 #include <string>
 #include <thread>
 #include <vector>
