@@ -9,6 +9,7 @@
 #include "core/material.h"
 #include "core/render_context.h"
 #include "phong/phong.h"
+#include "lab/warp.h"
 
 namespace rb {
 
@@ -162,33 +163,71 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
         settings_.radius > 0.0 ? settings_.radius : kCausticFootprints * footprint;
     const double indirectR0 =
         settings_.radius > 0.0 ? settings_.radius : kIndirectFootprints * footprint;
-    // Step 2: each pass traces new photons for each map; then each pass's photons are sorted
-    // into a grid sized for that pass's radius. The grids do not depend on one another, so they
-    // are built side by side, one pass to a thread.
-    auto tracePasses = [&](PhotonPaths paths, double r0, PhotonPasses& map) {
-        map.radii = passRadii(r0, settings_.alpha, settings_.passes, settings_.classic);
-        std::vector<std::vector<Photon>> traced(settings_.passes);
+    // Step 2: each pass of each map emits new photons, from its own random streams. Passes
+    // trace together, in one parallel loop, as many at a time as the memory budget holds
+    // (photonPassBytes bounds each): usually all. A pass that does not fit alone is refused
+    // before any of its photons is traced.
+    struct MapPasses {
+        PhotonPaths paths;
+        double r0;
+        PhotonPasses* map;
+    };
+    std::vector<MapPasses> maps;
+    if (settings_.caustics) maps.push_back({PhotonPaths::Caustic, causticR0, &caustics_});
+    if (settings_.indirect) maps.push_back({PhotonPaths::Indirect, indirectR0, &indirect_});
+    std::vector<PhotonTraceSettings> passes;
+    for (const MapPasses& m : maps)
         for (int pass = 0; pass < settings_.passes; ++pass) {
-            if (ctx.memory)
-                ctx.memory->require(photonPassBytes(settings_.photons), where_,
-                                    "photon pass " + std::to_string(pass + 1) + " (" +
-                                        std::to_string(settings_.photons) + " photons)");
             PhotonTraceSettings trace;
-            trace.paths = paths;
+            trace.paths = m.paths;
             trace.photons = settings_.photons;
             trace.pass = pass;
             trace.seed = ctx.seed;
             trace.cluster = ctx.cluster;
-            traced[pass] = tracePhotons(scene, scattering, trace, ctx.counters);
-            map.stored += traced[pass].size();
+            passes.push_back(trace);
         }
+    const std::uint64_t each = photonPassBytes(settings_.photons);
+    std::vector<std::vector<Photon>> traced;
+    while (traced.size() < passes.size()) {
+        const std::size_t first = traced.size();
+        std::size_t last = first + 1;
+        if (ctx.memory) {
+            const std::uint64_t free = ctx.memory->available();
+            if (each > free)
+                throw InputError(ctx.memory->refusal(
+                    each, free, where_,
+                    "photon pass " + std::to_string(passes[first].pass + 1) + " (" +
+                        std::to_string(settings_.photons) + " photons)"));
+            while (last < passes.size() && (last - first + 1) <= free / each) ++last;
+        } else {
+            last = passes.size();
+        }
+        auto batch = tracePhotonPasses(
+            scene, scattering, {passes.begin() + first, passes.begin() + last}, ctx.counters);
+        for (auto& photons : batch) traced.push_back(std::move(photons));
+    }
+    // Step 3: each pass's photons sorted into a grid sized for that pass's radius. The grids
+    // do not depend on one another, so they are built side by side, the largest first.
+    std::vector<std::pair<PhotonPasses*, int>> grids;
+    for (std::size_t m = 0; m < maps.size(); ++m) {
+        PhotonPasses& map = *maps[m].map;
+        map.radii = passRadii(maps[m].r0, settings_.alpha, settings_.passes, settings_.classic);
         map.grids.resize(settings_.passes);
+        for (int pass = 0; pass < settings_.passes; ++pass) {
+            map.stored += traced[m * settings_.passes + pass].size();
+            grids.push_back({&map, pass});
+        }
+    }
+    std::vector<std::size_t> order(grids.size());
+    for (std::size_t g = 0; g < order.size(); ++g) order[g] = g;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return traced[a].size() > traced[b].size();
+    });
 #pragma omp parallel for schedule(dynamic, 1)
-        for (int pass = 0; pass < settings_.passes; ++pass)
-            map.grids[pass] = PhotonGrid(std::move(traced[pass]), map.radii[pass]);
-    };
-    if (settings_.caustics) tracePasses(PhotonPaths::Caustic, causticR0, caustics_);
-    if (settings_.indirect) tracePasses(PhotonPaths::Indirect, indirectR0, indirect_);
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(order.size()); ++i) {
+        const auto [map, pass] = grids[order[i]];
+        map->grids[pass] = PhotonGrid(std::move(traced[order[i]]), map->radii[pass]);
+    }
     seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 // [photon-passes]
@@ -226,6 +265,9 @@ void installPhotonMap(Pipeline& pipeline, Scene& scene, const RenderContext& con
 
 }  // namespace
 
+/// The chapter's samplers for ./rt --warptest (emission_warps.cpp).
+std::vector<Warp> photonEmissionWarps();
+
 Feature photonMapFeature() {
     return {"photon_map",
             16,
@@ -239,7 +281,9 @@ Feature photonMapFeature() {
               "the scene's, else 16"},
              {"photon-radius", "R", "the first pass's gather radius, in scene units",
               "the scene's, else 3 (caustics) or 12 (indirect) pixel footprints"},
-             {"photon-alpha", "A", "radius shrink per pass, in (0, 1)", "the scene's, else 2/3"}}};
+             {"photon-alpha", "A", "radius shrink per pass, in (0, 1)", "the scene's, else 2/3"}},
+            {},
+            photonEmissionWarps};
 }
 
 }  // namespace rb

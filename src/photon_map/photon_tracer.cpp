@@ -3,7 +3,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
+#include <optional>
 #include <span>
 
 #include "core/cluster.h"
@@ -375,60 +377,109 @@ void tracePhoton(const Scene& scene, const PhotonScattering& s, PhotonPaths path
 
 }  // namespace
 
-std::vector<Photon> tracePhotons(const Scene& scene, const PhotonScattering& scattering,
-                                 const PhotonTraceSettings& settings, RayCounters& counters) {
+namespace {
+
+/// The emission plan of a map's paths: every emitter, and for caustics the specular targets.
+/// Empty emitters mean the map receives no photons.
+EmissionPlan planFor(const Scene& scene, const PhotonScattering& scattering, PhotonPaths paths) {
     EmissionPlan plan;
     plan.emitters = emittersOf(scene);
-    if (settings.paths == PhotonPaths::Caustic) plan.targets = specularTargets(scene, scattering);
-    if (plan.emitters.empty() || settings.photons == 0 ||
-        (settings.paths == PhotonPaths::Caustic && plan.targets.empty()))
-        return {};
+    if (paths == PhotonPaths::Caustic) plan.targets = specularTargets(scene, scattering);
+    if (paths == PhotonPaths::Caustic && plan.targets.empty()) plan.emitters.clear();
     double total = 0.0;
     for (const Emitter& e : plan.emitters) plan.cdf.push_back(total += e.power);
     for (double& c : plan.cdf) c /= total;
+    return plan;
+}
 
-    // Chunks of photons in parallel; each chunk's photons in photon order, and the chunks
-    // joined in order, so the map is the same for any thread count.
-    const std::uint64_t chunks = (settings.photons + kChunk - 1) / kChunk;
-    std::vector<std::vector<Photon>> found(chunks);
-    std::vector<RayCounters> perThread(omp_get_max_threads());
-    const std::uint64_t stream = kPhotonStream + static_cast<std::uint64_t>(settings.pass) * 3 +
-                                 static_cast<std::uint64_t>(settings.paths);
-    // Many processes: this one traces its contiguous share of the chunks (the others theirs).
-    std::uint64_t first = 0, last = chunks;
-    const bool shared = settings.cluster && settings.cluster->size() > 1;
-    if (shared) {
-        const auto rank = static_cast<std::uint64_t>(settings.cluster->rank());
-        const auto ranks = static_cast<std::uint64_t>(settings.cluster->size());
-        first = chunks * rank / ranks;
-        last = chunks * (rank + 1) / ranks;
-    }
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::int64_t c = static_cast<std::int64_t>(first); c < static_cast<std::int64_t>(last);
-         ++c) {
-        RayCounters& rays = perThread[omp_get_thread_num()];
-        const std::uint64_t end = std::min(settings.photons, (c + 1) * kChunk);
-        for (std::uint64_t k = c * kChunk; k < end; ++k) {
-            Sampler sampler(settings.seed, stream, k);
-            EmittedPhoton photon;
-            if (emitPhoton(plan, settings.paths, k, settings.photons, settings.stratify, sampler,
-                           photon))
-                tracePhoton(scene, scattering, settings.paths, photon, sampler, rays, found[c]);
+}  // namespace
+
+std::vector<Photon> tracePhotons(const Scene& scene, const PhotonScattering& scattering,
+                                 const PhotonTraceSettings& settings, RayCounters& counters) {
+    return std::move(tracePhotonPasses(scene, scattering, {settings}, counters).front());
+}
+
+// [trace-passes]
+std::vector<std::vector<Photon>> tracePhotonPasses(const Scene& scene,
+                                                   const PhotonScattering& scattering,
+                                                   const std::vector<PhotonTraceSettings>& passes,
+                                                   RayCounters& counters) {
+    // Step 1: one emission plan per kind of map, shared by its passes.
+    std::array<std::optional<EmissionPlan>, 3> plans;
+    auto plan = [&](PhotonPaths paths) -> const EmissionPlan& {
+        auto& p = plans[static_cast<int>(paths)];
+        if (!p) p = planFor(scene, scattering, paths);
+        return *p;
+    };
+    // Step 2: each pass's chunks of kChunk photons. Many processes: this one traces a
+    // contiguous share of each pass's chunks (the others theirs). The chunks of every pass are
+    // numbered one after another, from offset[pass], for a single parallel loop over them all.
+    std::vector<std::uint64_t> firstChunk(passes.size()), offset(passes.size() + 1, 0);
+    for (std::size_t j = 0; j < passes.size(); ++j) {
+        const PhotonTraceSettings& s = passes[j];
+        const std::uint64_t chunks =
+            plan(s.paths).emitters.empty() ? 0 : (s.photons + kChunk - 1) / kChunk;
+        std::uint64_t first = 0, last = chunks;
+        if (s.cluster && s.cluster->size() > 1) {
+            const auto rank = static_cast<std::uint64_t>(s.cluster->rank());
+            const auto ranks = static_cast<std::uint64_t>(s.cluster->size());
+            first = chunks * rank / ranks;
+            last = chunks * (rank + 1) / ranks;
         }
+        firstChunk[j] = first;
+        offset[j + 1] = offset[j] + (last - first);
+    }
+    // Step 3: every chunk in parallel; each chunk's photons in photon order, into a vector of
+    // its own (neighbouring vectors' headers share cache lines, so they are written once).
+    std::vector<std::vector<Photon>> found(offset.back());
+    std::vector<RayCounters> perThread(omp_get_max_threads());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::int64_t w = 0; w < static_cast<std::int64_t>(offset.back()); ++w) {
+        const std::size_t j =
+            std::upper_bound(offset.begin(), offset.end(), static_cast<std::uint64_t>(w)) -
+            offset.begin() - 1;
+        const PhotonTraceSettings& s = passes[j];
+        const EmissionPlan& emission = *plans[static_cast<int>(s.paths)];
+        const std::uint64_t stream = kPhotonStream + static_cast<std::uint64_t>(s.pass) * 3 +
+                                     static_cast<std::uint64_t>(s.paths);
+        const std::uint64_t c = firstChunk[j] + (static_cast<std::uint64_t>(w) - offset[j]);
+        RayCounters& rays = perThread[omp_get_thread_num()];
+        std::vector<Photon> chunk;
+        const std::uint64_t end = std::min(s.photons, (c + 1) * kChunk);
+        for (std::uint64_t k = c * kChunk; k < end; ++k) {
+            Sampler sampler(s.seed, stream, k);
+            EmittedPhoton photon;
+            if (emitPhoton(emission, s.paths, k, s.photons, s.stratify, sampler, photon))
+                tracePhoton(scene, scattering, s.paths, photon, sampler, rays, chunk);
+        }
+        found[w] = std::move(chunk);
     }
     for (const RayCounters& r : perThread) counters.merge(r);
-    std::size_t size = 0;
-    for (const auto& f : found) size += f.size();
-    std::vector<Photon> photons;
-    photons.reserve(size);
-    for (const auto& f : found) photons.insert(photons.end(), f.begin(), f.end());
-    if (!shared) return photons;
-    // The shares joined in process order are the chunks in order: the map one process traces.
-    const std::vector<std::byte> joined =
-        settings.cluster->joinInOrder(std::as_bytes(std::span<const Photon>(photons)));
-    photons.resize(joined.size() / sizeof(Photon));
-    std::memcpy(photons.data(), joined.data(), joined.size());
-    return photons;
+    // Step 4: each pass's chunks joined in order, so its map is the same for any thread count;
+    // the passes side by side.
+    std::vector<std::vector<Photon>> traced(passes.size());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::int64_t j = 0; j < static_cast<std::int64_t>(passes.size()); ++j) {
+        std::size_t size = 0;
+        for (std::uint64_t w = offset[j]; w < offset[j + 1]; ++w) size += found[w].size();
+        traced[j].reserve(size);
+        for (std::uint64_t w = offset[j]; w < offset[j + 1]; ++w) {
+            traced[j].insert(traced[j].end(), found[w].begin(), found[w].end());
+            std::vector<Photon>().swap(found[w]);  // free the chunk: one copy at a time
+        }
+    }
+    // Step 5: many processes: each pass's shares joined in process order are its chunks in
+    // order, the map one process traces (outside any parallel region: it talks to the others).
+    for (std::size_t j = 0; j < passes.size(); ++j) {
+        Cluster* cluster = passes[j].cluster;
+        if (!cluster || cluster->size() <= 1) continue;
+        const std::vector<std::byte> joined =
+            cluster->joinInOrder(std::as_bytes(std::span<const Photon>(traced[j])));
+        traced[j].resize(joined.size() / sizeof(Photon));
+        std::memcpy(traced[j].data(), joined.data(), joined.size());
+    }
+    return traced;
 }
+// [trace-passes]
 
 }  // namespace rb

@@ -67,4 +67,12 @@ inline constexpr int kMaxPhotonBounces = 64;
 std::vector<Photon> tracePhotons(const Scene& scene, const PhotonScattering& scattering,
                                  const PhotonTraceSettings& settings, RayCounters& counters);
 
+/// Trace several passes, of one map or of several, as one parallel loop over all their chunks
+/// (one pass alone has too few to keep every thread busy to its end). Entry j of the result is
+/// what tracePhotons(passes[j]) returns.
+std::vector<std::vector<Photon>> tracePhotonPasses(const Scene& scene,
+                                                   const PhotonScattering& scattering,
+                                                   const std::vector<PhotonTraceSettings>& passes,
+                                                   RayCounters& counters);
+
 }  // namespace rb
