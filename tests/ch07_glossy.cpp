@@ -40,10 +40,14 @@
 #include "core/world.h"
 #include "glossy/glossy.h"
 #include "glossy/lobe_samplers.h"
+#include "lab/chi_square.h"
 #include "scene/lua_scene.h"
 #include "test_helpers.h"
 
 using Catch::Contains;
+using rb::ChiSquare;
+using rb::chiSquareTail;
+using rb::chiSquareTest;
 using rb::Colour;
 using rb::Vec2;
 using rb::Vec3;
@@ -63,58 +67,8 @@ std::uint64_t testSeed() {
     return rbtest::seedFromEnv("RB_CH07_SEED");
 }
 
-/// P(χ²_dof > x): the p-value of a chi-square statistic.
-double chiSquareTail(double x, int dof) {
-    return rbtest::upperGammaQ(0.5 * dof, 0.5 * x);
-}
-
 /// The family-wise significance level of every test in this file.
 constexpr double kAlpha = 0.01;
-
-/// The result of a chi-square goodness-of-fit test.
-struct ChiSquare {
-    double statistic = 0.0;
-    int dof = 0;
-    double pValue = 1.0;
-    int pooledCells = 0;
-};
-
-/// Chi-square test of observed against expected counts. Cells expecting fewer than 5 are
-/// pooled into one (merged with the smallest remaining cell if the pool still expects < 5).
-/// A sample in a cell expecting nothing at all fails the test outright (p = 0).
-ChiSquare chiSquareTest(const std::vector<double>& observed, const std::vector<double>& expected) {
-    ChiSquare result;
-    std::vector<std::pair<double, double>> cells;  // (observed, expected)
-    double poolObserved = 0.0, poolExpected = 0.0;
-    for (size_t i = 0; i < observed.size(); ++i) {
-        if (expected[i] <= 0.0 && observed[i] > 0.0) {
-            result.pValue = 0.0;
-            result.statistic = INFINITY;
-            return result;
-        }
-        if (expected[i] < 5.0) {
-            poolObserved += observed[i];
-            poolExpected += expected[i];
-            ++result.pooledCells;
-        } else {
-            cells.push_back({observed[i], expected[i]});
-        }
-    }
-    if (poolExpected > 0.0) {
-        if (poolExpected < 5.0 && !cells.empty()) {
-            auto smallest = std::min_element(cells.begin(), cells.end(),
-                                             [](auto& a, auto& b) { return a.second < b.second; });
-            smallest->first += poolObserved;
-            smallest->second += poolExpected;
-        } else {
-            cells.push_back({poolObserved, poolExpected});
-        }
-    }
-    for (const auto& [o, e] : cells) result.statistic += (o - e) * (o - e) / e;
-    result.dof = static_cast<int>(cells.size()) - 1;
-    result.pValue = chiSquareTail(result.statistic, result.dof);
-    return result;
-}
 
 /// Composite Simpson's rule for ∫_a^b f with `intervals` (even) pieces.
 double simpson(const std::function<double(double)>& f, double a, double b, int intervals) {

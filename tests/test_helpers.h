@@ -57,6 +57,7 @@
 #include "quadrics/quadrics.h"
 #include "photon_map/photon_map.h"
 #include "media/media.h"
+#include "lab/chi_square.h"
 
 namespace rbtest {
 
@@ -96,36 +97,12 @@ class Rng {
     std::mt19937_64 engine_;
 };
 
-/// Q(a, x) = Γ(a, x) / Γ(a), the regularised upper incomplete gamma function.
-/// Source: Numerical Recipes, 3rd ed., §6.2: the series for x < a + 1, Lentz's continued
-/// fraction otherwise.
-inline double upperGammaQ(double a, double x) {
-    if (x <= 0.0) return 1.0;
-    const double prefix = std::exp(a * std::log(x) - x - std::lgamma(a));
-    if (x < a + 1.0) {
-        double term = 1.0 / a, sum = term;
-        for (int k = 1; k < 100000 && std::abs(term) > 1e-17 * std::abs(sum); ++k) {
-            term *= x / (a + k);
-            sum += term;
-        }
-        return std::max(0.0, 1.0 - prefix * sum);
-    }
-    const double tiny = 1e-300;
-    double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-    for (int i = 1; i < 100000; ++i) {
-        const double an = -i * (i - a);
-        b += 2.0;
-        d = an * d + b;
-        if (std::abs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::abs(c) < tiny) c = tiny;
-        d = 1.0 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1.0) < 1e-16) break;
-    }
-    return prefix * h;
-}
+/// The chi-square machinery (upperGammaQ, chiSquareTail, chiSquareTest, sidak) is
+/// src/lab/chi_square.h's: `./rt --warptest` runs the same code the tests run.
+using rb::chiSquareTail;
+using rb::chiSquareTest;
+using rb::sidak;
+using rb::upperGammaQ;
 
 /// Chapters 1 to `last`, switched on by `spec` as --features does: what `rt_ch<last>` runs with.
 inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
@@ -430,13 +407,6 @@ inline std::uint64_t ulpDistance(double a, double b) {
     std::memcpy(&ia, &a, sizeof a);
     std::memcpy(&ib, &b, sizeof b);
     return ia > ib ? static_cast<std::uint64_t>(ia - ib) : static_cast<std::uint64_t>(ib - ia);
-}
-
-/// Šidák's per-test level for k independent tests at family-wise level alpha.
-/// Source: Šidák, "Rectangular confidence regions for the means of multivariate normal
-/// distributions", JASA 62 (1967).
-inline double sidak(double alpha, int k) {
-    return 1.0 - std::pow(1.0 - alpha, 1.0 / k);
 }
 
 /// The z with P(|Z| > z) = alpha for a standard normal Z: erfc(z/√2) = alpha, by bisection.

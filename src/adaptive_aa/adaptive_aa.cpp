@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/render_context.h"
+#include "lab/warp.h"
 
 namespace rb {
 
@@ -151,6 +152,9 @@ void installAdaptiveAa(Pipeline& pipeline, Scene&, const RenderContext& context)
 }
 // [install-aa]
 
+/// The chapter's samplers for ./rt --warptest (adaptive_aa_warps.cpp).
+std::vector<Warp> adaptiveAaWarps();
+
 Feature adaptiveAaFeature() {
     return {"adaptive_aa",
             8,
@@ -163,7 +167,9 @@ Feature adaptiveAaFeature() {
              {"aa-threshold", "T", "adaptive: split a square whose samples differ by more",
               "the scene's aa_threshold, else 0.1"},
              {"aa-depth", "D", "adaptive: how often a square may be split (0 to 6)",
-              "the scene's aa_depth, else 3"}}};
+              "the scene's aa_depth, else 3"}},
+            {},
+            adaptiveAaWarps};
 }
 
 }  // namespace rb

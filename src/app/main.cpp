@@ -23,6 +23,7 @@
 #include "core/post_process.h"
 #include "core/render.h"
 #include "core/world.h"
+#include "lab/warp_test.h"
 #include "scene/lua_scene.h"
 
 namespace rb {
@@ -104,6 +105,10 @@ RenderIdentity renderIdentity(const CommandLine& cl, const RenderJob& job,
 
 int run(int argc, char** argv, Cluster& cluster) {
     const std::vector<Feature> built = builtFeatures();
+    // The sampling lab (src/lab/): ./rt --warptest NAME ... has a command line of its own.
+    if (argc >= 2 && std::string(argv[1]) == "--warptest")
+        return warpTestCommand(std::vector<std::string>(argv + 2, argv + argc), built, std::cout,
+                               std::cerr);
     const CommandLine cl = parseCommandLine(argc, argv, built);
     if (cl.help) {
         std::cout << usage(built);

@@ -218,6 +218,10 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --scene-time-limit S
                      seconds each scene may take in --batch      default: 300
   --unsafe-lua       let the scene use os and io (off: scenes run in a sandbox)
+  --warptest NAME [PARAMETER=VALUE ...]
+                     the sampling lab: draw a chapter's sampler against its pdf, write
+                     a figure and a chi-square verdict (./rt --warptest list names them;
+                     first on the command line)
   --help, --version
 )";
     bool first = true;

@@ -21,6 +21,7 @@ struct FeatureOption {
 };
 
 class Image;
+struct Warp;
 
 /// An image file format a feature can write, chosen by the output name's extension
 /// (e.g. {".hdr", "a Radiance HDR image", writeHdr}).
@@ -46,6 +47,8 @@ struct Feature {
     std::vector<FeatureOption> options = {};
     /// Image formats the chapter writes besides PNG (chapter 12: Radiance .hdr).
     std::vector<OutputFormat> outputFormats = {};
+    /// The chapter's samplers, for the sampling lab (./rt --warptest, src/lab/). May be null.
+    std::vector<Warp> (*warps)() = nullptr;
 };
 
 /// The features compiled into this binary, in chapter order. Each chapter binary defines

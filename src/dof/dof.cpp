@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/integrator.h"
 #include "core/render_context.h"
+#include "lab/warp.h"
 
 namespace rb {
 
@@ -91,6 +92,9 @@ void installDof(Pipeline& pipeline, Scene&, const RenderContext& context) {
 }
 // [install-dof]
 
+/// The chapter's samplers for ./rt --warptest (dof_warps.cpp).
+std::vector<Warp> dofWarps();
+
 Feature dofFeature() {
     return {"dof",
             13,
@@ -104,7 +108,9 @@ Feature dofFeature() {
               "the scene's, else |view| (the view target)"},
              {"dof-samples", "N", "lens samples per pixel (paired with the pixel's rays)",
               "the scene's, else 16"},
-             {"dof-shape", "disk|square", "aperture shape", "the scene's, else disk"}}};
+             {"dof-shape", "disk|square", "aperture shape", "the scene's, else disk"}},
+            {},
+            dofWarps};
 }
 
 }  // namespace rb

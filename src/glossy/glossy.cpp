@@ -8,6 +8,7 @@
 #include "core/material.h"
 #include "core/render_context.h"
 #include "glossy/lobe_samplers.h"
+#include "lab/warp.h"
 
 namespace rb {
 
@@ -109,6 +110,9 @@ void installGlossy(Pipeline& pipeline, Scene&, const RenderContext& context) {
 
 }  // namespace
 
+/// The chapter's samplers for ./rt --warptest (glossy_warps.cpp).
+std::vector<Warp> glossyWarps();
+
 Feature glossyFeature() {
     return {"glossy",
             7,
@@ -119,7 +123,9 @@ Feature glossyFeature() {
             {{"glossy-samples", "N", "directions averaged per glossy surface",
               "the scene's glossy_samples or dist, else 16"},
              {"glossy-sampler", "fuzz|lobe", "fuzz sphere (seed 000) or Phong lobe",
-              "the scene's glossy_sampler, else lobe"}}};
+              "the scene's glossy_sampler, else lobe"}},
+            {},
+            glossyWarps};
 }
 
 }  // namespace rb

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/render_context.h"
 #include "core/scene_graph.h"
+#include "lab/warp.h"
 
 namespace rb {
 
@@ -88,6 +89,9 @@ void installMedia(Pipeline& pipeline, Scene& scene, const RenderContext& context
 
 }  // namespace
 
+/// The chapter's samplers for ./rt --warptest (media_warps.cpp).
+std::vector<Warp> mediaWarps();
+
 Feature mediaFeature() {
     return {"media",
             17,
@@ -102,7 +106,9 @@ Feature mediaFeature() {
               "1/400 of the scene's size (fog box diagonal)"},
              {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
              {"media-bounces", "N", "scatterings after the first (0: single scattering)",
-              "the scene's media_bounces, else 256"}}};
+              "the scene's media_bounces, else 256"}},
+            {},
+            mediaWarps};
 }
 
 }  // namespace rb

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "lab/warp.h"
 
 namespace rb {
 
@@ -74,6 +75,9 @@ void installSoftShadows(Pipeline&, Scene& scene, const RenderContext& context) {
 }
 // [install-soft-shadows]
 
+/// The chapter's samplers for ./rt --warptest (soft_shadows_warps.cpp).
+std::vector<Warp> softShadowsWarps();
+
 Feature softShadowsFeature() {
     Feature f{"soft_shadows",
               6,
@@ -87,6 +91,7 @@ Feature softShadowsFeature() {
         {"light-sampling", "stratified|independent", "how points on area lights are chosen",
          "stratified"},
     };
+    f.warps = softShadowsWarps;
     return f;
 }
 
