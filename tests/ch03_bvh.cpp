@@ -23,6 +23,7 @@
 #include "bvh/mesh.h"
 #include "bvh/obj.h"
 #include "bvh/triangle.h"
+#include "bvh/wide_bvh.h"
 #include "core/aggregate.h"
 #include "core/box.h"
 #include "core/error.h"
@@ -535,7 +536,11 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
     // pass exactly through the corner of a box, where the entry and exit distances are equal
     // and any rounding can put them the wrong way round. All coordinates are small integers, or
     // integers near 2²⁰, so vertices and origins are exact in float and in double, and only the
-    // slab arithmetic rounds. Without the widening, this test fails (checked by hand).
+    // slab arithmetic rounds. This test no longer shows that any one margin is needed: with
+    // kFarWidening set to 1, or without intersectBox's far-plane stretch, it still passes,
+    // because the padding of every primitive's box (padded() in bvh.cpp) rounds each node box
+    // outwards by more than those roundings. Each margin has a test of its own below, on
+    // inputs where no other margin can help (planted and run).
     struct Case {
         const char* name;
         rb::ObjData data;
@@ -607,6 +612,205 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
     }
 }
 // [ch03-robust-traversal]
+
+// ---- Each robustness margin, on its own -------------------------------------------------------
+//
+// The traversals carry four safety margins: the far-plane widening of the wide (float) slab
+// test (kFarWidening), the far-plane widening of the binary (double) slab test (the 1 + 8ε of
+// intersectBox), the float ray origin moved outwards (WideRay), and the padding of every
+// primitive's box (padded() in bvh.cpp). On most inputs they cover for each other, so each test
+// below builds inputs on which only one of them can help, and fails when that one alone is
+// removed (numbers checked by planting each removal).
+
+/// One wide node whose four children are box b, rounded outwards to float.
+rb::WideNode wideNodeOf(const rb::AABB& b) {
+    rb::WideNode n{};
+    for (int c = 0; c < 4; ++c)
+        for (int axis = 0; axis < 3; ++axis) {
+            n.lo[axis][c] = rb::roundDownToFloat(b.lo[axis]);
+            n.hi[axis][c] = rb::roundUpToFloat(b.hi[axis]);
+        }
+    return n;
+}
+
+/// A flat box that the ray from 0 towards c touches only at its corner c, at t = 1: flat on
+/// axis `flat` (lo = hi = c there), and reaching `size` away from 0 on the other two axes.
+rb::AABB flatBoxAtCorner(const Vec3& c, int flat, double size) {
+    rb::AABB b;
+    b.extend(c);
+    Vec3 far = c;
+    for (int axis = 0; axis < 3; ++axis)
+        if (axis != flat) far[axis] += std::copysign(size, c[axis]);
+    b.extend(far);
+    return b;
+}
+
+/// A random float in ±[1, 1000), with a random sign: a corner coordinate exact in float.
+double randomFloatCoordinate(rbtest::Rng& rng) {
+    const double magnitude = static_cast<float>(rng.uniform(1.0, 1000.0));
+    return rng.uniform() < 0.5 ? -magnitude : magnitude;
+}
+
+// [ch03-margin-wide-far]
+SCENARIO("the float slab test enters a flat box that a ray touches only at its corner",
+         "[ch03][stability]") {
+    // A ray from the origin through corner c of a flat box touches the box at t = 1 and nowhere
+    // else: the near plane of one axis and the far plane of the flat axis both sit at t = 1
+    // exactly. The origin is 0, so moving it outwards (WideRay's other margin) moves it by
+    // 2⁻¹⁴⁹ only, and the boxes are not padded: the float slab test sees t₀ = c_x·fl(1/c_x)
+    // and t₁ = c_z·fl(1/c_z), each rounded, and t₀ > t₁ happens often. Only the far-plane
+    // stretch kFarWidening (1 + 2⁻²⁰, more than the 1 + 2γ₃ the roundings need) puts them in
+    // order. With kFarWidening = 1, 577 of these 4 000 rays miss their box (planted and run).
+    GIVEN("4 000 flat boxes with float corners in ±[1, 1000), and the rays from 0 to the corner") {
+        rbtest::Rng rng(2013);
+        int misses = 0;
+        for (int k = 0; k < 4000; ++k) {
+            const Vec3 c(randomFloatCoordinate(rng), randomFloatCoordinate(rng),
+                         randomFloatCoordinate(rng));
+            const rb::WideNode node = wideNodeOf(flatBoxAtCorner(c, k % 3, 10.0));
+            const rb::WideRay ray(rb::Ray{Vec3(0.0), c});
+            __m128 tEntry;
+            const int mask = rb::intersectChildren4(node, ray, rb::wideTMax(kInf), tEntry);
+            misses += mask != 0xF;
+        }
+        THEN("every ray enters its box (all four lanes)") {
+            CHECK(misses == 0);
+        }
+    }
+}
+// [ch03-margin-wide-far]
+
+// [ch03-margin-binary-far]
+SCENARIO("the double slab test enters a flat box that a ray touches only at its corner",
+         "[ch03][stability]") {
+    // The same rays as above in double, for intersectBox, the binary traversal's test: from 0
+    // through a corner c with double coordinates, so t₀ = c_x·fl(1/c_x) and t₁ = c_z·fl(1/c_z),
+    // each rounded in double. Only the far-plane stretch 1 + 8ε puts them in order. Without it
+    // (tFar not multiplied by `widen`), 605 of these 4 000 rays miss their box (planted and
+    // run).
+    GIVEN("4 000 flat boxes with random double corners in ±[1, 1000), and the rays from 0") {
+        rbtest::Rng rng(2014);
+        int misses = 0;
+        for (int k = 0; k < 4000; ++k) {
+            Vec3 c;
+            for (int axis = 0; axis < 3; ++axis)
+                c[axis] = (rng.uniform() < 0.5 ? -1.0 : 1.0) * rng.uniform(1.0, 1000.0);
+            const rb::AABB box = flatBoxAtCorner(c, k % 3, 10.0);
+            double tEntry;
+            misses += !rb::intersectBox(box, rb::RayInverse(rb::Ray{Vec3(0.0), c}), kInf, tEntry);
+        }
+        THEN("every ray enters its box") {
+            CHECK(misses == 0);
+        }
+    }
+}
+// [ch03-margin-binary-far]
+
+// [ch03-margin-origin]
+SCENARIO("the float slab test keeps a ray whose origin rounds onto a far face of a box",
+         "[ch03][stability]") {
+    // The origin lies inside a box, 10⁻¹² (relative) short of its far face on axis a, which is a
+    // float plane X; the direction is nearly parallel to that face, so the ray leaves through it
+    // only at t = 2, after entering through a face of axis b at t = 1. Rounded to float, the
+    // origin lands exactly on X, and the far face then looks 0 away: t₁ = 0 < t₀ = 1, a miss.
+    // No widening can stretch 0; only moving the float origin outwards (away from the far face,
+    // by more than rounding moved it: WideRay's err) keeps the ray. Without that move (err = 0),
+    // all 2 000 of these rays miss their box (planted and run).
+    GIVEN("2 000 boxes with a float face X, and rays from 10⁻¹²·|X| inside it, nearly parallel") {
+        rbtest::Rng rng(2015);
+        int misses = 0;
+        for (int k = 0; k < 2000; ++k) {
+            const int a = k % 3, b = (a + 1) % 3, c = (a + 2) % 3;
+            const double X = randomFloatCoordinate(rng);
+            const double side = rng.uniform() < 0.5 ? -1.0 : 1.0;  // which way the ray leaves
+            // The box: on axis a from X − 10·side to X (the far face), on b from 1 to 2, on c
+            // from −1 to 1.
+            rb::AABB box;
+            Vec3 lo(0.0), hi(0.0);
+            lo[a] = X - 10.0 * side;
+            hi[a] = X;
+            lo[b] = 1.0;
+            hi[b] = 2.0;
+            lo[c] = -1.0;
+            hi[c] = 1.0;
+            box.extend(lo);
+            box.extend(hi);
+            Vec3 o(0.0), d(0.0);
+            const double gap = 1e-12 * std::abs(X);
+            o[a] = X - side * gap;
+            d[a] = side * gap / 2.0;  // leaves through X at t = 2
+            o[b] = 0.0;
+            d[b] = 1.0;  // enters at t = 1
+            o[c] = 0.0;
+            d[c] = 0.0;
+            REQUIRE(static_cast<float>(o[a]) == static_cast<float>(X));  // rounds onto the face
+            const rb::WideRay ray(rb::Ray{o, d});
+            __m128 tEntry;
+            const int mask =
+                rb::intersectChildren4(wideNodeOf(box), ray, rb::wideTMax(kInf), tEntry);
+            misses += mask != 0xF;
+        }
+        THEN("every ray enters its box") {
+            CHECK(misses == 0);
+        }
+    }
+}
+// [ch03-margin-origin]
+
+// [ch03-margin-padding]
+SCENARIO("the BVH over instances finds a box hit by a ray that grazes its world bounds",
+         "[ch03][stability]") {
+    // A ray in the plane of a face of an instance's world bounds, one or two ulps outside it,
+    // with no direction component across that face: the slab test of the world box says miss,
+    // exactly (the far-plane widening stretches t, and t is ±∞ here). But the instance tests
+    // its shape in object space, after the inverse transform has rounded the origin, and that
+    // can land it on the unit box's face, where a ray parallel to a face counts as inside: a
+    // hit, which testing every instance (LinearAggregate) reports. The world bounds are
+    // computed with rounding too. Only the padding of every primitive's box (padded() in
+    // bvh.cpp, 64 ulps of its largest coordinate) lets the binary traversal find those hits;
+    // the wide traversal's float boxes are rounded outwards, which pads them by more. Without
+    // the padding, the binary traversal misses all 337 of these hits, in its closest-hit and
+    // its shadow query alike (planted and run).
+    GIVEN("2 000 unit boxes, scaled and moved by random doubles, and rays along their faces") {
+        const rb::Box box;
+        rbtest::Rng rng(2016);
+        int hits = 0, mismatches = 0;
+        for (int k = 0; k < 2000; ++k) {
+            const Vec3 scale(rng.uniform(0.5, 3.0), rng.uniform(0.5, 3.0), rng.uniform(0.5, 3.0));
+            const Vec3 move(rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0));
+            const rb::Mat4 m = glm::scale(glm::translate(rb::Mat4(1.0), move), scale);
+            const std::vector<rb::Instance> instances = {rbtest::makeInstance(box, m)};
+            const rb::AABB world = instances[0].worldBounds;
+            // A face: axis a, high or low side; the origin 1 or 2 ulps outside its plane, in
+            // the middle of the face, the direction in the plane.
+            const int a = k % 3, b = (a + 1) % 3, c = (a + 2) % 3;
+            const bool high = (k / 3) % 2 == 0;
+            Vec3 o = world.centre(), d(0.0);
+            o[a] = high ? world.hi[a] : world.lo[a];
+            for (int step = 0; step < 1 + (k / 6) % 2; ++step)
+                o[a] = std::nextafter(o[a], high ? kInf : -kInf);
+            o[b] -= 10.0;
+            d[b] = 1.0;
+            d[c] = rng.uniform(-0.1, 0.1);
+            const rb::Ray ray{o, d};
+            rb::Hit linearHit, binaryHit, wideHit;
+            const bool found = rb::LinearAggregate(instances).intersect(ray, kInf, linearHit);
+            hits += found;
+            const rb::BVHAggregate binary(instances, rb::BVHLayout::Binary);
+            const rb::BVHAggregate wide(instances, rb::BVHLayout::Wide);
+            if (binary.intersect(ray, kInf, binaryHit) != found) ++mismatches;
+            if (wide.intersect(ray, kInf, wideHit) != found) ++mismatches;
+            if (binary.occluded(ray, kInf) != found || wide.occluded(ray, kInf) != found)
+                ++mismatches;
+        }
+        THEN("both traversals find every hit that testing the instance finds") {
+            CAPTURE(hits);
+            REQUIRE(hits > 100);  // the rays are built to be found this way often
+            CHECK(mismatches == 0);
+        }
+    }
+}
+// [ch03-margin-padding]
 
 // [ch03-bvh-equals-brute-force]
 SCENARIO("the BVH finds the same closest triangle as testing every triangle",
