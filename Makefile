@@ -179,10 +179,10 @@ golden-update: configure
 	cmake --build $(BUILD) -j $(JOBS)
 	@for s in scenes/chapter[0-9][0-9]-*.lua; do \
 	  n=$$(basename $$s | cut -c8-9 | sed 's/^0//'); \
-	  bash tests/golden/run_golden.sh $(BUILD)/rt_ch$$n $$s golden $(BUILD)/golden-report $(BUILD)/tests/rb_imgdiff --update || exit 1; \
+	  bash tests/golden/run_golden.sh $(BUILD)/rt_ch$$n $$s golden $(BUILD)/golden-report --update || exit 1; \
 	done
 	@for s in scenes/seeds/[0-9][0-9][0-9]-*.lua; do \
-	  bash tests/golden/run_golden.sh $(BUILD)/rt_ch$(LAST) $$s golden $(BUILD)/golden-report $(BUILD)/tests/rb_imgdiff --update || exit 1; \
+	  bash tests/golden/run_golden.sh $(BUILD)/rt_ch$(LAST) $$s golden $(BUILD)/golden-report --update || exit 1; \
 	done
 
 # Benchmarks against POV-Ray and Embree (not a test: CI never gates on timings).

@@ -1,4 +1,4 @@
-#include "block_stats.h"
+#include "app/block_stats.h"
 
 #include <algorithm>
 #include <cctype>
@@ -67,7 +67,7 @@ BlockStats block_stats(const std::vector<Image>& renders, int block) {
 void save_block_stats(const std::filesystem::path& path, const BlockStats& s) {
     std::ofstream out(path);
     out.precision(9);
-    out << "# raybook block statistics (tests/golden/block_stats.h): for groups of G x G blocks of "
+    out << "# raybook block statistics (src/app/block_stats.h): for groups of G x G blocks of "
         << s.block << " x " << s.block << " pixels, row by row, r g b: the mean of the group's "
         << "mean over " << s.renders << " reference renders (seeds 1 to " << s.renders
         << ") and the standard deviation of one render's group mean\n";

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "image_compare.h"
+#include "app/image_compare.h"
 
 namespace rb::golden {
 

@@ -1,13 +1,10 @@
 /// \file
-/// rb_imgdiff: compares one render with its golden image, prints one verdict line, and on
-/// failure writes an HTML report (expected, actual and magnified diff side by side).
-///
-/// Usage: rb_imgdiff --expected E.png --actual A.png --thresholds T.txt --name NAME
-///                   --report-dir DIR [--stats NAME.stats]
-/// With --stats, a render that is not the golden image's bits may still pass: when its block
-/// means are statistically those of the reference renders (block_stats.h), as a correct Monte
-/// Carlo solution that draws other random numbers gives.
-/// Exit status: 0 pass, 1 fail, 2 usage or I/O error.
+/// ./rt --compare: compares two images and prints RMSE, PSNR, the largest difference and the
+/// share of pixels more than one 8-bit level apart; with a golden image's thresholds file it
+/// is the golden check itself (the golden tests, make check and make grade run it), and on
+/// failure writes an HTML report (expected, actual and magnified difference side by side).
+#include "app/compare.h"
+
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -18,81 +15,110 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
+#include "app/block_stats.h"
 #include "app/html.h"
-#include "block_stats.h"
-#include "image_compare.h"
+#include "app/image_compare.h"
 
 namespace fs = std::filesystem;
 using namespace rb::golden;
 
 namespace {
 
-/// Exit codes of rb_imgdiff.
-enum ExitCode { kPass = 0, kFail = 1, kError = 2 };
-
 /// Displayed width (CSS pixels) that the report aims for per image.
 constexpr int kTargetDisplayWidth = 384;
 
-/// The command line, all options required.
+/// One 8-bit level. A pixel is "over one level" when a channel differs by two levels or more;
+/// the tolerance sits between one and two levels, so float rounding cannot move a pixel across.
+constexpr double kOneLevelTolerance = 1.5 / 255.0;
+
+/// The command line of ./rt --compare.
 struct Options {
-    fs::path expected;    ///< Golden image.
-    fs::path actual;      ///< Fresh render.
-    fs::path thresholds;  ///< NAME.txt next to the golden image.
-    std::string name;     ///< Test name; prefixes the verdict and names the report files.
-    fs::path report_dir;  ///< Where failure reports and index.html go.
-    fs::path stats;       ///< Optional: reference block statistics (the statistical check).
+    fs::path expected;     ///< First image: the reference (a golden image).
+    fs::path actual;       ///< Second image: the render being judged.
+    fs::path diff;         ///< --diff D.png: write the difference picture there.
+    double threshold = 0;  ///< --threshold RMSE: the largest RMSE that passes (plain mode).
+    fs::path thresholds;   ///< --thresholds NAME.txt: a golden image's thresholds (golden mode).
+    std::string name;      ///< --name: prefixes the verdict and names the report files.
+    fs::path report_dir;   ///< --report-dir DIR: failure reports and index.html go there.
+    fs::path stats;        ///< --stats NAME.stats: the statistical check (golden mode).
 };
 
 constexpr const char* kUsage =
-    "usage: rb_imgdiff --expected E.png --actual A.png --thresholds T.txt --name NAME "
-    "--report-dir DIR [--stats NAME.stats]\n"
-    "Compares a render with its golden image; prints one line; exit 0 pass, 1 fail, 2 error.\n";
+    "usage: rt --compare EXPECTED.png ACTUAL.png [--diff DIFF.png] [--threshold RMSE]\n"
+    "       rt --compare GOLDEN.png RENDER.png --thresholds NAME.txt [--name NAME]\n"
+    "                    [--report-dir DIR] [--stats NAME.stats]\n"
+    "Prints RMSE, PSNR, the largest channel difference and the share of pixels more than one\n"
+    "8-bit level apart; exits 0 when RMSE <= --threshold (default 0: the same pixels), else 1.\n"
+    "With --thresholds it is the golden check of make test, make check and make grade: it\n"
+    "passes or fails against that file's limits (and, with --stats, statistically), and\n"
+    "writes an HTML report of a failure into --report-dir.\n";
 
-/// Parses `--key value` and `--key=value` options; returns nullopt (and sets error) when wrong.
-std::optional<Options> parse_options(int argc, char** argv, std::string& error) {
-    std::map<std::string, std::string> values;
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
+/// A number from the command line, or runtime_error naming the option.
+double parse_number(const std::string& option, const std::string& text) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || !std::isfinite(v) || v < 0)
+        throw std::runtime_error(option + ": expected a number >= 0, got '" + text + "'");
+    return v;
+}
+
+/// Parses the arguments after --compare; throws runtime_error on a mistake.
+Options parse_options(const std::vector<std::string>& args) {
+    Options o;
+    std::vector<std::string> images;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string arg = args[i];
+        if (arg.rfind("--", 0) != 0) {
+            images.push_back(arg);
+            continue;
+        }
+        // Both --key=value and --key value
         std::string value;
-        // Accept both --key=value and --key value
         if (const auto eq = arg.find('='); eq != std::string::npos) {
             value = arg.substr(eq + 1);
             arg = arg.substr(0, eq);
-        } else if (i + 1 < argc) {
-            value = argv[++i];
+        } else if (i + 1 < args.size()) {
+            value = args[++i];
         } else {
-            error = "missing value after " + arg;
-            return std::nullopt;
+            throw std::runtime_error("missing value after " + arg);
         }
-        static const char* const kKeys[] = {"--expected", "--actual",     "--thresholds",
-                                            "--name",     "--report-dir", "--stats"};
-        if (std::find(std::begin(kKeys), std::end(kKeys), arg) == std::end(kKeys)) {
-            error = "unknown option " + arg;
-            return std::nullopt;
-        }
-        values[arg] = value;
+        if (arg == "--diff")
+            o.diff = value;
+        else if (arg == "--threshold")
+            o.threshold = parse_number(arg, value);
+        else if (arg == "--thresholds")
+            o.thresholds = value;
+        else if (arg == "--name")
+            o.name = value;
+        else if (arg == "--report-dir")
+            o.report_dir = value;
+        else if (arg == "--stats")
+            o.stats = value;
+        else
+            throw std::runtime_error("unknown option " + arg);
     }
-    for (const char* key : {"--expected", "--actual", "--thresholds", "--name", "--report-dir"}) {
-        if (values[key].empty()) {
-            error = std::string("missing ") + key;
-            return std::nullopt;
-        }
-    }
-    Options o{values["--expected"], values["--actual"],     values["--thresholds"],
-              values["--name"],     values["--report-dir"], values["--stats"]};
+    if (images.size() != 2)
+        throw std::runtime_error("expected two images, EXPECTED.png and ACTUAL.png; got " +
+                                 std::to_string(images.size()));
+    o.expected = images[0];
+    o.actual = images[1];
+    if (o.thresholds.empty() && (!o.name.empty() || !o.report_dir.empty() || !o.stats.empty()))
+        throw std::runtime_error("--name, --report-dir and --stats need --thresholds NAME.txt");
+    if (o.name.empty()) o.name = o.actual.stem().string();
     // The name becomes part of file names in the report directory
-    if (o.name.find_first_of("/\\") != std::string::npos || o.name == "index") {
-        error = "--name must be a plain file name other than 'index'";
-        return std::nullopt;
-    }
+    if (o.name.find_first_of("/\\") != std::string::npos || o.name == "index")
+        throw std::runtime_error("--name must be a plain file name other than 'index'");
     return o;
 }
 
@@ -146,7 +172,7 @@ void copy_atomically(const fs::path& from, const fs::path& to) {
     fs::rename(temp, to);
 }
 
-/// The report files that rb_imgdiff writes for one test name.
+/// The report files that the golden check writes for one test name.
 std::vector<fs::path> report_files(const fs::path& dir, const std::string& name) {
     return {dir / (name + "-expected.png"), dir / (name + "-actual.png"),
             dir / (name + "-diff.png"), dir / (name + ".html")};
@@ -270,7 +296,7 @@ std::string read_summary(const fs::path& page) {
 /// Holds an exclusive flock on DIR/.index.lock while alive (best effort: no lock, no wait).
 class IndexLock {
   public:
-    /// Takes the lock, waiting for other rb_imgdiff processes to finish their index.
+    /// Takes the lock, waiting for other rt --compare processes to finish their index.
     explicit IndexLock(const fs::path& dir)
         : fd_(::open((dir / ".index.lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {
         if (fd_ >= 0) ::flock(fd_, LOCK_EX);
@@ -324,34 +350,22 @@ void rewrite_index(const fs::path& dir) {
     write_text_atomically(dir / "index.html", html.str());
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    // Parse the command line
-    for (int i = 1; i < argc; ++i) {
-        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-            std::cout << kUsage;
-            return kPass;
-        }
-    }
-    std::string usage_error;
-    const auto options = parse_options(argc, argv, usage_error);
-    if (!options) {
-        std::cerr << "rb_imgdiff: " << usage_error << "\n" << kUsage;
-        return kError;
-    }
-    const Options& o = *options;
+/// The golden check: the comparison against a golden image's thresholds file (and, with
+/// --stats, its block statistics); a failure's report goes to --report-dir. Prints one line.
+int golden_check(const Options& o, std::ostream& out) {
     const auto error_line = [&](const std::string& what) {
         // Why the cleanup: a report from an earlier run would describe images not compared now
         std::error_code ignored;
-        for (const auto& stale : report_files(o.report_dir, o.name)) fs::remove(stale, ignored);
-        try {
-            if (fs::is_directory(o.report_dir)) rewrite_index(o.report_dir);
-        } catch (const std::exception&) {
-            // Best effort: the verdict line below is what matters
+        if (!o.report_dir.empty()) {
+            for (const auto& stale : report_files(o.report_dir, o.name)) fs::remove(stale, ignored);
+            try {
+                if (fs::is_directory(o.report_dir)) rewrite_index(o.report_dir);
+            } catch (const std::exception&) {
+                // Best effort: the verdict line below is what matters
+            }
         }
-        std::cout << o.name << ": FAIL: " << what << std::endl;
-        return kError;
+        out << o.name << ": FAIL: " << what << std::endl;
+        return 1;
     };
 
     // Load the thresholds and both images
@@ -386,30 +400,94 @@ int main(int argc, char** argv) {
     }
 
     // Write or clear this test's report, then refresh the index
-    try {
-        fs::create_directories(o.report_dir);
-        if (comparison.passed) {
-            for (const auto& stale : report_files(o.report_dir, o.name)) fs::remove(stale);
-        } else {
-            const Image diff = diff_image(expected, actual, thresholds.pixel_tol);
-            const auto files = report_files(o.report_dir, o.name);
-            copy_atomically(o.expected, files[0]);
-            copy_atomically(o.actual, files[1]);
-            save_png_atomically(files[2], diff);
-            write_text_atomically(
-                files[3], report_page(o, thresholds, comparison, summary, expected, actual, diff));
+    if (!o.report_dir.empty()) {
+        try {
+            fs::create_directories(o.report_dir);
+            if (comparison.passed) {
+                for (const auto& stale : report_files(o.report_dir, o.name)) fs::remove(stale);
+            } else {
+                const Image diff = diff_image(expected, actual, thresholds.pixel_tol);
+                const auto files = report_files(o.report_dir, o.name);
+                copy_atomically(o.expected, files[0]);
+                copy_atomically(o.actual, files[1]);
+                save_png_atomically(files[2], diff);
+                write_text_atomically(files[3], report_page(o, thresholds, comparison, summary,
+                                                            expected, actual, diff));
+            }
+            rewrite_index(o.report_dir);
+        } catch (const std::exception& e) {
+            return error_line("cannot write the report in " + o.report_dir.string() + ": " +
+                              e.what());
         }
-        rewrite_index(o.report_dir);
-    } catch (const std::exception& e) {
-        return error_line("cannot write the report in " + o.report_dir.string() + ": " + e.what());
     }
 
     // Print the verdict line
     if (comparison.passed) {
-        std::cout << o.name << ": ok (" << summary << ")" << std::endl;
-        return kPass;
+        out << o.name << ": ok (" << summary << ")" << std::endl;
+        return 0;
     }
-    std::cout << o.name << ": FAIL: " << summary << "; see "
-              << (o.report_dir / "index.html").string() << std::endl;
-    return kFail;
+    out << o.name << ": FAIL: " << summary;
+    if (!o.report_dir.empty()) out << "; see " << (o.report_dir / "index.html").string();
+    out << std::endl;
+    return 1;
 }
+
+/// Two images, any two: the numbers, the difference picture with --diff, and the verdict
+/// against --threshold.
+int plain_compare(const Options& o, std::ostream& out) {
+    const Image expected = load_png(o.expected), actual = load_png(o.actual);
+    Thresholds t;
+    t.rmse = o.threshold;
+    t.pixel_tol = kOneLevelTolerance;
+    t.max_fraction = 1.0;  // only the RMSE decides
+    const Comparison c = compare(expected, actual, t);
+    if (!o.diff.empty()) save_png(o.diff, diff_image(expected, actual, t.pixel_tol));
+    out << o.expected.string() << " against " << o.actual.string();
+    if (c.size_mismatch) {
+        out << ": the sizes differ, " << size_text(expected) << " and " << size_text(actual)
+            << (o.diff.empty() ? "" : "; the difference picture shows both") << std::endl;
+        return 1;
+    }
+    out << ", " << size_text(expected) << ":\n"
+        << "  RMSE      " << fmt("%.6g", c.rmse) << " (all channels of all pixels, in [0, 1])\n"
+        << "  PSNR      " << (std::isinf(c.psnr) ? std::string("inf") : fmt("%.2f", c.psnr))
+        << " dB\n"
+        << "  largest   " << fmt("%.6g", c.max_diff) << " (" << fmt("%.0f", c.max_diff * 255.0)
+        << " of 255 levels)\n"
+        << "  over one level  " << fmt("%.4g", 100.0 * c.outlier_fraction) << "% of pixels ("
+        << c.outlier_count << " of " << c.pixel_count << ")\n";
+    if (!o.diff.empty())
+        out << "  difference picture " << o.diff.string()
+            << " (|difference| x 8; magenta: over one level)\n";
+    const bool same = c.rmse <= o.threshold;
+    out << (same ? "same" : "DIFFERENT") << ": RMSE " << format_against(c.rmse, o.threshold)
+        << (same ? " <= " : " > ") << fmt("%g", o.threshold) << " (--threshold)" << std::endl;
+    return same ? 0 : 1;
+}
+
+}  // namespace
+
+namespace rb {
+
+int compareCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    if (std::find(args.begin(), args.end(), "--help") != args.end() ||
+        std::find(args.begin(), args.end(), "-h") != args.end()) {
+        out << kUsage;
+        return 0;
+    }
+    Options o;
+    try {
+        o = parse_options(args);
+    } catch (const std::exception& e) {
+        err << "rt: error: --compare: " << e.what() << "\n" << kUsage;
+        return 1;
+    }
+    try {
+        return o.thresholds.empty() ? plain_compare(o, out) : golden_check(o, out);
+    } catch (const std::exception& e) {
+        err << "rt: error: --compare: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace rb

@@ -1,6 +1,6 @@
 /// \file
 /// Golden-image comparison: implementation (see image_compare.h).
-#include "image_compare.h"
+#include "app/image_compare.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

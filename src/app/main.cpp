@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "app/batch.h"
+#include "app/compare.h"
 #include "app/options.h"
 #include "app/render_warnings.h"
 #include "app/version.h"
@@ -109,6 +110,10 @@ int run(int argc, char** argv, Cluster& cluster) {
     if (argc >= 2 && std::string(argv[1]) == "--warptest")
         return warpTestCommand(std::vector<std::string>(argv + 2, argv + argc), built, std::cout,
                                std::cerr);
+    // Two images compared (src/app/compare.cpp): ./rt --compare A.png B.png ...
+    if (argc >= 2 && std::string(argv[1]) == "--compare")
+        return compareCommand(std::vector<std::string>(argv + 2, argv + argc), std::cout,
+                              std::cerr);
     const CommandLine cl = parseCommandLine(argc, argv, built);
     if (cl.help) {
         std::cout << usage(built);

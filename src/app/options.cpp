@@ -222,6 +222,11 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
                      the sampling lab: draw a chapter's sampler against its pdf, write
                      a figure and a chi-square verdict (./rt --warptest list names them;
                      first on the command line)
+  --compare A.png B.png [--diff D.png] [--threshold RMSE]
+                     compare two images: RMSE, PSNR, the largest difference and the
+                     pixels over one 8-bit level; exit 1 when RMSE > --threshold
+                     (default 0); with --thresholds NAME.txt, the golden check
+                     (./rt --compare --help; first on the command line)
   --help, --version
 )";
     bool first = true;

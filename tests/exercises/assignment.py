@@ -276,7 +276,7 @@ file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_
 add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp ${{RB_CHECK_SOURCES}})
 target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src
                            ${{CMAKE_SOURCE_DIR}}/tests)
-target_link_libraries(raybook_check PRIVATE raybook rb_golden_compare Catch2::Catch2)
+target_link_libraries(raybook_check PRIVATE raybook Catch2::Catch2)
 target_compile_definitions(raybook_check PRIVATE RB_SOURCE_DIR="${{CMAKE_SOURCE_DIR}}")
 """
 
@@ -418,7 +418,7 @@ def export(args) -> int:
     contents["README.md"] = readme(root, n, exercises, left).encode()
     # The golden report's advice: raybook's maintainers re-render a golden image on purpose
     # (make golden-update); an assignment has no such target, its golden images are fixed.
-    for rel in ("tests/golden/imgdiff.cpp", "tests/golden/run_golden.sh"):
+    for rel in ("src/app/compare.cpp", "tests/golden/run_golden.sh"):
         if rel in contents:
             text = re.sub(r'If (?:the|a) change is intended, run <code>make(?:\s|"\s*")*'
                           r'golden-update</code> and say(?:[^."]|"\s*")*\.',
@@ -601,7 +601,7 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     # folder changed.
     code, out = (0, "") if configured(build, project, launcher) else run(configure, 300)
     if code == 0:
-        targets = ["raybook_check"] + ([f"rt_ch{n}", "rb_imgdiff"] if golden else [])
+        targets = ["raybook_check"] + ([f"rt_ch{n}"] if golden else [])
         code, out = run(["cmake", "--build", str(build), "-j", JOBS, "--target", *targets],
                         BUILD_TIMEOUT)
     if code != 0:
@@ -639,7 +639,7 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
         report = build / "golden-report"
         code, out = run(["bash", str(project / "tests/golden/run_golden.sh"),
                          str(build / f"rt_ch{n}"), info["scene"], str(project / "golden"),
-                         str(report), str(build / "tests" / "rb_imgdiff"),
+                         str(report),
                          "--report-name=check", "--statistical"], 600, cwd=project)
         name = Path(info["scene"]).stem
         m = re.search(r"RMSE ([0-9.eE+-]+)", out)
@@ -670,7 +670,7 @@ def table(result: dict) -> str:
         elif g["status"] == "fail":
             what = (g.get("output", "").split("\n")[0].split(": ", 1)[-1] or "the render failed")
         elif "the same estimate" in g.get("output", ""):
-            # Not raybook's bits, but statistically its estimate (tests/golden/block_stats.h):
+            # Not raybook's bits, but statistically its estimate (src/app/block_stats.h):
             # a correct solution that draws other random numbers.
             what = (f"golden/{g.get('scene', '')}.png: other random numbers, the same "
                     "estimate (block means within their spread)")

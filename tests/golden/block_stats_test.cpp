@@ -3,7 +3,7 @@
 /// smooth picture plus independent Gaussian noise per pixel, stored as 8-bit PNG values. The
 /// check must accept a render that drew other random numbers, at its stated false-alarm rate,
 /// and one that is somewhat noisier, and must reject a small bias, global or local.
-#include "block_stats.h"
+#include "app/block_stats.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <vector>
 
-#include "block_stats.h"
+#include "app/block_stats.h"
 
 int main(int argc, char** argv) {
     if (argc < 6) {

@@ -14,11 +14,13 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
-#include "image_compare.h"
+#include "app/compare.h"
+#include "app/image_compare.h"
 
 using namespace rb::golden;
 using Catch::Matchers::Contains;
@@ -257,5 +259,65 @@ SCENARIO("a thresholds file is read strictly", "[golden]") {
             REQUIRE_THROWS_WITH(parse("max_fraction 2\n"), Contains("max_fraction"));
             REQUIRE_THROWS_WITH(parse("seed -1\n"), Contains("seed"));
         }
+    }
+}
+
+SCENARIO("./rt --compare prints RMSE, PSNR, the largest difference and the pixels over one level",
+         "[golden]") {
+    GIVEN("a black 10x10 image, and a copy with one white pixel and one channel one level up") {
+        const auto dir =
+            std::filesystem::temp_directory_path() / ("rb_compare_" + std::to_string(::getpid()));
+        std::filesystem::create_directories(dir);
+        const Image black = Image::filled(10, 10, 0, 0, 0);
+        Image other = black;
+        for (int c = 0; c < 3; ++c) other.at(3, 4, c) = 1.0f;
+        other.at(7, 1, 2) = 1.0f / 255;
+        save_png(dir / "a.png", black);
+        save_png(dir / "b.png", other);
+        const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();
+        // Source: the definitions. Squared differences: 3 channels of 1, one of (1/255)², over
+        // 300 channel values; PSNR = 20 log10(1 / RMSE) for values in [0, 1]. Only the white
+        // pixel is over one level: 1 of 100.
+        const double rmse = std::sqrt((3.0 + 1.0 / (255.0 * 255.0)) / 300.0);
+        char expected[160];
+        std::snprintf(expected, sizeof expected, "RMSE      %.6g", rmse);
+        char psnr[64];
+        std::snprintf(psnr, sizeof psnr, "PSNR      %.2f dB", 20.0 * std::log10(1.0 / rmse));
+        WHEN("they are compared with the default threshold, 0") {
+            std::ostringstream out, err;
+            const int code =
+                rb::compareCommand({a, b, "--diff", (dir / "d.png").string()}, out, err);
+            THEN("it prints the closed-form numbers, writes the difference and exits 1") {
+                CHECK_THAT(out.str(), Contains(expected));
+                CHECK_THAT(out.str(), Contains(psnr));
+                CHECK_THAT(out.str(), Contains("largest   1 (255 of 255 levels)"));
+                CHECK_THAT(out.str(), Contains("over one level  1% of pixels (1 of 100)"));
+                // Magenta (1, 0, 1) marks the pixel over one level; |difference| x 8 alone
+                // would be white there.
+                const Image diff = load_png(dir / "d.png");
+                CHECK((diff.at(3, 4, 0) == 1.0f && diff.at(3, 4, 1) == 0.0f &&
+                       diff.at(3, 4, 2) == 1.0f));
+                CHECK(code == 1);
+            }
+        }
+        WHEN("the threshold is above that RMSE, or the image is compared with itself") {
+            std::ostringstream out, err;
+            THEN("it exits 0") {
+                CHECK(rb::compareCommand({a, b, "--threshold", "0.11"}, out, err) == 0);
+                CHECK(rb::compareCommand({a, a}, out, err) == 0);
+            }
+        }
+        WHEN("an argument is missing or an image cannot be read") {
+            std::ostringstream out, err;
+            THEN("it exits 1 with a message naming what is wrong") {
+                CHECK(rb::compareCommand({a}, out, err) == 1);
+                CHECK(rb::compareCommand({a, (dir / "none.png").string()}, out, err) == 1);
+                CHECK(rb::compareCommand({a, b, "--threshold", "-1"}, out, err) == 1);
+                CHECK_THAT(err.str(), Contains("expected two images"));
+                CHECK_THAT(err.str(), Contains("none.png"));
+                CHECK_THAT(err.str(), Contains("--threshold"));
+            }
+        }
+        std::filesystem::remove_all(dir);
     }
 }

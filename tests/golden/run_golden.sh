@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # run_golden.sh: render one scene and compare it with its golden image (or update the golden).
 #
-# usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR IMGDIFF [--update]
+# usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR [--update]
 #                      [--statistical] [--update-stats=N]
 #                      [--report-name=LABEL] [rt args...]
 #
@@ -11,7 +11,8 @@
 #   render    RT_BINARY --quiet --features=all --size WxH --seed S --output OUT_DIR/NAME.png
 #             <args from NAME.txt> <rt args...> SCENE, run from the repository root (the parent
 #             of GOLDEN_DIR), so SCENE and the paths inside it are relative to the repository
-#   compare   IMGDIFF against GOLDEN_DIR/NAME.png; its report goes to OUT_DIR
+#   compare   RT_BINARY --compare against GOLDEN_DIR/NAME.png (src/app/compare.cpp); its
+#             report goes to OUT_DIR
 #   update    with --update, the render is copied to GOLDEN_DIR/NAME.png instead
 #   statistical  with --statistical and a GOLDEN_DIR/NAME.stats, a render that is not the
 #             golden's bits passes when its block means are statistically the reference's
@@ -22,11 +23,12 @@
 #             verdict line, so two tests of one scene (say two chapter binaries) can run in
 #             parallel without overwriting each other's files
 #
-# Prints one line. Exit status: 0 pass (or updated), 1 fail, 2 usage or missing input.
+# Prints one line. Exit status: 0 pass (or updated), 1 fail (or unreadable input), 2 usage or
+# missing thresholds.
 set -euo pipefail
 
 usage() {
-    echo "usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR IMGDIFF [--update]" \
+    echo "usage: run_golden.sh RT_BINARY SCENE.lua GOLDEN_DIR OUT_DIR [--update]" \
         "[--report-name=LABEL] [rt args...]" >&2
     exit 2
 }
@@ -39,15 +41,14 @@ absolute() {
     esac
 }
 
-# Parse the arguments; --update and --report-name may appear anywhere after the five positional
+# Parse the arguments; --update and --report-name may appear anywhere after the four positional
 # ones; everything else goes to rt
-[[ $# -ge 5 ]] || usage
+[[ $# -ge 4 ]] || usage
 rt=$(absolute "$1")
 scene=$2
 golden_dir=$(absolute "$3")
 out_dir=$(absolute "$4")
-imgdiff=$(absolute "$5")
-shift 5
+shift 4
 update=0
 label=
 statistical=0
@@ -87,7 +88,7 @@ if [[ ! -f $thresholds ]]; then
     thresholds_source=/dev/null # render with the defaults below
 fi
 
-# Read size, seed and args (the C++ parser in rb_imgdiff validates the whole file)
+# Read size, seed and args (the C++ parser of rt --compare validates the whole file)
 size=192x144
 seed=1
 args_line=
@@ -125,7 +126,7 @@ if [[ ! -f $render_png ]]; then
 fi
 
 # --update-stats=N: the reference statistics of a Monte Carlo golden, from N renders with seeds
-# 1 to N (rb_blockstats, next to rb_imgdiff); --statistical checks use them
+# 1 to N (rb_blockstats, in the build's tests folder); --statistical checks use them
 if [[ $stats_renders -gt 0 ]]; then
     renders=()
     for ((s = 1; s <= stats_renders; s++)); do
@@ -136,7 +137,7 @@ if [[ $stats_renders -gt 0 ]]; then
         ) >/dev/null
         renders+=("$out_dir/$label-seed$s.png")
     done
-    "$(dirname "$imgdiff")/rb_blockstats" "$golden_dir/$name.stats" "${renders[@]}"
+    "$(dirname "$rt")/tests/rb_blockstats" "$golden_dir/$name.stats" "${renders[@]}"
     rm -f "${renders[@]}"
     echo "$name: block statistics of $stats_renders renders written to $golden_dir/$name.stats"
     exit 0
@@ -147,7 +148,7 @@ if [[ $update -eq 1 ]]; then
     mkdir -p "$golden_dir"
     if [[ $create_thresholds -eq 1 ]]; then
         cat >"$thresholds" <<'EOF'
-# Golden-image settings and thresholds (read by tests/golden/run_golden.sh and rb_imgdiff).
+# Golden-image settings and thresholds (read by tests/golden/run_golden.sh and rt --compare).
 # About one 8-bit level (1/255 = 0.00392), for a deterministic render: loosen them only where
 # a Monte Carlo estimate needs it, and say why here.
 size 192x144
@@ -171,6 +172,6 @@ if [[ $statistical -eq 1 && -f $golden_dir/$name.stats ]]; then
     stats_args=(--stats "$golden_dir/$name.stats")
 fi
 status=0
-"$imgdiff" --expected "$golden_png" --actual "$render_png" --thresholds "$thresholds" \
+"$rt" --compare "$golden_png" "$render_png" --thresholds "$thresholds" \
     --name "$label" --report-dir "$out_dir" ${stats_args[@]+"${stats_args[@]}"} || status=$?
 exit "$status"

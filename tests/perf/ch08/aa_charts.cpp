@@ -25,7 +25,7 @@
 #include "chart_helpers.h"
 #include "core/image.h"
 #include "glossy/glossy.h"
-#include "image_compare.h"
+#include "app/image_compare.h"
 #include "phong/phong.h"
 #include "reflection/reflection.h"
 #include "refraction/refraction.h"

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "ch09_sphere_error.h"
-#include "image_compare.h"
+#include "app/image_compare.h"
 
 namespace {
 
