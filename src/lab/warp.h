@@ -58,9 +58,11 @@ struct Warp {
 };
 
 /// The lab's coordinates of unit direction w about unit `axis`: (φ in [0, 2π), cos θ). The
-/// frame is the lab's own (Duff et al.'s basis), independent of any sampler's.
+/// frame is the lab's own (Duff et al.'s basis), independent of any sampler's. A direction
+/// that is not of unit length (a sampler's bug) gets NaN: it counts as outside the domain.
 /// Source: T. Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017.
 inline Vec2 directionCoordinates(const Vec3& w, const Vec3& axis) {
+    if (!(std::abs(glm::dot(w, w) - 1.0) < 1e-9)) return Vec2(std::nan(""));
     const double sign = std::copysign(1.0, axis.z);
     const double a = -1.0 / (sign + axis.z);
     const double b = axis.x * axis.y * a;

@@ -220,6 +220,9 @@ void report(const WarpRun& run, double alpha, std::ostream& out) {
         << " bins expecting < 5 pooled), p = " << number(run.test.pValue, 3)
         << "\n  outside the domain: " << run.outsideObserved << " observed, "
         << number(run.outsideExpected, 4) << " expected\n  " << verdict(run, alpha) << "\n";
+    if (run.samples > 0 && std::isinf(run.test.statistic))
+        out << "  Points fell where the pdf is 0 (or off the domain, NaN, or not unit directions):"
+               " the sampler leaves the support its pdf states.\n";
     if (!passed(run, alpha))
         out << "  The difference panel shows where: red bins got too many points, blue too few."
             << (run.exercise.empty() ? "" : " Check exercise " + run.exercise + "'s code.") << "\n";
@@ -543,7 +546,7 @@ int warpTestCommand(const std::vector<std::string>& args, const std::vector<Feat
         out << "  figure: " << output << "\n";
         return passed(run, kAlpha) ? 0 : 1;
     } catch (const InputError& e) {
-        err << "rt: " << e.what() << "\n";
+        err << "rt: error: " << e.what() << "\n";
         return 1;
     }
 }
