@@ -514,7 +514,8 @@ def solve(args) -> int:
 # ---- Checking -------------------------------------------------------------------------------
 
 def run(command, timeout, cwd=None, env=None) -> tuple[int, str]:
-    """Run a command; return its exit code (124 on timeout) and its output."""
+    """Run a command; return its exit code (124 on timeout, -1 when it cannot start) and its
+    output."""
     # A make started from inside another make must not inherit its job server.
     env = {k: v for k, v in (env or os.environ).items()
            if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
@@ -525,6 +526,8 @@ def run(command, timeout, cwd=None, env=None) -> tuple[int, str]:
     except subprocess.TimeoutExpired as e:
         out = e.stdout.decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
         return 124, out + f"\n(timed out after {timeout} s)"
+    except OSError as e:  # the program is missing: its build failed, which is reported there
+        return -1, f"cannot run {command[0]}: {e.strerror}"
 
 
 def catch_escape(name: str) -> str:
