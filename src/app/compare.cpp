@@ -1,8 +1,8 @@
 /// \file
-/// ./rt --compare: compares two images and prints RMSE, PSNR, the largest difference and the
-/// share of pixels more than one 8-bit level apart; with a golden image's thresholds file it
-/// is the golden check itself (the golden tests, make check and make grade run it), and on
-/// failure writes an HTML report (expected, actual and magnified difference side by side).
+/// The command `rt --compare` compares two images and prints RMSE, PSNR, the largest difference and
+/// the share of pixels more than one 8-bit level apart; with a golden image's thresholds file it is
+/// the golden check itself (the golden tests, make check and make grade run it), and on failure
+/// writes an HTML report (expected, actual and magnified difference side by side).
 #include "app/compare.h"
 
 #include <fcntl.h>

@@ -1,5 +1,6 @@
 /// \file
-/// ./rt --compare: two images compared with numbers, and the golden check (src/app/compare.cpp).
+/// The command `rt --compare`: two images compared with numbers, and the golden check
+/// (src/app/compare.cpp).
 #pragma once
 
 #include <iosfwd>

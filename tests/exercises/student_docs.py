@@ -18,6 +18,9 @@ Commands:
         source (ROOT): lines of at least 20 characters that occur in no file of the stubbed
         tree's src/, in no test and on no chapter page. tests/student_docs.sh requires that
         none of them reach the built pages.
+    student_docs.py pasted ROOT
+        list the solution lines of any chapter's regions that a chapter page writes out as
+        text instead of a \\snippet (CTest pasted_solutions); exit 1 when there is one.
 
 assignment.py's export uses export_docs() to give each assignment its own docs/Doxyfile,
 main page and the figures of chapters 1..N: the export's sources already hold chapter N's
@@ -122,6 +125,31 @@ def solution_lines(root: Path, chapter: int) -> list[str]:
     return lines
 
 
+def pasted_solutions(root: Path) -> list[str]:
+    """Lines of an exercise region's solution (15 characters or more, not a comment) that a
+    chapter page writes out as text, not through a \\snippet: the student edition stubs
+    snippets, but text on a page reaches every student as it is."""
+    pages = {p: {" ".join(l.split()) for l in p.read_text().split("\n")}
+             for p in sorted((root / "chapters").glob("*.md"))}
+    found = []
+    for r in rg.find_regions(root):
+        body = r.path.read_text().split("\n")[r.begin + (3 if r.blank is not None else 2):r.end]
+        for line in (" ".join(l.split()) for l in body):
+            if len(line) < 15 or line.startswith("//"):
+                continue
+            found += [f"{page.relative_to(root)}: exercise {r.name}'s solution line: {line}"
+                      for page, lines in pages.items() if line in lines]
+    return found
+
+
+def pasted(args) -> int:
+    found = pasted_solutions(Path(args.root).resolve())
+    for f in found:
+        print(f"student_docs: {f} (show it with \\snippet FILE {{region}} instead)")
+    print(f"student_docs: {len(found)} solution lines pasted into chapter pages")
+    return 1 if found else 0
+
+
 def export_docs(root: Path, n: int, pages: dict[str, str]) -> dict[str, bytes]:
     """The docs of an assignment of chapters 1..n: its Doxyfile (raybook's, with the inputs an
     export has), a main page listing chapters 1..n, the stylesheet and the chapters' figures
@@ -195,6 +223,9 @@ def main() -> int:
     s.add_argument("chapter", type=int)
     s.set_defaults(func=lambda a: print("\n".join(solution_lines(Path(a.root).resolve(),
                                                                   a.chapter))) or 0)
+    p = sub.add_parser("pasted")
+    p.add_argument("root")
+    p.set_defaults(func=pasted)
     args = parser.parse_args()
     return args.func(args)
 
