@@ -10,13 +10,18 @@
 /// only on (seed, pixel, sample, dimension) and are uniform; that the image is bit-identical
 /// for any thread count; and that PNGs are written whole or not at all. Every expected value
 /// below is worked out by hand or from a closed form, and says where it comes from.
+#include <omp.h>
 #include <stb_image.h>
 
 #include <algorithm>
+#include <atomic>
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
+#include <thread>
 #include <vector>
 
 #include "core/aabb.h"
@@ -98,7 +103,8 @@ struct CodeScene {
         world.build(rbtest::coreFeatures());
     }
     rb::Image render(int threads, int spp, std::uint64_t seed, int width = 64, int height = 48,
-                     std::vector<int>* tileThreads = nullptr) const {
+                     std::vector<int>* tileThreads = nullptr,
+                     std::function<bool()> shouldStop = {}) const {
         const rb::PinholeCamera camera(
             rb::CameraSpec{Vec3(0, 1, 6), Vec3(0, -0.2, -1), Vec3(0, 1, 0), 45.0}, width, height);
         rb::RenderSettings settings;
@@ -106,6 +112,7 @@ struct CodeScene {
         settings.samplesPerPixel = spp;
         settings.seed = seed;
         settings.tileThreads = tileThreads;
+        settings.shouldStop = std::move(shouldStop);
         rb::RayCounters counters;
         return rb::render(world.scene, world.pipeline, camera, width, height, settings, counters);
     }
@@ -584,21 +591,25 @@ SCENARIO("both threads render part of the image and it still matches one thread 
         std::vector<int> oneThreads;
         const rb::Image one = code.render(1, 4, 11, 256, 192, &oneThreads);
         WHEN("it is rendered with 2 threads, recording which thread rendered each tile") {
-            // A run in which one thread takes every tile proves nothing, so render again (at
-            // most 10 times) until both threads have taken tiles; each tile costs ~0.1 ms, far
-            // longer than a thread needs to start, so the first run almost always does.
+            // A run in which one thread takes every tile proves nothing, and on a busy machine
+            // thread 0 can finish a fast render before thread 1 starts. So each thread, before
+            // its first tile, waits (at most 2 s) through the render's shouldStop hook until
+            // the other has asked for a tile too: then each renders at least that one. The
+            // hook only waits; it stops nothing.
+            std::atomic<int> asked{0};  // bit t: thread t has asked for a tile
+            const auto start = std::chrono::steady_clock::now();
+            const auto waitForBoth = [&] {
+                asked |= 1 << omp_get_thread_num();
+                while (asked != 3 &&
+                       std::chrono::steady_clock::now() - start < std::chrono::seconds(2))
+                    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                return false;
+            };
             std::vector<int> tileThreads;
-            rb::Image two(1, 1);
-            int runs = 0;
-            bool both = false;
-            while (!both && runs < 10) {
-                two = code.render(2, 4, 11, 256, 192, &tileThreads);
-                ++runs;
-                both = std::count(tileThreads.begin(), tileThreads.end(), 0) > 0 &&
-                       std::count(tileThreads.begin(), tileThreads.end(), 1) > 0;
-            }
+            const rb::Image two = code.render(2, 4, 11, 256, 192, &tileThreads, waitForBoth);
+            const bool both = std::count(tileThreads.begin(), tileThreads.end(), 0) > 0 &&
+                              std::count(tileThreads.begin(), tileThreads.end(), 1) > 0;
             THEN("every tile was rendered once, by thread 0 or 1, and each thread took some") {
-                INFO("runs " << runs);
                 REQUIRE(tileThreads.size() == 12u * 16u);
                 REQUIRE(std::all_of(tileThreads.begin(), tileThreads.end(),
                                     [](int t) { return t == 0 || t == 1; }));
@@ -718,7 +729,8 @@ SCENARIO("an image must have a positive size that the PNG encoder can hold", "[c
         }
         THEN("the largest accepted image's filtered PNG rows, (3w + 1) h bytes, fit in an int") {
             // Source: stb_image_write sizes its filter buffer as (x * n + 1) * y in int.
-            const long long worst = (3LL * rb::kMaxDimension + 1) * (rb::kMaxPixels / rb::kMaxDimension);
+            const long long worst =
+                (3LL * rb::kMaxDimension + 1) * (rb::kMaxPixels / rb::kMaxDimension);
             CHECK(worst <= std::numeric_limits<int>::max());
         }
     }
