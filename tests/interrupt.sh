@@ -77,42 +77,13 @@ keep=
 # The partial image is a whole PNG of the scene's full size, and it holds exactly the tiles that
 # stderr says were finished: that many 16 x 16 tiles have colour, the rest are black.
 tiles=$(grep -o 'wrote the [0-9]* of' "$OUT/partial-after-sigint/stderr" | grep -o '[0-9]*')
-if python3 - "$OUT/partial-after-sigint/out.partial.png" 2000x2000 "${tiles:-missing}" <<'PY'
-import struct, sys, zlib
-data = open(sys.argv[1], "rb").read()
-assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
-width, height = struct.unpack(">II", data[16:24])
+if PYTHONPATH="$ROOT/tests" python3 - "$OUT/partial-after-sigint/out.partial.png" 2000x2000 "${tiles:-missing}" <<'PY'
+import sys
+from png_read import read_png
+# A truncated file fails here (tests/png_read.py inflates every IDAT chunk).
+width, height, channels, rows = read_png(sys.argv[1])
 assert f"{width}x{height}" == sys.argv[2], f"size {width}x{height}, expected {sys.argv[2]}"
-# Concatenate the IDAT chunks and inflate them: a truncated file fails here.
-pos, idat = 8, b""
-while pos < len(data):
-    length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-    if kind == b"IDAT":
-        idat += data[pos + 8:pos + 8 + length]
-    pos += 12 + length
-raw = zlib.decompress(idat)
-stride = 3 * width
-assert len(raw) == (stride + 1) * height, "wrong amount of pixel data"
-# Undo the PNG row filters (Source: the PNG specification, section 9) to get the pixels.
-rows, prev = [], bytearray(stride)
-for y in range(height):
-    start = y * (stride + 1)
-    kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-    for i in range(stride):
-        a = line[i - 3] if i >= 3 else 0
-        b, c = prev[i], (prev[i - 3] if i >= 3 else 0)
-        if kind == 1:
-            line[i] = (line[i] + a) & 255
-        elif kind == 2:
-            line[i] = (line[i] + b) & 255
-        elif kind == 3:
-            line[i] = (line[i] + (a + b) // 2) & 255
-        elif kind == 4:
-            p = a + b - c
-            pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-            line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-    rows.append(line)
-    prev = line
+assert channels == 3, f"{channels} channels, expected RGB"
 lit = sum(1 for ty in range(0, height, 16) for tx in range(0, width, 16)
           if any(rows[y][3 * tx:3 * min(tx + 16, width)].strip(b"\0")
                  for y in range(ty, min(ty + 16, height))))

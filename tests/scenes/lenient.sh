@@ -24,36 +24,13 @@ source "$(dirname "$0")/../check_helpers.sh"
 rt_and_out_dir "$@"
 
 # Check regions of a PNG: each argument is "KIND x0 y0 x1 y1" (KIND magenta, green or lit);
-# prints one line per argument, "ok" or what the region held instead. Python's standard
-# library only (zlib), so no imaging package is needed.
+# prints one line per argument, "ok" or what the region held instead (tests/png_read.py).
 pixels() {
-    python3 - "$@" <<'PY'
-import struct, sys, zlib
-data = open(sys.argv[1], 'rb').read()
-pos, idat = 8, b''
-while pos < len(data):
-    n, kind = struct.unpack('>I4s', data[pos:pos + 8])
-    if kind == b'IHDR':
-        w, h, depth, ctype = struct.unpack('>IIBB', data[pos + 8:pos + 18])
-    elif kind == b'IDAT':
-        idat += data[pos + 8:pos + 8 + n]
-    pos += 12 + n
-ch = {2: 3, 6: 4}[ctype]
-raw, stride, prev, rows = zlib.decompress(idat), w * ch, bytearray(w * ch), []
-for y in range(h):
-    f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-    for i in range(stride):
-        a = line[i - ch] if i >= ch else 0
-        b, c = prev[i], (prev[i - ch] if i >= ch else 0)
-        if f == 1: line[i] = (line[i] + a) & 255
-        elif f == 2: line[i] = (line[i] + b) & 255
-        elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-        elif f == 4:
-            p = a + b - c
-            pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-            line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-    prev = line
-    rows.append([tuple(line[x * ch:x * ch + 3]) for x in range(w)])
+    PYTHONPATH="$ROOT/tests" python3 - "$@" <<'PY'
+import sys
+from png_read import read_png
+w, h, ch, lines = read_png(sys.argv[1])
+rows = [[tuple(line[x * ch:x * ch + 3]) for x in range(w)] for line in lines]
 tests = {'magenta': lambda r, g, b: r > 1.5 * g + 20 and b > 1.5 * g + 20,
          'green': lambda r, g, b: g > 1.5 * r + 20 and g > 1.5 * b + 20,
          'lit': lambda r, g, b: max(r, g, b) > 100}

@@ -37,60 +37,28 @@ SIZE=${SCENES_SIZE:-160x120}
 TIMEOUT=${SCENES_TIMEOUT:-60}
 
 # Check a PNG: prints "WxH max mean" (8-bit values), then the maximum inside each region
-# given as "x0 y0 x1 y1" in fractions of the image size, or an error. Python's standard
-# library only (zlib), so no imaging package is needed.
+# given as "x0 y0 x1 y1" in fractions of the image size, or an error (tests/png_read.py reads
+# it with Python's standard library only).
 png_info() {
-    python3 - "$@" <<'PY'
-import struct, sys, zlib
+    PYTHONPATH="$ROOT/tests" python3 - "$@" <<'PY'
+import sys
+from png_read import read_png
 path = sys.argv[1]
 regions = [[float(v) for v in r.split()] for r in sys.argv[2:]]
 try:
-    data = open(path, 'rb').read()
-    if data[:8] != b'\x89PNG\r\n\x1a\n':
-        raise ValueError('not a PNG file')
-    pos, idat, ihdr = 8, b'', None
-    while pos < len(data):
-        n, kind = struct.unpack('>I4s', data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + n]
-        if kind == b'IHDR':
-            ihdr = struct.unpack('>IIBBBBB', body)
-        elif kind == b'IDAT':
-            idat += body
-        pos += 12 + n
-    w, h, depth, ctype, _, _, interlace = ihdr
-    channels = {0: 1, 2: 3, 4: 2, 6: 4}[ctype]
-    if depth != 8 or interlace:
-        raise ValueError('unexpected PNG format (depth %d, interlace %d)' % (depth, interlace))
-    raw = zlib.decompress(idat)
-    stride = w * channels
-    prev = bytearray(stride)
+    w, h, channels, rows = read_png(path)
     total, peak = 0, 0
     boxes = [(int(r[0] * w), int(r[1] * h), int(r[2] * w), int(r[3] * h)) for r in regions]
     region_peak = [0] * len(boxes)
-    for y in range(h):
-        f = raw[y * (stride + 1)]
-        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b = prev[i]
-            c = prev[i - channels] if i >= channels else 0
-            if f == 1: line[i] = (line[i] + a) & 255
-            elif f == 2: line[i] = (line[i] + b) & 255
-            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                pr = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
-                line[i] = (line[i] + pr) & 255
-        prev = line
+    n = min(channels, 3)
+    for y, line in enumerate(rows):
         colour = line if channels < 3 else bytes(v for i, v in enumerate(line) if i % channels < 3)
         total += sum(colour)
         peak = max(peak, max(colour))
-        n = min(channels, 3)
         for k, (x0, y0, x1, y1) in enumerate(boxes):
             if y0 <= y < y1 and x1 > x0:
                 region_peak[k] = max(region_peak[k], max(colour[x0 * n:x1 * n]))
-    print(' '.join(['%dx%d %d %.2f' % (w, h, peak, total / (w * h * min(channels, 3)))] +
+    print(' '.join(['%dx%d %d %.2f' % (w, h, peak, total / (w * h * n))] +
                    [str(p) for p in region_peak]))
 except Exception as e:
     print('error: %s' % e)
