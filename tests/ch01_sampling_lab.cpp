@@ -1,5 +1,6 @@
 /// \file
-/// Tests of the sampling lab (src/lab/, `./rt --warptest`), which every chapter binary holds.
+/// Tests of the sampling lab (src/lab/, rt's `--warptest` option), which every chapter binary
+/// holds.
 ///
 /// The lab claims to tell a sampler that draws the density its code states from one that does
 /// not: it bins the points, integrates the stated pdf over every bin, and runs the chi-square

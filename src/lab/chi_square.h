@@ -1,6 +1,6 @@
 /// \file
 /// Pearson's chi-square goodness-of-fit test, the one copy that the chapter tests and the
-/// sampling lab (`./rt --warptest`) share: pooling of cells expecting fewer than 5 samples,
+/// sampling lab (rt's `--warptest` option) share: pooling of cells expecting fewer than 5 samples,
 /// the statistic, its p-value through the regularised upper incomplete gamma function, and
 /// Šidák's correction for several tests at once.
 ///

@@ -1,5 +1,5 @@
 /// \file
-/// A sampler as the sampling lab (`./rt --warptest NAME`) sees it: how to draw its points, on
+/// A sampler as the sampling lab (rt's `--warptest` option) sees it: how to draw its points, on
 /// which 2-D domain to bin them, and the density the chapter's code states on that domain.
 /// Each chapter that samples lists its samplers as Warp records (its `*_warps.cpp`), and its
 /// Feature hands them to the lab, so a chapter binary offers the samplers of its chapters only.

@@ -532,10 +532,16 @@ int warpTestCommand(const std::vector<std::string>& args, const std::vector<Feat
         // One sampler.
         const auto it = std::find_if(warps.begin(), warps.end(),
                                      [&](const Warp& w) { return w.name == args[0]; });
-        if (it == warps.end())
+        if (it == warps.end()) {
+            std::string names;
+            for (const Warp& w : warps)
+                names +=
+                    (names.empty() ? "" : ", ") + w.name + " (" + std::to_string(w.chapter) + ")";
             throw InputError("--warptest: no sampler named '" + args[0] +
-                             "' in this build; the samplers are:\n" + warpList(warps) +
-                             "(./rt --warptest list shows them; later chapters add more)");
+                             "' in this build; the samplers (chapter) are: " +
+                             (names.empty() ? "none before chapter 6" : names) +
+                             ". ./rt --warptest list shows their parameters");
+        }
         const WarpRun run = runWarp(*it, values, settings);
         report(run, kAlpha, out);
         if (output.empty()) output = "warptest-" + run.name + ".svg";

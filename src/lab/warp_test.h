@@ -1,7 +1,7 @@
 /// \file
 /// The sampling lab: draw a sampler's points, bin them on its domain, integrate the expected
 /// count of every bin from the pdf the code states, test the two with chi-square, and draw
-/// both and their difference (`./rt --warptest NAME`, in the spirit of Nori's warptest).
+/// both and their difference (rt's `--warptest` option, in the spirit of Nori's warptest).
 #pragma once
 
 #include <cstdint>
@@ -55,7 +55,7 @@ double integrate2D(const std::function<double(const Vec2&)>& f, double x0, doubl
 /// standardised difference, and the verdict at level alpha. Throws InputError if it cannot.
 void writeWarpFigure(const WarpRun& run, double alpha, const std::string& path);
 
-/// ./rt --warptest ARGS...: the lab's command line (args exclude "--warptest"). Returns the
+/// The lab's command line, rt's `--warptest` option (args: what follows it). Returns the
 /// exit code: 0 when every sampler run passes, 1 when one fails or the input is bad.
 int warpTestCommand(const std::vector<std::string>& args, const std::vector<Feature>& built,
                     std::ostream& out, std::ostream& err);

@@ -336,6 +336,14 @@ def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
             f"`build/tests/raybook_check \"{exercises[0]['tag'] if exercises else '[exN.1]'}\"` "
             "for every test that needs that exercise) and counts in the row of the last of "
             "them."]
+    # The sampling lab's commands the chapter's Exercises section names (./rt --warptest NAME).
+    exercises_text = re.search(r"\n## Exercises \{#[\w-]+\}\n(.*?)(\n## |\Z)", text, re.S)
+    lab = list(dict.fromkeys(re.findall(r"`\./rt --warptest ([\w-]+)`",
+                                        exercises_text.group(1) if exercises_text else "")))
+    lab_rows = [f"| `./rt --warptest {name}` | after `make chapter{n}`: draws your sampler's "
+                f"points against the pdf your code states, prints the chi-square statistic, "
+                f"degrees of freedom, p-value and PASS or FAIL, and writes "
+                f"`warptest-{name}.svg` (observed, expected, their difference) |" for name in lab]
     out += ["",
             "## How to check your work", "",
             "| command | what it does |", "|---|---|",
@@ -346,6 +354,7 @@ def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
             f"| `make chapter{n}` | builds `./rt` from chapters 1 to {n} |",
             f"| `./rt --features=all {scene.relative_to(root) if scene else 'scenes/'}` | "
             f"renders the chapter's scene |",
+            *lab_rows,
             f"| `build/tests/raybook_check \"[ex{n}.1]\"` | after `make check`, runs the "
             f"tests that need exercise {n}.1 with Catch2's full messages "
             f"(`check` names the spec of a failing row) |",

@@ -55,6 +55,10 @@ for ext in svg png; do
 done
 echo "charts: wrote $charts/ch03-bvh-scaling.svg and .png"
 
+# The sampling lab's figures (issue 25): every sampler of the book drawn against the pdf its
+# code states (./rt --warptest all), one SVG per sampler, docs/charts/chNN-lab-NAME.svg.
+"$build/rt_all" --warptest all --output-dir "$charts"
+
 # The chapters' own charts.
 for script in "$root"/tests/perf/ch[0-9][0-9]/charts.sh; do
   [ -e "$script" ] || continue
