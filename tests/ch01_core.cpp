@@ -10,18 +10,14 @@
 /// only on (seed, pixel, sample, dimension) and are uniform; that the image is bit-identical
 /// for any thread count; and that PNGs are written whole or not at all. Every expected value
 /// below is worked out by hand or from a closed form, and says where it comes from.
-#include <omp.h>
 #include <stb_image.h>
 
 #include <algorithm>
-#include <atomic>
 #include <catch2/catch.hpp>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <limits>
-#include <thread>
 #include <vector>
 
 #include "core/aabb.h"
@@ -591,22 +587,10 @@ SCENARIO("both threads render part of the image and it still matches one thread 
         std::vector<int> oneThreads;
         const rb::Image one = code.render(1, 4, 11, 256, 192, &oneThreads);
         WHEN("it is rendered with 2 threads, recording which thread rendered each tile") {
-            // A run in which one thread takes every tile proves nothing, and on a busy machine
-            // thread 0 can finish a fast render before thread 1 starts. So each thread, before
-            // its first tile, waits (at most 2 s) through the render's shouldStop hook until
-            // the other has asked for a tile too: then each renders at least that one. The
-            // hook only waits; it stops nothing.
-            std::atomic<int> asked{0};  // bit t: thread t has asked for a tile
-            const auto start = std::chrono::steady_clock::now();
-            const auto waitForBoth = [&] {
-                asked |= 1 << omp_get_thread_num();
-                while (asked != 3 &&
-                       std::chrono::steady_clock::now() - start < std::chrono::seconds(2))
-                    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-                return false;
-            };
+            // A run in which one thread takes every tile proves nothing (test_helpers.h).
             std::vector<int> tileThreads;
-            const rb::Image two = code.render(2, 4, 11, 256, 192, &tileThreads, waitForBoth);
+            const rb::Image two =
+                code.render(2, 4, 11, 256, 192, &tileThreads, rbtest::bothThreadsTakeTiles());
             const bool both = std::count(tileThreads.begin(), tileThreads.end(), 0) > 0 &&
                               std::count(tileThreads.begin(), tileThreads.end(), 1) > 0;
             THEN("every tile was rendered once, by thread 0 or 1, and each thread took some") {

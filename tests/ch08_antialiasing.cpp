@@ -15,15 +15,11 @@
 /// are bit-identical on 1 and 2 threads, seed 001's aa = 1 is its "render at double size and
 /// average four pixels", and a scene that asks for no antialiasing renders exactly as in a
 /// chapter-7 build.
-#include <omp.h>
 
-#include <atomic>
 #include <catch2/catch.hpp>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "adaptive_aa/adaptive_aa.h"
@@ -394,24 +390,13 @@ SCENARIO("antialiased images are the same for any thread count and any tile orde
                 rb::RayCounters c1, c2;
                 std::vector<int> tileThreads;
                 const rb::Image one = rbtest::renderAt(*w, 192, 144, {.threads = 1}, c1);
-                // Both threads must take tiles, or the comparison proves nothing; on a busy
-                // machine a render of milliseconds (a blank sampler that returns black, as the
-                // assignments' round trip plants) lets thread 0 take every tile before thread 1
-                // starts, even 50 times in a row. So each thread, before its first tile, waits
-                // (at most 2 s) until the other has asked for a tile too: then each renders at
-                // least that one. The hook only waits: it stops nothing.
-                std::atomic<int> asked{0};  // bit t: thread t has asked for a tile
-                const auto start = std::chrono::steady_clock::now();
-                const auto waitForBoth = [&] {
-                    asked |= 1 << omp_get_thread_num();
-                    while (asked != 3 &&
-                           std::chrono::steady_clock::now() - start < std::chrono::seconds(2))
-                        std::this_thread::sleep_for(std::chrono::milliseconds(1));
-                    return false;
-                };
-                const rb::Image two = rbtest::renderAt(
-                    *w, 192, 144,
-                    {.threads = 2, .tileThreads = &tileThreads, .shouldStop = waitForBoth}, c2);
+                // Both threads must take tiles, or the comparison proves nothing.
+                const rb::Image two =
+                    rbtest::renderAt(*w, 192, 144,
+                                     {.threads = 2,
+                                      .tileThreads = &tileThreads,
+                                      .shouldStop = rbtest::bothThreadsTakeTiles()},
+                                     c2);
                 THEN("the images are bit-identical, and both threads rendered tiles") {
                     CHECK(rbtest::bitIdentical(one, two));
                     CHECK(rbtest::allFiniteNonNegative(one));

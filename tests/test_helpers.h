@@ -6,10 +6,13 @@
 /// "no shadow acne" tests.
 #pragma once
 
+#include <omp.h>
 #include <stdlib.h>
 
 #include <array>
+#include <atomic>
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -17,6 +20,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
@@ -25,6 +29,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -380,6 +385,23 @@ inline rb::Image renderSmall(const rb::World& world, int width = 64, int height 
 }
 
 /// True when two images have the same size and hold exactly the same bits (NaN included).
+/// A shouldStop hook that makes both threads of a 2-thread render take tiles. A test that two
+/// threads give one thread's bits proves nothing when one thread takes every tile, which a
+/// render of milliseconds on a busy machine allows (thread 0 finishes before thread 1 starts,
+/// even 50 times in a row). So each thread, before its first tile, waits (at most 2 s) until
+/// the other has asked for a tile too: then each renders at least that one. The hook only
+/// waits; it stops nothing.
+inline std::function<bool()> bothThreadsTakeTiles() {
+    auto asked = std::make_shared<std::atomic<int>>(0);  // bit t: thread t has asked for a tile
+    const auto start = std::chrono::steady_clock::now();
+    return [asked, start] {
+        *asked |= 1 << omp_get_thread_num();
+        while (*asked != 3 && std::chrono::steady_clock::now() - start < std::chrono::seconds(2))
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return false;
+    };
+}
+
 inline bool bitIdentical(const rb::Image& a, const rb::Image& b) {
     return a.width() == b.width() && a.height() == b.height() &&
            std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
