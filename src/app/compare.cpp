@@ -24,6 +24,8 @@
 #include "app/block_stats.h"
 #include "app/html.h"
 #include "app/image_compare.h"
+#include "core/error.h"
+#include "core/render_context.h"
 
 namespace fs = std::filesystem;
 using namespace rb::golden;
@@ -59,17 +61,10 @@ constexpr const char* kUsage =
     "passes or fails against that file's limits (and, with --stats, statistically), and\n"
     "writes an HTML report of a failure into --report-dir.\n";
 
-/// A number from the command line, or runtime_error naming the option.
-double parse_number(const std::string& option, const std::string& text) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || !std::isfinite(v) || v < 0)
-        throw std::runtime_error(option + ": expected a number >= 0, got '" + text + "'");
+/// --threshold's value: a number >= 0, or InputError naming the option.
+double parse_threshold(const std::string& text) {
+    const double v = rb::parseNumberOption("--threshold", text);
+    if (v < 0) throw rb::InputError("--threshold: expected a number >= 0, got '" + text + "'");
     return v;
 }
 
@@ -96,7 +91,7 @@ Options parse_options(const std::vector<std::string>& args) {
         if (arg == "--diff")
             o.diff = value;
         else if (arg == "--threshold")
-            o.threshold = parse_number(arg, value);
+            o.threshold = parse_threshold(value);
         else if (arg == "--thresholds")
             o.thresholds = value;
         else if (arg == "--name")
