@@ -12,6 +12,7 @@
 /// every tree to check its invariants, and count the triangle tests and the BVH nodes pierced
 /// by rays hitting meshes of 2 048 to 524 288 triangles.
 #include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -23,6 +24,7 @@
 #include "bvh/mesh.h"
 #include "bvh/obj.h"
 #include "bvh/triangle.h"
+#include "bvh/triangle4.h"
 #include "bvh/wide_bvh.h"
 #include "core/aggregate.h"
 #include "core/box.h"
@@ -427,6 +429,116 @@ SCENARIO("a degenerate triangle is never hit", "[ch03][ex3.1]") {
         }
     }
 }
+
+// ---- The float triangle test ------------------------------------------------------------------
+
+/// A pack of four triangles, as the mesh builds it (vertex indices and sources left 0): each
+/// vertex rounded to float, each lane's largest |coordinate| rounded up.
+rb::Triangle4 packOf(const std::array<std::array<Vec3, 3>, 4>& triangles) {
+    rb::Triangle4 pack{};
+    for (int lane = 0; lane < 4; ++lane) {
+        double extent = 0.0;
+        for (int vertex = 0; vertex < 3; ++vertex)
+            for (int axis = 0; axis < 3; ++axis) {
+                const double c = triangles[lane][vertex][axis];
+                pack.p[vertex][axis][lane] = static_cast<float>(c);
+                extent = std::max(extent, std::abs(c));
+            }
+        pack.extent[lane] = rb::roundUpToFloat(extent);
+    }
+    return pack;
+}
+
+// [ch03-float-triangle-bound]
+SCENARIO("the float triangle test decides only what the exact test decides", "[ch03][stability]") {
+    // testTriangle4 runs the watertight test in float with an error bound on every value it
+    // computes (triangle4.h derives them), and decides a lane only when the bound leaves no
+    // doubt: a certain miss is dropped, and a shadow ray stops at a certain hit without the
+    // exact test. If a bound were too small, some lane would be decided the wrong way. These
+    // rays are built to sit where the float values are least accurate: they aim within a hair
+    // of a triangle's edges (barycentrics in [−0.01, 1.01], half of them exactly on an edge);
+    // they start close to the triangle's plane (10⁻¹ to 10⁻⁶ of its size), either far from the
+    // point they hit, so that they graze the triangle and det is small, or close to it, so that
+    // the distance T = U·z₀ + V·z₁ + W·z₂ is a small difference of large terms; and their limit
+    // tMax lies on the exact hit distance or 2⁻³⁰ to 2⁻⁴ of it to either side. Planting a bound
+    // too small, one at a time, makes this test fail: e_T = 0 gives 15 147 wrong misses and
+    // 5 511 wrong hits; E a hundred times too small, 1 311 and 484. The bounds are not tight:
+    // E ten times too small, or e_det = 0, still pass here (the float errors these rays meet
+    // stay 10 to 100 times below the worst case the bounds allow); e_det matters only when all
+    // three edge functions are barely larger than E, a sliver of a triangle seen edge-on.
+    GIVEN("20 000 rays grazing random triangles near (±100, ±100, ±100), with limits near t") {
+        rbtest::Rng rng(2024);
+        int wrongMiss = 0, wrongHit = 0, certainHits = 0, certainMisses = 0, exactHits = 0;
+        const double steps[] = {-0x1p-4, -0x1p-7, -0x1p-10, -0x1p-21, -0x1p-24, -0x1p-30, 0.0,
+                                0x1p-30, 0x1p-24, 0x1p-21,  0x1p-10,  0x1p-7,   0x1p-4};
+        for (int k = 0; k < 20000; ++k) {
+            // Four triangles of size about 1 around a random centre; the ray aims at lane 0.
+            const Vec3 centre(rng.uniform(-100, 100), rng.uniform(-100, 100),
+                              rng.uniform(-100, 100));
+            std::array<std::array<Vec3, 3>, 4> triangles;
+            for (auto& tri : triangles)
+                for (Vec3& v : tri)
+                    v = centre + Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+            const auto& t0 = triangles[0];
+            auto pointAt = [&](double b1, double b2) {
+                return t0[0] + b1 * (t0[1] - t0[0]) + b2 * (t0[2] - t0[0]);
+            };
+            // Aim at a point near the edges. Half the rays start near the plane but far from
+            // the point, and graze the triangle (det is small); half start a short distance h
+            // before the point, in a random direction, as a shadow ray leaving a surface does
+            // (T = h·det is small against its terms).
+            // One ray in two aims exactly at an edge (b₂ = 0), as a ray through the edge two
+            // triangles share does: there the exact edge function is 0, and only the bound E
+            // keeps the float test from deciding on the rounding of its value.
+            const double b1 = rng.uniform(-0.01, 1.01);
+            const double b2 = k % 4 == 1 || k % 4 == 2 ? 0.0 : rng.uniform(-0.01, 1.01 - b1);
+            const Vec3 target = pointAt(b1, b2);
+            const Vec3 n = glm::normalize(glm::cross(t0[1] - t0[0], t0[2] - t0[0]));
+            const double h = std::pow(10.0, -rng.uniform(1.0, 6.0));
+            Vec3 start;
+            if (k % 2 == 0) {
+                start = pointAt(rng.uniform(-1, 2), rng.uniform(-1, 2)) +
+                        (rng.uniform() < 0.5 ? h : -h) * n;
+            } else {
+                start = target - h * rng.unitVector();
+            }
+            const rb::Ray ray{start, target - start};
+            const rb::WatertightRay wray(ray);
+            const rb::FilterRay fray(wray);
+            const rb::Triangle4 pack = packOf(triangles);
+            rb::TriangleHit exact;
+            const bool hits = rb::intersectTriangle(wray, t0[0], t0[1], t0[2], kInf, exact);
+            exactHits += hits;
+            // Limits: unlimited, and a few ulps around the hit distance (or 1 for a miss).
+            const double tRef = hits ? exact.t : 1.0;
+            for (const double step : steps)
+                for (const double tMax : {kInf, tRef * (1.0 + step)}) {
+                    const rb::Triangle4Verdict verdict =
+                        rb::testTriangle4(fray, pack, 4, rb::FloatLimit(tMax));
+                    for (int lane = 0; lane < 4; ++lane) {
+                        const auto& v = triangles[lane];
+                        rb::TriangleHit h;
+                        const bool exactHit =
+                            rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, h);
+                        const bool maybe = verdict.maybe >> lane & 1, hit = verdict.hit >> lane & 1;
+                        wrongMiss += exactHit && !maybe;
+                        wrongHit += hit && !exactHit;
+                        certainHits += hit;
+                        certainMisses += !maybe;
+                    }
+                }
+        }
+        THEN("a lane it drops is missed by the exact test, and a lane it calls hit is hit") {
+            CAPTURE(exactHits, certainHits, certainMisses);
+            // The float test must decide most lanes, or it would save nothing.
+            REQUIRE(exactHits > 12000);
+            REQUIRE(certainHits > 100000);
+            CHECK(wrongMiss == 0);
+            CHECK(wrongHit == 0);
+        }
+    }
+}
+// [ch03-float-triangle-bound]
 
 // ---- The BVH ----------------------------------------------------------------------------------
 

@@ -158,12 +158,13 @@ bool Mesh::occluded(const Ray& ray, double tMax) const {
     if (isDegenerateDirection(ray.d)) return false;
     const WatertightRay wray(ray);
     const FilterRay fray(wray);
+    const FloatLimit limit(tMax);
     return bvh_.any(
         ray, tMax,
         [&](std::uint32_t first, std::uint32_t count, double t) __attribute__((always_inline)) {
             for (std::uint32_t k = 0; k < count; k += 4)
                 if (occludedTriangle4(wray, fray, packs_[first + k / 4], std::min(count - k, 4u),
-                                      positions_, t))
+                                      positions_, t, limit))
                     return true;
             return false;
         });
