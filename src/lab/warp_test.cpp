@@ -251,8 +251,10 @@ WarpRun runWarp(const Warp& warp, const std::map<std::string, double>& values,
     std::map<std::string, double> all;
     for (const WarpParameter& p : warp.parameters) all[p.name] = p.value;
     for (const auto& [name, value] : values) {
-        const auto it = std::find_if(warp.parameters.begin(), warp.parameters.end(),
-                                     [&](const WarpParameter& p) { return p.name == name; });
+        // clang (make fuzz) cannot capture a structured binding: the lambda sees a copy.
+        const auto it =
+            std::find_if(warp.parameters.begin(), warp.parameters.end(),
+                         [key = name](const WarpParameter& p) { return p.name == key; });
         if (it == warp.parameters.end()) {
             std::string known;
             for (const WarpParameter& p : warp.parameters) known += " " + p.name;
