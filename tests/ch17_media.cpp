@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "lab/chi_square.h"
 #include "media/henyey_greenstein.h"
 #include "media/media.h"
 #include "media/medium.h"
@@ -107,21 +108,10 @@ std::pair<double, double> meanAndError(int n, Draw&& draw) {
     return {mean, std::sqrt(variance / n)};
 }
 
-/// Pearson's statistic of observed counts against expected ones, pooling neighbouring bins
-/// until each expects at least 5; returns the p-value of the chi-square with (bins − 1) dof.
+/// The p-value of Pearson's chi-square test of observed counts against expected ones, with the
+/// book's one implementation (src/lab/chi_square.h: bins expecting fewer than 5 pooled).
 double chiSquarePValue(const std::vector<double>& observed, const std::vector<double>& expected) {
-    double x2 = 0.0, o = 0.0, e = 0.0;
-    int bins = 0;
-    for (size_t i = 0; i < observed.size(); ++i) {
-        o += observed[i];
-        e += expected[i];
-        if (e >= 5.0 || i + 1 == observed.size()) {
-            x2 += (o - e) * (o - e) / e;
-            ++bins;
-            o = e = 0.0;
-        }
-    }
-    return rbtest::upperGammaQ(0.5 * (bins - 1), 0.5 * x2);
+    return rb::chiSquareTest(observed, expected).pValue;
 }
 
 }  // namespace
