@@ -644,7 +644,7 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
     // The wide BVH tests float boxes in float arithmetic; the binary one double boxes in double.
     // Both stretch the far end of each slab interval (kFarWidening; the 1 + 8ε of
     // intersectBox) so that rounding cannot make a box look missed. Random rays almost never
-    // need that: they pass boxes with room to spare. These rays are built to need it: they
+    // need that: they pass boxes with room to spare. These rays were built to need it: they
     // pass exactly through the corner of a box, where the entry and exit distances are equal
     // and any rounding can put them the wrong way round. All coordinates are small integers, or
     // integers near 2²⁰, so vertices and origins are exact in float and in double, and only the
