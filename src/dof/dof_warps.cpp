@@ -23,10 +23,8 @@ Warp concentricDiskWarp() {
         s.domain = {-1.0, 1.0, -1.0, 1.0, "x", "y"};
         s.caption = "the unit disk in the square [-1, 1]²";
         s.draw = [](std::uint64_t count, std::uint64_t seed, std::vector<Vec2>& points) {
-            for (std::uint64_t i = 0; i < count; ++i) {
-                Sampler sampler(seed, 13, i);
-                points.push_back(concentricDisk(sampler.next2D()));
-            }
+            drawEach(count, seed, 130, points,
+                     [](Sampler& sampler) { return concentricDisk(sampler.next2D()); });
         };
         s.pdf = [](const Vec2& p) { return concentricDiskPdf(p); };
         return s;

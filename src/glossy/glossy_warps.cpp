@@ -4,7 +4,6 @@
 /// and compared with phongLobePdf and fuzzSpherePdf.
 #include <cmath>
 
-#include "core/sampler.h"
 #include "glossy/lobe_samplers.h"
 #include "lab/warp.h"
 
@@ -31,12 +30,10 @@ Warp phongLobeWarp() {
         s.domain = directionDomain(std::pow(1e-3, 1.0 / (n + 1.0)));
         s.caption = "exponent n = " + warpNumber(n);
         s.draw = [n](std::uint64_t count, std::uint64_t seed, std::vector<Vec2>& points) {
-            for (std::uint64_t i = 0; i < count; ++i) {
-                Sampler sampler(seed, 7, i);
+            drawEach(count, seed, 70, points, [n](Sampler& sampler) {
                 const Vec2 u = sampler.next2D();
-                points.push_back(
-                    directionCoordinates(samplePhongLobe(kLobeAxis, n, u.x, u.y), kLobeAxis));
-            }
+                return directionCoordinates(samplePhongLobe(kLobeAxis, n, u.x, u.y), kLobeAxis);
+            });
         };
         s.pdf = [n](const Vec2& q) { return phongLobePdf(n, q.y); };
         return s;
@@ -58,12 +55,10 @@ Warp fuzzSphereWarp() {
         s.domain = directionDomain(f < 1.0 ? std::sqrt(1.0 - f * f) : -1.0);
         s.caption = "fuzz f = " + warpNumber(f);
         s.draw = [f](std::uint64_t count, std::uint64_t seed, std::vector<Vec2>& points) {
-            for (std::uint64_t i = 0; i < count; ++i) {
-                Sampler sampler(seed, 7, i);
+            drawEach(count, seed, 71, points, [f](Sampler& sampler) {
                 const double u1 = sampler.next1D(), u2 = sampler.next1D(), u3 = sampler.next1D();
-                points.push_back(
-                    directionCoordinates(sampleFuzzSphere(kLobeAxis, f, u1, u2, u3), kLobeAxis));
-            }
+                return directionCoordinates(sampleFuzzSphere(kLobeAxis, f, u1, u2, u3), kLobeAxis);
+            });
         };
         s.pdf = [f](const Vec2& q) { return fuzzSpherePdf(f, q.y); };
         return s;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sampler.h"
 #include "core/vec.h"
 
 namespace rb {
@@ -71,6 +72,17 @@ inline Vec2 directionCoordinates(const Vec3& w, const Vec3& axis) {
     double phi = std::atan2(glm::dot(w, t), glm::dot(w, s));
     if (phi < 0.0) phi += 2.0 * M_PI;
     return {phi, glm::dot(w, axis)};
+}
+
+/// Append `count` points, point i being `point(sampler)` with a sampler of its own, stream
+/// (seed, stream, i): how the lab runs a sampler that takes fresh random numbers per point.
+template <typename Point>
+void drawEach(std::uint64_t count, std::uint64_t seed, std::uint64_t stream,
+              std::vector<Vec2>& points, Point point) {
+    for (std::uint64_t i = 0; i < count; ++i) {
+        Sampler sampler(seed, stream, i);
+        points.push_back(point(sampler));
+    }
 }
 
 /// A parameter's value for a caption: up to 4 significant digits ("2", "0.5", "1e+04").

@@ -2,7 +2,6 @@
 /// Chapter 17's sampler in the sampling lab: the Henyey–Greenstein phase function, drawn by
 /// sampleHenyeyGreenstein and compared with henyeyGreenstein (exercise 17.1 writes the pdf:
 /// a wrong pdf shows as clearly as a wrong sampler).
-#include "core/sampler.h"
 #include "lab/warp.h"
 #include "media/henyey_greenstein.h"
 
@@ -26,11 +25,10 @@ Warp phaseWarp() {
         s.domain = directionDomain(-1.0);
         s.caption = "g = " + warpNumber(g) + ", about the direction of travel";
         s.draw = [g, forward](std::uint64_t count, std::uint64_t seed, std::vector<Vec2>& points) {
-            for (std::uint64_t i = 0; i < count; ++i) {
-                Sampler sampler(seed, 17, i);
-                points.push_back(directionCoordinates(
-                    sampleHenyeyGreenstein(forward, g, sampler.next2D()), forward));
-            }
+            drawEach(count, seed, 170, points, [g, forward](Sampler& sampler) {
+                return directionCoordinates(sampleHenyeyGreenstein(forward, g, sampler.next2D()),
+                                            forward);
+            });
         };
         s.pdf = [g](const Vec2& q) { return henyeyGreenstein(q.y, g); };
         return s;

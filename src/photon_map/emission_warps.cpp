@@ -3,7 +3,6 @@
 /// (emission.h): uniform over the sphere (point lights), cosine-weighted over a hemisphere
 /// (area lights) and uniform in a cone (photons aimed at a caustic target), each compared
 /// with the pdf beside it.
-#include "core/sampler.h"
 #include "lab/warp.h"
 #include "photon_map/emission.h"
 
@@ -19,11 +18,10 @@ const Vec3 kEmissionAxis = glm::normalize(Vec3(-0.4, 0.2, 0.9));
 template <typename Sample>
 void drawDirections(std::uint64_t count, std::uint64_t seed, std::uint64_t stream, const Vec3& axis,
                     std::vector<Vec2>& points, Sample sample) {
-    for (std::uint64_t i = 0; i < count; ++i) {
-        Sampler sampler(seed, stream, i);
+    drawEach(count, seed, stream, points, [&](Sampler& sampler) {
         const Vec2 u = sampler.next2D();
-        points.push_back(directionCoordinates(sample(u.x, u.y), axis));
-    }
+        return directionCoordinates(sample(u.x, u.y), axis);
+    });
 }
 
 Warp sphereWarp() {
