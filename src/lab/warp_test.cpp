@@ -211,6 +211,13 @@ bool passed(const WarpRun& run, double alpha) {
 
 /// The report of one run, for the terminal.
 void report(const WarpRun& run, double alpha, std::ostream& out) {
+    if (run.samples == 0) {
+        out << run.name << " (chapter " << run.chapter
+            << (run.exercise.empty() ? "" : ", exercise " + run.exercise) << "): " << run.title
+            << "\n  " << run.caption << "\n  " << verdict(run, alpha)
+            << (run.exercise.empty() ? "" : ": is exercise " + run.exercise + " written?") << "\n";
+        return;
+    }
     out << run.name << " (chapter " << run.chapter
         << (run.exercise.empty() ? "" : ", exercise " + run.exercise) << "): " << run.title
         << "\n  " << run.caption << "; " << grouped(run.samples) << " points in " << run.xBins
