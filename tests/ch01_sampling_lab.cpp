@@ -14,6 +14,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "app/options.h"
 #include "lab/chi_square.h"
 #include "lab/warp_test.h"
 #include "test_helpers.h"
@@ -151,6 +152,13 @@ SCENARIO("./rt --warptest refuses bad input with a message and exit code 1", "[c
             CHECK_THAT(err, Contains("name a .svg file"));
             CHECK(command({"test-disk", "--colour", "red"}, err) == 1);
             CHECK_THAT(err, Contains("unknown option --colour"));
+        }
+    }
+    WHEN("--warptest comes after another option") {
+        THEN("the renderer's command line refuses it and says it must come first") {
+            const char* argv[] = {"rt", "--quiet", "--warptest", "phong-lobe"};
+            CHECK_THROWS_WITH(rb::parseCommandLine(4, argv),
+                              Contains("--warptest must come first"));
         }
     }
     WHEN("no sampler is named") {

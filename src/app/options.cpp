@@ -109,6 +109,9 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             cl.partial = true;
         else if (name == "--preview")
             cl.preview = true;
+        else if (name == "--warptest")  // the sampling lab has a command line of its own
+            throw InputError(
+                "--warptest must come first: ./rt --warptest NAME [PARAMETER=VALUE ...]");
         else if (name == "--mpi")
             cl.mpi = true;
         else if (name == "--resume")
