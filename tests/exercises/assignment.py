@@ -303,6 +303,29 @@ def exercise_info(root: Path, n: int) -> list[dict]:
     return out
 
 
+def compare_rows(root: Path, scene: Path | None) -> list[str]:
+    """The README's rows that render the chapter's scene as its golden image was rendered
+    (golden/NAME.txt: size, seed, args) and compare the two with ./rt --compare."""
+    settings = root / "golden" / f"{scene.stem}.txt" if scene else None
+    if not settings or not settings.exists():
+        return []
+    given = {"size": "192x144", "seed": "1", "args": "", "rmse": "0.004"}
+    for line in settings.read_text().split("\n"):
+        key, _, value = line.split("#")[0].strip().partition(" ")
+        if key in given:
+            given[key] = value.strip()
+    render = (f"./rt --features=all --size {given['size']} --seed {given['seed']} "
+              + (given["args"] + " " if given["args"] else "")
+              + f"--output mine.png {scene.relative_to(root)}")
+    return [f"| `{render}` | renders the chapter's scene as its golden image was rendered "
+            f"(`golden/{scene.stem}.txt`) |",
+            f"| `./rt --compare golden/{scene.stem}.png mine.png --diff diff.png --threshold "
+            f"{given['rmse']}` | your render against the golden image: RMSE, PSNR, the largest "
+            f"difference and the pixels more than one 8-bit level apart, which `diff.png` shows "
+            f"in magenta; exit 0 within the golden's RMSE limit. `make check` judges it with the "
+            f"same code, against every limit in `golden/{scene.stem}.txt` |"]
+
+
 def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
     """The exported project's README, built from the chapter page."""
     page = page_of(root, n)
@@ -355,6 +378,7 @@ def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
             f"| `./rt --features=all {scene.relative_to(root) if scene else 'scenes/'}` | "
             f"renders the chapter's scene |",
             *lab_rows,
+            *compare_rows(root, scene),
             f"| `build/tests/raybook_check \"[ex{n}.1]\"` | after `make check`, runs the "
             f"tests that need exercise {n}.1 with Catch2's full messages "
             f"(`check` names the spec of a failing row) |",
