@@ -194,7 +194,7 @@ int unknownMethod(lua_State* L) {
     return unknownName(L, "method '", "'", "'%s' is not a method of raybook nodes or materials");
 }
 
-/// gr.<name> for a name nobody defined.
+/// `gr.NAME` for a NAME nobody defined.
 int unknownGrCall(lua_State* L) {
     return unknownName(L, "gr.", "",
                        "gr.%s is not a raybook call (see --help and the reference page)");
