@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/image.h"
@@ -518,7 +519,15 @@ int warpTestCommand(const std::vector<std::string>& args, const std::vector<Feat
                 << warps.size() << " tests: " << number(alpha, 4) << " each\n\n";
             int failures = 0;
             for (const Warp& w : warps) {
-                const WarpRun run = runWarp(w, {}, settings);
+                // A stub that is still in place (rb::ExerciseNotDone) fails its sampler only.
+                WarpRun run;
+                try {
+                    run = runWarp(w, {}, settings);
+                } catch (const std::logic_error& e) {
+                    out << w.name << " (chapter " << w.chapter << "): FAIL: " << e.what() << "\n\n";
+                    ++failures;
+                    continue;
+                }
                 report(run, alpha, out);
                 if (!outputDir.empty()) {
                     char file[32];
