@@ -968,8 +968,11 @@ SCENARIO("the BVH finds the same closest triangle as testing every triangle",
 }
 // [ch03-bvh-equals-brute-force]
 
+// It needs exercise 3.1 as well as 3.2: its meshes' shadow queries stop at a hit the float
+// triangle test is sure of, without the exact test, so with 3.1 blank the shadow and the
+// closest-hit answers on a mesh disagree.
 SCENARIO("a two-level BVH over instances finds the same hits as testing every instance",
-         "[ch03][ex3.2]") {
+         "[ch03][ex3.1][ex3.2]") {
     GIVEN(
         "400 spheres, 400 boxes and 12 bunnies, each randomly scaled, turned and placed in a "
         "40-unit cube (fixed seed)") {
