@@ -149,7 +149,8 @@ SANITIZER_ENV  := ASAN_OPTIONS=halt_on_error=1:exitcode=66:detect_leaks=1:alloca
 test-sanitize: sanitize-build
 	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
 
-# The instrumented tree alone (.ci/run builds it on idle CPU while make test runs).
+# The instrumented tree alone (make test-sanitize builds it first; .ci/run runs it after make
+# test, never beside it: the mutation check plants blanks in the source for a moment).
 sanitize-build: deps
 	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DRB_SANITIZE=ON
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
