@@ -1,0 +1,305 @@
+#!/usr/bin/env python3
+"""live_panel: the docs' live chapter panels render what the command line renders.
+
+    live_panel.py --rt build/rt_ch17 --html docs/html --work build/live_panel [--chapters 1,5,13]
+
+In headless Chromium (Debian's chromium, driven over the DevTools pipe, tests/web/cdp.py), for
+each chapter N given it opens the built page docs/html/chNN.html from file://, renders the
+chapter's scene in the page's panel at 160x120 and requires the canvas to equal native rt's
+render of the same scene (./rt --features=<the panel's> --size 160x120 --threads 1), pixel for
+pixel: rt --compare must report a largest difference of 0, and the first differing pixels are
+listed if not. Then, on chapter 1's page:
+  - the same render from a plain static server (http.server) gives the same pixels;
+  - a broken call in the text box shows the command line's message, file:line included;
+  - `while true do end` stops with the command line's "ran more than ... Lua instructions"
+    message, while the page keeps answering;
+  - Stop ends a running render at once, and the next render works.
+Exit code 0 when all pass, 1 otherwise, 77 (skipped) when there is no bundle or no chromium.
+"""
+import argparse
+import base64
+import functools
+import http.server
+import os
+import re
+import struct
+import subprocess
+import sys
+import threading
+import time
+import zlib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cdp  # noqa: E402
+
+SIZE = '160x120'
+failures = []
+
+
+def check(ok, what, detail=''):
+    print('%s: %s%s' % ('ok  ' if ok else 'FAIL', what, ('\n      ' + detail.replace('\n', '\n      ')) if detail and not ok else ''))
+    sys.stdout.flush()
+    if not ok:
+        failures.append(what)
+    return ok
+
+
+def png_pixels(path):
+    """(width, height, rows of RGB(A) tuples) of an 8-bit, non-interlaced RGB or RGBA PNG."""
+    data = open(path, 'rb').read()
+    assert data[:8] == b'\x89PNG\r\n\x1a\n', path
+    pos, idat, ihdr = 8, b'', None
+    while pos < len(data):
+        n, kind = struct.unpack('>I4s', data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        pos += 12 + n
+        if kind == b'IHDR':
+            ihdr = struct.unpack('>IIBBBBB', body)
+        elif kind == b'IDAT':
+            idat += body
+    w, h, depth, ctype, _, _, interlace = ihdr
+    assert depth == 8 and ctype in (2, 6) and interlace == 0, (path, ihdr)
+    bpp = 3 if ctype == 2 else 4
+    raw = zlib.decompress(idat)
+    stride = w * bpp
+    rows, prev = [], bytearray(stride)
+    for y in range(h):
+        f = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b = prev[i]
+            c = prev[i - bpp] if i >= bpp else 0
+            if f == 1:
+                line[i] = (line[i] + a) & 255
+            elif f == 2:
+                line[i] = (line[i] + b) & 255
+            elif f == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[x * bpp:x * bpp + 3]) for x in range(w)])
+        prev = line
+    return w, h, rows
+
+
+def differing_pixels(a, b, most=10):
+    wa, ha, ra = png_pixels(a)
+    wb, hb, rb = png_pixels(b)
+    if (wa, ha) != (wb, hb):
+        return ['sizes differ: %dx%d against %dx%d' % (wa, ha, wb, hb)]
+    out, count = [], 0
+    for y in range(ha):
+        for x in range(wa):
+            if ra[y][x] != rb[y][x]:
+                count += 1
+                if len(out) < most:
+                    out.append('(%d, %d): page %s, native %s' % (x, y, ra[y][x], rb[y][x]))
+    return ['%d pixel(s) differ' % count] + out
+
+
+def native(rt, features, scene, out):
+    args = [rt, '--features=' + features, '--size', SIZE, '--threads', '1', '--output', out, scene]
+    t0 = time.time()
+    r = subprocess.run(args, capture_output=True, text=True)
+    return r, time.time() - t0
+
+
+def save_canvas(result, path):
+    with open(path, 'wb') as f:
+        f.write(base64.b64decode(result['pixels'].split(',', 1)[1]))
+
+
+def open_panel(browser, url):
+    page = browser.open(url)
+    page.wait_for('window.raybookLive && window.raybookLive.panels.length > 0', 30)
+    page.wait_for('window.raybookLive.panels[0].features || /did not start/.test('
+                  'document.querySelector(".rb-live .rb-switches").textContent)', 180)
+    check(page.evaluate('!!window.raybookLive.panels[0].features'), 'rt starts in the page: ' + url,
+          page.evaluate('document.querySelector(".rb-live").innerText') + '\n' +
+          '\n'.join(page.console_messages()))
+    return page
+
+
+def render(page, opts, timeout):
+    expr = 'window.raybookLive.panels[0].render(%s)' % (opts,)
+    return page.evaluate(expr, timeout)
+
+
+def panel_text(page):
+    return page.evaluate('document.querySelector(".rb-live pre.rb-msg").textContent')
+
+
+def compare_chapter(page, args, n, scene_name, label):
+    r = render(page, '{size: "%s"}' % SIZE, args.timeout)
+    if not check(r and r['code'] == 0 and r['pixels'], '%s: the panel renders %s' % (label, scene_name),
+                 repr({k: v for k, v in (r or {}).items() if k != 'pixels'})):
+        return None
+    canvas = os.path.join(args.work, 'ch%02d-%s-page.png' % (n, re.sub(r'[^a-z]', '', label)))
+    save_canvas(r, canvas)
+    features = r['args'][0].split('=', 1)[1]
+    ref = os.path.join(args.work, 'ch%02d-native.png' % n)
+    nat, secs = native(args.rt, features, os.path.join(args.scenes, scene_name), ref)
+    if not check(nat.returncode == 0, 'native rt renders ' + scene_name, nat.stderr):
+        return None
+    cmp = subprocess.run([args.rt, '--compare', canvas, ref], capture_output=True, text=True)
+    largest = re.search(r'largest\s+(\S+)', cmp.stdout)
+    same = largest is not None and float(largest.group(1)) == 0
+    detail = cmp.stdout + cmp.stderr
+    if not same:
+        try:
+            detail += '\n' + '\n'.join(differing_pixels(canvas, ref))
+        except Exception as e:  # an unexpected PNG kind: --compare's numbers still stand
+            detail += '\n(could not list the pixels: %s)' % e
+    check(same, '%s: chapter %d\'s canvas equals native rt (--features=%s, %s): page %.2f s, '
+          'native %.2f s' % (label, n, features, SIZE, r['ms'] / 1000, secs), detail)
+    return r
+
+
+def serve(root):
+    class Quiet(http.server.SimpleHTTPRequestHandler):
+        def log_message(self, *args):
+            pass
+    handler = functools.partial(Quiet, directory=root)
+    server = http.server.ThreadingHTTPServer(('127.0.0.1', 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return server
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    ap.add_argument('--rt', required=True, help='native rt with every chapter (rt_ch17)')
+    ap.add_argument('--html', required=True, help='the built docs (docs/html)')
+    ap.add_argument('--work', required=True, help='a folder for the images')
+    ap.add_argument('--scenes', default=os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'scenes'))
+    ap.add_argument('--chapters', default='1,5,13')
+    ap.add_argument('--timeout', type=float, default=300, help='seconds for one render')
+    ap.add_argument('--skip-limits', action='store_true', help='only the pixel comparisons')
+    args = ap.parse_args()
+    args.rt = os.path.abspath(args.rt)
+    args.html = os.path.abspath(args.html)
+    args.scenes = os.path.abspath(args.scenes)
+    os.makedirs(args.work, exist_ok=True)
+
+    bundle = os.path.join(args.html, 'live', 'raybook-live.js')
+    if not os.path.exists(bundle):
+        print('live_panel: no %s (make docs builds it when emscripten is installed); skipped' % bundle)
+        return 77
+    if not cdp.find_chromium():
+        print('live_panel: no chromium (Debian: apt-get install chromium); skipped')
+        return 77
+    print('live_panel: bundle %s, %.1f MiB' % (bundle, os.path.getsize(bundle) / 2**20))
+
+    chapters = [int(c) for c in args.chapters.split(',')]
+    scenes = {}
+    for name in os.listdir(args.scenes):
+        m = re.fullmatch(r'chapter(\d\d)-.*\.lua', name)
+        if m:
+            scenes[int(m.group(1))] = name
+
+    with cdp.Browser() as browser:
+        for n in chapters:
+            url = 'file://%s/ch%02d.html' % (args.html, n)
+            page = open_panel(browser, url)
+            if not page.evaluate('!!window.raybookLive.panels[0].features'):
+                continue
+            compare_chapter(page, args, n, scenes[n], 'file://')
+            page.screenshot(os.path.join(args.work, 'ch%02d-panel.png' % n), full_page=False)
+
+        # The same pages from a plain static server.
+        server = serve(args.html)
+        try:
+            n = chapters[0]
+            page = open_panel(browser, 'http://127.0.0.1:%d/ch%02d.html' % (server.server_address[1], n))
+            if page.evaluate('!!window.raybookLive.panels[0].features'):
+                compare_chapter(page, args, n, scenes[n], 'http://')
+        finally:
+            server.shutdown()
+
+        if not args.skip_limits:
+            limits(browser, args, chapters[0], scenes[chapters[0]])
+
+    if failures:
+        print('live_panel: %d check(s) failed: %s' % (len(failures), '; '.join(failures)))
+        return 1
+    print('live_panel: all checks passed')
+    return 0
+
+
+def limits(browser, args, n, scene_name):
+    page = open_panel(browser, 'file://%s/ch%02d.html' % (args.html, n))
+    if not page.evaluate('!!window.raybookLive.panels[0].features'):
+        return
+    original = page.evaluate('window.raybookLive.panels[0].original')
+    lines = original.split('\n')
+
+    def native_message(text):
+        path = os.path.join(args.work, scene_name)
+        with open(path, 'w') as f:
+            f.write(text)
+        r, _ = native(args.rt, 'all', path, os.path.join(args.work, 'never.png'))
+        return r.returncode, r.stderr.replace(path, scene_name)
+
+    def page_message(text):
+        t0 = time.time()
+        r = render(page, '{size: "%s", text: %s}' % (SIZE, json_str(text)), args.timeout)
+        shown = panel_text(page)
+        return r['code'], r['err'].replace('/scenes/' + scene_name, scene_name), shown, time.time() - t0
+
+    # A broken call: gr.sphere with a number for its name, on line 5.
+    broken = '\n'.join(lines[:4] + ['gr.sphere(1, 2, 3)'] + lines[4:])
+    ncode, nmsg = native_message(broken)
+    pcode, pmsg, shown, secs = page_message(broken)
+    want = scene_name + ':5:'
+    check(ncode == 1 and pcode == 1 and want in pmsg and pmsg.strip() == nmsg.strip()
+          and nmsg.strip().split('\n')[-1].replace(scene_name, '/scenes/' + scene_name) in shown,
+          'a broken call shows the command line\'s message in the panel (%s ...)' % want,
+          'native (%d): %s\npage (%d): %s\npanel shows: %s' % (ncode, nmsg, pcode, pmsg, shown))
+
+    # An endless loop stops at the instruction limit with the command line's message, and the
+    # page answers while it runs.
+    loop = 'while true do end\n' + original
+    ncode, nmsg = native_message(loop)
+    page.evaluate('window.rbLoop = window.raybookLive.panels[0].render({size: "%s", text: %s}).catch(e => ({code: -1, err: String(e)})); 1'
+                  % (SIZE, json_str(loop)))
+    time.sleep(1.0)
+    lag = []
+    for _ in range(5):
+        t0 = time.time()
+        page.evaluate('document.querySelector(".rb-live .rb-status").textContent')
+        lag.append(time.time() - t0)
+        time.sleep(0.2)
+    check(max(lag) < 1.0, 'the page answers during an endless loop (slowest answer %.3f s)' % max(lag))
+    t0 = time.time()
+    r = page.evaluate('window.rbLoop', args.timeout)
+    secs = time.time() - t0 + 2.0
+    pmsg = r['err'].replace('/scenes/' + scene_name, scene_name)
+    shown = panel_text(page)
+    check(ncode == 1 and r['code'] == 1 and 'Lua instructions' in pmsg and pmsg.strip() == nmsg.strip()
+          and 'ran more than' in shown,
+          'an endless loop stops with the command line\'s message (after about %.0f s in the page)' % secs,
+          'native (%d): %s\npage (%s): %s\npanel shows: %s' % (ncode, nmsg, r.get('code'), pmsg, shown))
+
+    # Stop ends a render at once; the next render works.
+    page.evaluate('window.rbStop = window.raybookLive.panels[0].render({size: "%s", text: %s}).then(r => "finished", e => String(e)); 1'
+                  % (SIZE, json_str(loop)))
+    time.sleep(1.5)
+    page.evaluate('document.querySelector(".rb-live button.rb-stop").click(); 1')
+    stopped = page.evaluate('window.rbStop', 10)
+    status = page.evaluate('document.querySelector(".rb-live .rb-status").textContent')
+    check('stopped' in stopped and 'stopped' in status, 'Stop ends an endless render at once',
+          'render: %s, status: %s' % (stopped, status))
+    r = render(page, '{size: "%s", text: %s}' % (SIZE, json_str(original)), args.timeout)
+    check(r and r['code'] == 0 and r['pixels'], 'after Stop, the next render works')
+    page.screenshot(os.path.join(args.work, 'ch%02d-after-stop.png' % n), full_page=False)
+
+
+def json_str(s):
+    import json
+    return json.dumps(s)
+
+
+if __name__ == '__main__':
+    sys.exit(main())
