@@ -148,6 +148,29 @@ class RbPanel {
     return ['all'].concat(off).join(',');
   }
 
+  // After an error naming a line of the scene (/scenes/NAME.lua:LINE: ...), a link that
+  // selects that line in the text box.
+  linkLine(log) {
+    const m = new RegExp(this.scene.replace(/[.]/g, '[.]') + ':(\\d+):').exec(log);
+    if (!m) return;
+    const line = Number(m[1]);
+    this.messages.appendChild(document.createTextNode('\n'));
+    this.messages.appendChild(rbEl('a', {href: '#', class: 'rb-goto', text: 'show line ' + line,
+                                         onclick: (e) => { e.preventDefault(); this.selectLine(line); }}));
+  }
+
+  selectLine(line) {
+    const lines = this.text.value.split('\n');
+    if (line < 1 || line > lines.length) return;
+    let start = 0;
+    for (let i = 0; i < line - 1; i++) start += lines[i].length + 1;
+    this.text.focus();
+    this.text.setSelectionRange(start, start + lines[line - 1].length);
+    // Scroll the line into the middle of the box.
+    const lineHeight = this.text.scrollHeight / lines.length;
+    this.text.scrollTop = Math.max(0, (line - 1) * lineHeight - this.text.clientHeight / 2);
+  }
+
   show(kind, text) {
     this.messages.textContent = text;
     this.messages.className = 'rb-msg' + (kind ? ' rb-' + kind : '');
@@ -223,6 +246,7 @@ class RbPanel {
     } else {
       this.status.textContent = 'rt stopped with exit code ' + m.code + ' after ' + secs + ' s';
       this.show('error', log || 'rt exit code ' + m.code);
+      this.linkLine(log);
     }
     p.resolve(result);
   }
