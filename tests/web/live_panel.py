@@ -132,15 +132,16 @@ def panel_text(page):
     return page.evaluate('document.querySelector(".rb-live pre.rb-msg").textContent')
 
 
-def compare_chapter(page, args, n, scene_name, label):
-    r = render(page, '{size: "%s"}' % SIZE, args.timeout)
+def compare_chapter(page, args, n, scene_name, label, text=None):
+    opts = '{size: "%s"%s}' % (SIZE, '' if text is None else ', text: ' + json_str(text))
+    r = render(page, opts, args.timeout)
     if not check(r and r['code'] == 0 and r['pixels'], '%s: the panel renders %s' % (label, scene_name),
                  repr({k: v for k, v in (r or {}).items() if k != 'pixels'})):
         return None
-    canvas = os.path.join(args.work, 'ch%02d-%s-page.png' % (n, re.sub(r'[^a-z]', '', label)))
+    canvas = os.path.join(args.work, 'ch%02d-%s-page.png' % (n, re.sub(r'[^a-z]+', '-', label)))
     save_canvas(r, canvas)
     features = r['args'][0].split('=', 1)[1]
-    ref = os.path.join(args.work, 'ch%02d-native.png' % n)
+    ref = os.path.join(args.work, 'ch%02d-%s-native.png' % (n, re.sub(r'[^a-z]+', '-', label)))
     nat, secs = native(args.rt, features, os.path.join(args.scenes, scene_name), ref)
     if not check(nat.returncode == 0, 'native rt renders ' + scene_name, nat.stderr):
         return None
@@ -206,6 +207,15 @@ def main():
             if not page.evaluate('!!window.raybookLive.panels[0].features'):
                 continue
             compare_chapter(page, args, n, scenes[n], 'file://')
+            # The chapter's own switch off: rt --features=all,-NAME, as on the command line.
+            name = page.evaluate('(window.raybookLive.panels[0].features.find(f => f.chapter === %d && !f.core) || {}).name || ""' % n)
+            if name:
+                page.evaluate('(() => { const b = [...document.querySelectorAll(".rb-live input[type=checkbox]")].find(b => b.value === "%s"); b.click(); return b.checked; })()' % name)
+                r = compare_chapter(page, args, n, scenes[n], 'file:// -' + name)
+                check(r is not None and r['args'][0] == '--features=all,-' + name,
+                      'unchecking chapter %d\'s switch renders with --features=all,-%s' % (n, name),
+                      repr(r and r['args']))
+                page.evaluate('document.querySelector(".rb-live input[value=%s]").click(); 1' % name)
             page.screenshot(os.path.join(args.work, 'ch%02d-panel.png' % n), full_page=False)
 
         # The same pages from a plain static server.
@@ -282,6 +292,10 @@ def limits(browser, args, n, scene_name):
           'an endless loop stops with the command line\'s message (after about %.0f s in the page)' % secs,
           'native (%d): %s\npage (%s): %s\npanel shows: %s' % (ncode, nmsg, r.get('code'), pmsg, shown))
 
+    # The same rt instance, after an error and an endless loop, still renders the scene as the
+    # command line does.
+    compare_chapter(page, args, n, scene_name, 'after the errors', original)
+
     # Stop ends a render at once; the next render works.
     page.evaluate('window.rbStop = window.raybookLive.panels[0].render({size: "%s", text: %s}).then(r => "finished", e => String(e)); 1'
                   % (SIZE, json_str(loop)))
@@ -291,8 +305,7 @@ def limits(browser, args, n, scene_name):
     status = page.evaluate('document.querySelector(".rb-live .rb-status").textContent')
     check('stopped' in stopped and 'stopped' in status, 'Stop ends an endless render at once',
           'render: %s, status: %s' % (stopped, status))
-    r = render(page, '{size: "%s", text: %s}' % (SIZE, json_str(original)), args.timeout)
-    check(r and r['code'] == 0 and r['pixels'], 'after Stop, the next render works')
+    compare_chapter(page, args, n, scene_name, 'after Stop', original)
     page.screenshot(os.path.join(args.work, 'ch%02d-after-stop.png' % n), full_page=False)
 
 
