@@ -26,6 +26,7 @@
 #include "bvh/triangle.h"
 #include "bvh/triangle4.h"
 #include "bvh/wide_bvh.h"
+#include "bvh/wide_bvh8.h"
 #include "core/aggregate.h"
 #include "core/box.h"
 #include "core/error.h"
@@ -42,6 +43,31 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// The bunny that chapter 3's scene uses: 3 674 triangles.
 const std::string kBunnyPath = std::string(RB_SOURCE_DIR) + "/scenes/assets/bunny.obj";
+
+/// A BVH layout and its --bvh name.
+struct NamedLayout {
+    rb::BVHLayout layout;
+    const char* name;
+};
+
+/// Every layout one binary can take on this machine: binary, wide4, and wide8 where the CPU has
+/// AVX2 (a warning says when it has not, and the eight-wide path goes untested).
+std::vector<NamedLayout> layoutsHere() {
+    std::vector<NamedLayout> layouts = {{rb::BVHLayout::Binary, "binary"},
+                                        {rb::BVHLayout::Wide4, "wide4"}};
+    if (rb::wide8Available())
+        layouts.push_back({rb::BVHLayout::Wide8, "wide8"});
+    else
+        WARN("this CPU has no AVX2: the eight-wide BVH is not tested here");
+    return layouts;
+}
+
+/// The wide layouts of layoutsHere().
+std::vector<NamedLayout> wideLayoutsHere() {
+    std::vector<NamedLayout> layouts = layoutsHere();
+    layouts.erase(layouts.begin());
+    return layouts;
+}
 
 /// Does the ray hit triangle (p0, p1, p2) anywhere along t in (0, ∞)?
 bool hitsTriangle(const rb::Ray& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2) {
@@ -137,18 +163,20 @@ TreeReport walkTree(const rb::BVH& bvh, size_t primitiveCount, SlotBounds primit
     return report;
 }
 
-/// Walk a wide BVH from the root: every child's float box must contain the double boxes of
-/// everything below it (they were rounded outwards), and every slot must be in one leaf.
-template <class SlotBounds>
-TreeReport walkWide(const rb::BVH& bvh, size_t primitiveCount, SlotBounds primitiveBounds) {
+/// Walk the nodes of a wide BVH (four- or eight-wide) from the root: every child's float box
+/// must contain the double boxes of everything below it (they were rounded outwards), and every
+/// slot must be in one leaf.
+template <int N, class SlotBounds>
+TreeReport walkWideNodes(const std::vector<rb::WideNodeN<N>>& nodes, size_t primitiveCount,
+                         SlotBounds primitiveBounds) {
     TreeReport report;
     report.slotSeen.assign(primitiveCount, 0);
     // Returns the bounds of the subtree under node `index`.
     auto walk = [&](auto&& self, std::uint32_t index) -> rb::AABB {
-        const rb::WideNode& node = bvh.wideNodes().at(index);
+        const rb::WideNodeN<N>& node = nodes.at(index);
         ++report.nodesReached;
         rb::AABB all;
-        for (int c = 0; c < 4; ++c) {
+        for (int c = 0; c < N; ++c) {
             rb::AABB childBox;
             for (int axis = 0; axis < 3; ++axis) {
                 childBox.lo[axis] = node.lo[axis][c];
@@ -173,6 +201,19 @@ TreeReport walkWide(const rb::BVH& bvh, size_t primitiveCount, SlotBounds primit
     };
     walk(walk, 0);
     return report;
+}
+
+/// walkWideNodes over the wide nodes of bvh, whichever width it was built with.
+template <class SlotBounds>
+TreeReport walkWide(const rb::BVH& bvh, size_t primitiveCount, SlotBounds primitiveBounds) {
+    if (bvh.layout() == rb::BVHLayout::Wide8)
+        return walkWideNodes(bvh.wide8Nodes(), primitiveCount, primitiveBounds);
+    return walkWideNodes(bvh.wideNodes(), primitiveCount, primitiveBounds);
+}
+
+/// The nodes of bvh's wide layout.
+size_t wideNodeCount(const rb::BVH& bvh) {
+    return bvh.wideNodes().size() + bvh.wide8Nodes().size();
 }
 
 /// The number of BVH nodes whose box the segment of `ray` up to `tHit` enters: the nodes that
@@ -543,60 +584,63 @@ SCENARIO("the float triangle test decides only what the exact test decides", "[c
 // ---- The BVH ----------------------------------------------------------------------------------
 
 // [ch03-fast-equals-simple]
-SCENARIO("the wide traversal finds exactly what the binary traversal finds",
+SCENARIO("the wide traversals find exactly what the binary traversal finds",
          "[ch03][ex3.1][ex3.2]") {
-    GIVEN("binary and wide BVHs over the bunny's triangles and 5 000 random rays into its bounds") {
-        const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
-        const auto triangles = bunny.triangles();
-        const rb::BVH binary = bvhOver(triangles, rb::BVHLayout::Binary);
-        const rb::BVH wide = bvhOver(triangles, rb::BVHLayout::Wide);
-        REQUIRE(binary.primitiveOrder() == wide.primitiveOrder());  // one build, two layouts
-        const auto& order = wide.primitiveOrder();
-        rbtest::Rng rng(31337);
-        int closestMismatch = 0, anyMismatch = 0, hits = 0;
-        for (int k = 0; k < 5000; ++k) {
-            const rb::Ray ray = rayInto(bunny.bounds(), rng);
-            const rb::WatertightRay wray(ray);
-            // The same leaf test for both traversals: the nearest triangle so far.
-            auto leafFor = [&](long& best) {
-                return [&](std::uint32_t first, std::uint32_t count, double& tMax) {
-                    bool found = false;
+    for (const NamedLayout& layout : wideLayoutsHere())
+        GIVEN(std::string("binary and ") + layout.name +
+              " BVHs over the bunny's triangles and 5 000 random rays into its bounds") {
+            const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
+            const auto triangles = bunny.triangles();
+            const rb::BVH binary = bvhOver(triangles, rb::BVHLayout::Binary);
+            const rb::BVH wide = bvhOver(triangles, layout.layout);
+            REQUIRE(wide.layout() == layout.layout);
+            REQUIRE(binary.primitiveOrder() == wide.primitiveOrder());  // one build, two layouts
+            const auto& order = wide.primitiveOrder();
+            rbtest::Rng rng(31337);
+            int closestMismatch = 0, anyMismatch = 0, hits = 0;
+            for (int k = 0; k < 5000; ++k) {
+                const rb::Ray ray = rayInto(bunny.bounds(), rng);
+                const rb::WatertightRay wray(ray);
+                // The same leaf test for both traversals: the nearest triangle so far.
+                auto leafFor = [&](long& best) {
+                    return [&](std::uint32_t first, std::uint32_t count, double& tMax) {
+                        bool found = false;
+                        for (std::uint32_t slot = first; slot < first + count; ++slot) {
+                            const auto& v = triangles[order[slot]].v;
+                            rb::TriangleHit th;
+                            if (!rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, th)) continue;
+                            tMax = th.t;
+                            best = slot;
+                            found = true;
+                        }
+                        return found;
+                    };
+                };
+                long bestBinary = -1, bestWide = -1;
+                double tBinary = kInf, tWide = kInf;
+                const bool foundBinary = binary.closest(ray, tBinary, leafFor(bestBinary));
+                const bool foundWide = wide.closest(ray, tWide, leafFor(bestWide));
+                hits += foundWide;
+                if (foundBinary != foundWide || tBinary != tWide) ++closestMismatch;
+                auto anyLeaf = [&](std::uint32_t first, std::uint32_t count, double tMax) {
                     for (std::uint32_t slot = first; slot < first + count; ++slot) {
                         const auto& v = triangles[order[slot]].v;
                         rb::TriangleHit th;
-                        if (!rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, th)) continue;
-                        tMax = th.t;
-                        best = slot;
-                        found = true;
+                        if (rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, th)) return true;
                     }
-                    return found;
+                    return false;
                 };
-            };
-            long bestBinary = -1, bestWide = -1;
-            double tBinary = kInf, tWide = kInf;
-            const bool foundBinary = binary.closest(ray, tBinary, leafFor(bestBinary));
-            const bool foundWide = wide.closest(ray, tWide, leafFor(bestWide));
-            hits += foundWide;
-            if (foundBinary != foundWide || tBinary != tWide) ++closestMismatch;
-            auto anyLeaf = [&](std::uint32_t first, std::uint32_t count, double tMax) {
-                for (std::uint32_t slot = first; slot < first + count; ++slot) {
-                    const auto& v = triangles[order[slot]].v;
-                    rb::TriangleHit th;
-                    if (rb::intersectTriangle(wray, v[0], v[1], v[2], tMax, th)) return true;
-                }
-                return false;
-            };
-            if (binary.any(ray, kInf, anyLeaf) != wide.any(ray, kInf, anyLeaf)) ++anyMismatch;
+                if (binary.any(ray, kInf, anyLeaf) != wide.any(ray, kInf, anyLeaf)) ++anyMismatch;
+            }
+            THEN("every closest hit (to the bit) and every any-hit answer agree") {
+                // Source: both walk boxes that contain their primitives (the wide boxes are the
+                // build boxes rounded outwards, tested conservatively) and run the same leaf test,
+                // so the nearest distance cannot differ; only the order of visits does.
+                REQUIRE(hits > 1000);
+                CHECK(closestMismatch == 0);
+                CHECK(anyMismatch == 0);
+            }
         }
-        THEN("every closest hit (to the bit) and every any-hit answer agree") {
-            // Source: both walk boxes that contain their primitives (the wide boxes are the
-            // build boxes rounded outwards, tested conservatively) and run the same leaf test,
-            // so the nearest distance cannot differ; only the order of visits does.
-            REQUIRE(hits > 1000);
-            CHECK(closestMismatch == 0);
-            CHECK(anyMismatch == 0);
-        }
-    }
 }
 // [ch03-fast-equals-simple]
 
@@ -663,9 +707,13 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
         {"a 6 x 6 x 6 cube", cubeObj(6)}};
     for (Case& c : cases) {
         GIVEN(c.name) {
-            const rb::Mesh wide(c.data, "test.obj", rb::BVHLayout::Wide);
-            const rb::Mesh binary(c.data, "test.obj", rb::BVHLayout::Binary);
-            const auto triangles = wide.triangles();
+            std::vector<std::unique_ptr<rb::Mesh>> meshes;
+            std::vector<const char*> names;
+            for (const NamedLayout& layout : layoutsHere()) {
+                meshes.push_back(std::make_unique<rb::Mesh>(c.data, "test.obj", layout.layout));
+                names.push_back(layout.name);
+            }
+            const auto triangles = meshes[0]->triangles();
             rbtest::Rng rng(4242);
             auto smallInt = [&](int lo, int hi) {
                 return static_cast<double>(lo + static_cast<int>(rng.uniform() * (hi - lo + 1)));
@@ -693,7 +741,8 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
                 double tBrute;
                 const long source = bruteForceClosest(triangles, ray, tBrute);
                 hits += source >= 0;
-                for (const rb::Mesh* mesh : {&wide, &binary}) {
+                for (size_t m = 0; m < meshes.size(); ++m) {
+                    const rb::Mesh* mesh = meshes[m].get();
                     rb::ObjectHit oh;
                     const bool found = mesh->intersect(ray, kInf, oh);
                     const bool same =
@@ -708,13 +757,12 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
                         ++mismatches;
                         UNSCOPED_INFO("o = (" << ray.o.x << ", " << ray.o.y << ", " << ray.o.z
                                               << "), d = (" << ray.d.x << ", " << ray.d.y << ", "
-                                              << ray.d.z << "), layout "
-                                              << (mesh == &wide ? "wide" : "binary"));
+                                              << ray.d.z << "), layout " << names[m]);
                     }
                 }
             }
             THEN(
-                "both traversals agree with brute force on every ray: hit, distance, triangle, "
+                "every traversal agrees with brute force on every ray: hit, distance, triangle, "
                 "shadow") {
                 CAPTURE(rays.size(), hits);
                 REQUIRE(hits > static_cast<int>(rays.size()) / 3);
@@ -734,15 +782,32 @@ SCENARIO("the float traversal never misses a hit that the exact double test find
 // below builds inputs on which only one of them can help, and fails when that one alone is
 // removed (numbers checked by planting each removal).
 
-/// One wide node whose four children are box b, rounded outwards to float.
-rb::WideNode wideNodeOf(const rb::AABB& b) {
-    rb::WideNode n{};
-    for (int c = 0; c < 4; ++c)
+/// One wide node whose N children are box b, rounded outwards to float.
+template <int N = 4>
+rb::WideNodeN<N> wideNodeOf(const rb::AABB& b) {
+    rb::WideNodeN<N> n{};
+    for (int c = 0; c < N; ++c)
         for (int axis = 0; axis < 3; ++axis) {
             n.lo[axis][c] = rb::roundDownToFloat(b.lo[axis]);
             n.hi[axis][c] = rb::roundUpToFloat(b.hi[axis]);
         }
     return n;
+}
+
+/// The children of node n (eight-wide) that the ray enters with tMax = ∞, as a mask: the AVX2
+/// slab test, intersectChildren8. Returns -1 where the eight-wide path is not available (no
+/// AVX2 here, or not an x86-64 build); it is compiled for AVX2, and runs only after that check.
+#if RB_HAVE_WIDE8
+[[gnu::target("avx2")]] int childrenEntered8(const rb::WideNode8& n, const rb::Ray& ray) {
+    __m256 tEntry;
+    return rb::intersectChildren8(n, rb::WideRay8(rb::WideRay(ray)), rb::wideTMax8(kInf), tEntry);
+}
+#endif
+int childrenEntered8IfAvailable(const rb::WideNode8& n, const rb::Ray& ray) {
+#if RB_HAVE_WIDE8
+    if (rb::wide8Available()) return childrenEntered8(n, ray);
+#endif
+    return -1;
 }
 
 /// A flat box that the ray from 0 towards c touches only at its corner c, at t = 1: flat on
@@ -773,20 +838,32 @@ SCENARIO("the float slab test enters a flat box that a ray touches only at its c
     // and t₁ = c_z·fl(1/c_z), each rounded, and t₀ > t₁ happens often. Only the far-plane
     // stretch kFarWidening (1 + 2⁻²⁰, more than the 1 + 2γ₃ the roundings need) puts them in
     // order. With kFarWidening = 1, 577 of these 4 000 rays miss their box (planted and run).
+    // The eight-wide AVX2 test (intersectChildren8) runs the same arithmetic lane for lane with
+    // the same stretch, carried by WideRay8's far reciprocals: with those left unstretched
+    // (invDFar = invDNear in WideRay8 alone), the same 577 rays miss their box there (planted
+    // and run).
     GIVEN("4 000 flat boxes with float corners in ±[1, 1000), and the rays from 0 to the corner") {
         rbtest::Rng rng(2013);
-        int misses = 0;
+        int misses = 0, misses8 = 0;
         for (int k = 0; k < 4000; ++k) {
             const Vec3 c(randomFloatCoordinate(rng), randomFloatCoordinate(rng),
                          randomFloatCoordinate(rng));
-            const rb::WideNode node = wideNodeOf(flatBoxAtCorner(c, k % 3, 10.0));
-            const rb::WideRay ray(rb::Ray{Vec3(0.0), c});
+            const rb::AABB box = flatBoxAtCorner(c, k % 3, 10.0);
+            const rb::Ray r{Vec3(0.0), c};
+            const rb::WideRay ray(r);
             __m128 tEntry;
-            const int mask = rb::intersectChildren4(node, ray, rb::wideTMax(kInf), tEntry);
+            const int mask =
+                rb::intersectChildren4(wideNodeOf(box), ray, rb::wideTMax(kInf), tEntry);
             misses += mask != 0xF;
+            const int mask8 = childrenEntered8IfAvailable(wideNodeOf<8>(box), r);
+            misses8 += mask8 != 0xFF && mask8 != -1;
         }
-        THEN("every ray enters its box (all four lanes)") {
+        THEN("every ray enters its box (all four lanes of the SSE test)") {
             CHECK(misses == 0);
+        }
+        THEN("and all eight lanes of the AVX2 test, where the CPU has it") {
+            if (!rb::wide8Available()) WARN("this CPU has no AVX2: the eight-wide test is skipped");
+            CHECK(misses8 == 0);
         }
     }
 }
@@ -827,10 +904,11 @@ SCENARIO("the float slab test keeps a ray whose origin rounds onto a far face of
     // origin lands exactly on X, and the far face then looks 0 away: t₁ = 0 < t₀ = 1, a miss.
     // No widening can stretch 0; only moving the float origin outwards (away from the far face,
     // by more than rounding moved it: WideRay's err) keeps the ray. Without that move (err = 0),
-    // all 2 000 of these rays miss their box (planted and run).
+    // all 2 000 of these rays miss their box (planted and run), in the four-wide test and in
+    // the eight-wide one alike (WideRay8 takes its origins from WideRay).
     GIVEN("2 000 boxes with a float face X, and rays from 10⁻¹²·|X| inside it, nearly parallel") {
         rbtest::Rng rng(2015);
-        int misses = 0;
+        int misses = 0, misses8 = 0;
         for (int k = 0; k < 2000; ++k) {
             const int a = k % 3, b = (a + 1) % 3, c = (a + 2) % 3;
             const double X = randomFloatCoordinate(rng);
@@ -861,9 +939,13 @@ SCENARIO("the float slab test keeps a ray whose origin rounds onto a far face of
             const int mask =
                 rb::intersectChildren4(wideNodeOf(box), ray, rb::wideTMax(kInf), tEntry);
             misses += mask != 0xF;
+            const int mask8 = childrenEntered8IfAvailable(wideNodeOf<8>(box), rb::Ray{o, d});
+            misses8 += mask8 != 0xFF && mask8 != -1;
         }
-        THEN("every ray enters its box") {
+        THEN("every ray enters its box, in the four-wide test and the eight-wide one") {
+            if (!rb::wide8Available()) WARN("this CPU has no AVX2: the eight-wide test is skipped");
             CHECK(misses == 0);
+            CHECK(misses8 == 0);
         }
     }
 }
@@ -886,6 +968,7 @@ SCENARIO("the BVH over instances finds a box hit by a ray that grazes its world 
     GIVEN("2 000 unit boxes, scaled and moved by random doubles, and rays along their faces") {
         const rb::Box box;
         rbtest::Rng rng(2016);
+        const std::vector<NamedLayout> layouts = layoutsHere();
         int hits = 0, mismatches = 0;
         for (int k = 0; k < 2000; ++k) {
             const Vec3 scale(rng.uniform(0.5, 3.0), rng.uniform(0.5, 3.0), rng.uniform(0.5, 3.0));
@@ -905,17 +988,17 @@ SCENARIO("the BVH over instances finds a box hit by a ray that grazes its world 
             d[b] = 1.0;
             d[c] = rng.uniform(-0.1, 0.1);
             const rb::Ray ray{o, d};
-            rb::Hit linearHit, binaryHit, wideHit;
+            rb::Hit linearHit;
             const bool found = rb::LinearAggregate(instances).intersect(ray, kInf, linearHit);
             hits += found;
-            const rb::BVHAggregate binary(instances, rb::BVHLayout::Binary);
-            const rb::BVHAggregate wide(instances, rb::BVHLayout::Wide);
-            if (binary.intersect(ray, kInf, binaryHit) != found) ++mismatches;
-            if (wide.intersect(ray, kInf, wideHit) != found) ++mismatches;
-            if (binary.occluded(ray, kInf) != found || wide.occluded(ray, kInf) != found)
-                ++mismatches;
+            for (const NamedLayout& layout : layouts) {
+                const rb::BVHAggregate bvh(instances, layout.layout);
+                rb::Hit hit;
+                if (bvh.intersect(ray, kInf, hit) != found) ++mismatches;
+                if (bvh.occluded(ray, kInf) != found) ++mismatches;
+            }
         }
-        THEN("both traversals find every hit that testing the instance finds") {
+        THEN("every traversal finds every hit that testing the instance finds") {
             CAPTURE(hits);
             REQUIRE(hits > 100);  // the rays are built to be found this way often
             CHECK(mismatches == 0);
@@ -930,40 +1013,46 @@ SCENARIO("the BVH finds the same closest triangle as testing every triangle",
     GIVEN(
         "the Stanford bunny (3 674 triangles) and 2 000 random rays aimed into its bounds "
         "(fixed seed)") {
-        const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
-        REQUIRE(bunny.triangleCount() > 3000);
-        const auto triangles = bunny.triangles();
-        rbtest::Rng rng(2718);
-        int hits = 0, hitMismatch = 0, tMismatch = 0, triangleMismatch = 0, shadowMismatch = 0;
-        for (int k = 0; k < 2000; ++k) {
-            const rb::Ray ray = rayInto(bunny.bounds(), rng);
-            double tBrute;
-            const long source = bruteForceClosest(triangles, ray, tBrute);
-            rb::ObjectHit oh;
-            const bool found = bunny.intersect(ray, kInf, oh);
-            if (found != (source >= 0)) {
-                ++hitMismatch;
-                continue;
+        for (const NamedLayout& layout : layoutsHere())
+            WHEN(std::string("the mesh's BVH is ") + layout.name) {
+                const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj", layout.layout);
+                REQUIRE(bunny.bvh().layout() == layout.layout);
+                REQUIRE(bunny.triangleCount() > 3000);
+                const auto triangles = bunny.triangles();
+                rbtest::Rng rng(2718);
+                int hits = 0, hitMismatch = 0, tMismatch = 0, triangleMismatch = 0,
+                    shadowMismatch = 0;
+                for (int k = 0; k < 2000; ++k) {
+                    const rb::Ray ray = rayInto(bunny.bounds(), rng);
+                    double tBrute;
+                    const long source = bruteForceClosest(triangles, ray, tBrute);
+                    rb::ObjectHit oh;
+                    const bool found = bunny.intersect(ray, kInf, oh);
+                    if (found != (source >= 0)) {
+                        ++hitMismatch;
+                        continue;
+                    }
+                    // The shadow query over the whole ray agrees with the closest-hit query.
+                    if (bunny.occluded(ray, kInf) != found) ++shadowMismatch;
+                    if (!found) continue;
+                    ++hits;
+                    // Both run the same triangle test on the same triangle, so t agrees to the last
+                    // bits; 1e-12 relative still allows for a different but equally close triangle.
+                    if (std::abs(oh.t - tBrute) > 1e-12 * tBrute) ++tMismatch;
+                    if (oh.primitive != static_cast<std::uint32_t>(source)) ++triangleMismatch;
+                    // A shadow ray that stops just short of the hit is free; one just past it is
+                    // not.
+                    if (bunny.occluded(ray, tBrute * (1 - 1e-9))) ++shadowMismatch;
+                    if (!bunny.occluded(ray, tBrute * (1 + 1e-9))) ++shadowMismatch;
+                }
+                THEN("hit or miss, the distance, the triangle and the shadow verdict all agree") {
+                    CHECK(hits > 500);  // the comparison is about hits, so enough rays must hit
+                    CHECK(hitMismatch == 0);
+                    CHECK(tMismatch == 0);
+                    CHECK(triangleMismatch == 0);
+                    CHECK(shadowMismatch == 0);
+                }
             }
-            // The shadow query over the whole ray agrees with the closest-hit query.
-            if (bunny.occluded(ray, kInf) != found) ++shadowMismatch;
-            if (!found) continue;
-            ++hits;
-            // Both run the same triangle test on the same triangle, so t agrees to the last
-            // bits; 1e-12 relative still allows for a different but equally close triangle.
-            if (std::abs(oh.t - tBrute) > 1e-12 * tBrute) ++tMismatch;
-            if (oh.primitive != static_cast<std::uint32_t>(source)) ++triangleMismatch;
-            // A shadow ray that stops just short of the hit is free; one just past it is not.
-            if (bunny.occluded(ray, tBrute * (1 - 1e-9))) ++shadowMismatch;
-            if (!bunny.occluded(ray, tBrute * (1 + 1e-9))) ++shadowMismatch;
-        }
-        THEN("hit or miss, the distance, the triangle and the shadow verdict all agree") {
-            CHECK(hits > 500);  // the comparison is about hits, so enough rays must hit
-            CHECK(hitMismatch == 0);
-            CHECK(tMismatch == 0);
-            CHECK(triangleMismatch == 0);
-            CHECK(shadowMismatch == 0);
-        }
     }
 }
 // [ch03-bvh-equals-brute-force]
@@ -997,9 +1086,14 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
         const rb::LinearAggregate linear(instances);
         const rb::BVHAggregate bvh(instances);
         const rb::BVHAggregate binary(instances, rb::BVHLayout::Binary);
+        // Every other layout this machine runs, checked against `bvh` (the default, the widest).
+        std::vector<std::unique_ptr<rb::BVHAggregate>> others;
+        for (const NamedLayout& layout : layoutsHere())
+            if (layout.layout != rb::BVHLayout::Binary && layout.layout != bvh.bvh().layout())
+                others.push_back(std::make_unique<rb::BVHAggregate>(instances, layout.layout));
         rb::AABB world;
         for (const rb::Instance& i : instances) world.extend(i.worldBounds);
-        WHEN("3 000 random rays are traced through both") {
+        WHEN("3 000 random rays are traced through all of them") {
             int hits = 0, hitMismatch = 0, instanceMismatch = 0, tMismatch = 0, shadowMismatch = 0;
             for (int k = 0; k < 3000; ++k) {
                 const rb::Ray ray = rayInto(world, rng);
@@ -1010,6 +1104,11 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
                 if (binary.intersect(ray, kInf, c) != foundBvh ||
                     (foundBvh && (c.instance != b.instance || c.t != b.t)))
                     ++hitMismatch;
+                for (const auto& other : others)
+                    if (other->intersect(ray, kInf, c) != foundBvh ||
+                        (foundBvh &&
+                         (c.instance != b.instance || c.t != b.t || c.primitive != b.primitive)))
+                        ++hitMismatch;
                 if (foundLinear != foundBvh) {
                     ++hitMismatch;
                     continue;
@@ -1020,6 +1119,8 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
                 if (bvh.occluded(ray, tMax) != blocked || linear.occluded(ray, tMax) != blocked ||
                     binary.occluded(ray, tMax) != blocked)
                     ++shadowMismatch;
+                for (const auto& other : others)
+                    if (other->occluded(ray, tMax) != blocked) ++shadowMismatch;
                 if (!foundLinear) continue;
                 ++hits;
                 if (a.instance != b.instance || a.primitive != b.primitive) ++instanceMismatch;
@@ -1037,7 +1138,7 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
         }
         THEN(
             "the top-level trees are well formed: each node's box holds its children and each "
-            "instance sits in exactly one leaf, in both layouts") {
+            "instance sits in exactly one leaf, in every layout") {
             const auto& order = binary.bvh().primitiveOrder();
             const auto bounds = [&](std::uint32_t slot) {
                 return instances[order[slot]].worldBounds;
@@ -1048,59 +1149,68 @@ SCENARIO("a two-level BVH over instances finds the same hits as testing every in
             CHECK(report.badLeafBounds == 0);
             CHECK(std::all_of(report.slotSeen.begin(), report.slotSeen.end(),
                               [](int n) { return n == 1; }));
-            const TreeReport wide = walkWide(bvh.bvh(), instances.size(), bounds);
-            CHECK(wide.nodesReached == bvh.bvh().wideNodes().size());
-            CHECK(wide.badChildBounds == 0);
-            CHECK(wide.badLeafBounds == 0);
-            CHECK(std::all_of(wide.slotSeen.begin(), wide.slotSeen.end(),
-                              [](int n) { return n == 1; }));
+            std::vector<const rb::BVH*> wideTrees = {&bvh.bvh()};
+            for (const auto& other : others) wideTrees.push_back(&other->bvh());
+            for (const rb::BVH* tree : wideTrees) {
+                CAPTURE(rb::bvhLayoutDescription(tree->layout()));
+                REQUIRE(tree->primitiveOrder() == order);  // one build, several layouts
+                const TreeReport wide = walkWide(*tree, instances.size(), bounds);
+                CHECK(wide.nodesReached == wideNodeCount(*tree));
+                CHECK(wide.badChildBounds == 0);
+                CHECK(wide.badLeafBounds == 0);
+                CHECK(std::all_of(wide.slotSeen.begin(), wide.slotSeen.end(),
+                                  [](int n) { return n == 1; }));
+            }
         }
     }
 }
 
 SCENARIO("a BVH is well formed: boxes nest, and every primitive is in exactly one leaf",
          "[ch03][ex3.2]") {
-    GIVEN("binary and wide BVHs over the bunny's triangles") {
-        const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
-        const auto triangles = bunny.triangles();
-        const rb::BVH bvh = bvhOver(triangles, rb::BVHLayout::Binary);
-        const rb::BVH wide = bvhOver(triangles, rb::BVHLayout::Wide);
-        const auto bounds = [&](std::uint32_t slot) {
-            rb::AABB b;
-            for (const Vec3& p : triangles[bvh.primitiveOrder()[slot]].v) b.extend(p);
-            return b;
-        };
-        const TreeReport report = walkTree(bvh, triangles.size(), bounds);
-        const TreeReport wideReport = walkWide(wide, triangles.size(), bounds);
-        THEN("every node is reached once from the root, and no node is orphaned") {
-            CHECK(report.nodesReached == bvh.nodes().size());
-            CHECK(wideReport.nodesReached == wide.wideNodes().size());
+    for (const NamedLayout& layout : wideLayoutsHere())
+        GIVEN(std::string("binary and ") + layout.name + " BVHs over the bunny's triangles") {
+            const rb::Mesh bunny(rb::loadObj(kBunnyPath), "bunny.obj");
+            const auto triangles = bunny.triangles();
+            const rb::BVH bvh = bvhOver(triangles, rb::BVHLayout::Binary);
+            const rb::BVH wide = bvhOver(triangles, layout.layout);
+            REQUIRE(wide.layout() == layout.layout);
+            const auto bounds = [&](std::uint32_t slot) {
+                rb::AABB b;
+                for (const Vec3& p : triangles[bvh.primitiveOrder()[slot]].v) b.extend(p);
+                return b;
+            };
+            const TreeReport report = walkTree(bvh, triangles.size(), bounds);
+            const TreeReport wideReport = walkWide(wide, triangles.size(), bounds);
+            THEN("every node is reached once from the root, and no node is orphaned") {
+                CHECK(report.nodesReached == bvh.nodes().size());
+                CHECK(wideReport.nodesReached == wideNodeCount(wide));
+            }
+            THEN(
+                "every node's box contains its children's boxes, and every leaf's box its "
+                "triangles; the wide nodes' float boxes too") {
+                CHECK(report.badChildBounds == 0);
+                CHECK(report.badLeafBounds == 0);
+                CHECK(wideReport.badChildBounds == 0);
+                CHECK(wideReport.badLeafBounds == 0);
+            }
+            THEN("every triangle slot appears in exactly one leaf") {
+                CHECK(std::all_of(report.slotSeen.begin(), report.slotSeen.end(),
+                                  [](int n) { return n == 1; }));
+                CHECK(std::all_of(wideReport.slotSeen.begin(), wideReport.slotSeen.end(),
+                                  [](int n) { return n == 1; }));
+            }
+            THEN("primitiveOrder() is a permutation of 0 … n−1") {
+                std::vector<std::uint32_t> order = bvh.primitiveOrder();
+                std::sort(order.begin(), order.end());
+                bool permutation = order.size() == bunny.triangleCount();
+                for (size_t i = 0; permutation && i < order.size(); ++i)
+                    permutation = order[i] == i;
+                CHECK(permutation);
+            }
+            THEN("the tree fits the traversal's fixed stack (one entry per level descended)") {
+                CHECK(bvh.depth() <= rb::BVH::kStackSize);
+            }
         }
-        THEN(
-            "every node's box contains its children's boxes, and every leaf's box its "
-            "triangles; the wide nodes' float boxes too") {
-            CHECK(report.badChildBounds == 0);
-            CHECK(report.badLeafBounds == 0);
-            CHECK(wideReport.badChildBounds == 0);
-            CHECK(wideReport.badLeafBounds == 0);
-        }
-        THEN("every triangle slot appears in exactly one leaf") {
-            CHECK(std::all_of(report.slotSeen.begin(), report.slotSeen.end(),
-                              [](int n) { return n == 1; }));
-            CHECK(std::all_of(wideReport.slotSeen.begin(), wideReport.slotSeen.end(),
-                              [](int n) { return n == 1; }));
-        }
-        THEN("primitiveOrder() is a permutation of 0 … n−1") {
-            std::vector<std::uint32_t> order = bvh.primitiveOrder();
-            std::sort(order.begin(), order.end());
-            bool permutation = order.size() == bunny.triangleCount();
-            for (size_t i = 0; permutation && i < order.size(); ++i) permutation = order[i] == i;
-            CHECK(permutation);
-        }
-        THEN("the tree fits the traversal's fixed stack (one entry per level descended)") {
-            CHECK(bvh.depth() <= rb::BVH::kStackSize);
-        }
-    }
 }
 
 // [ch03-log-cost]
@@ -1196,10 +1306,14 @@ SCENARIO("a mesh is built once, however many nodes show it, with the layout --bv
             "end\n" +
             rbtest::renderLine();
         const std::string scene = dir.write("scene.lua", lua);
-        for (const char* layout : {"wide", "binary"}) {
-            WHEN(std::string("it is loaded with --bvh=") + layout) {
+        std::vector<std::pair<std::string, rb::BVHLayout>> layouts = {
+            {"wide", rb::bestWideLayout()}};
+        for (const NamedLayout& layout : layoutsHere())
+            layouts.emplace_back(layout.name, layout.layout);
+        for (const auto& [name, expected] : layouts) {
+            WHEN("it is loaded with --bvh=" + name) {
                 rb::SceneLoadOptions options;
-                options.featureOptions["bvh"] = layout;
+                options.featureOptions["bvh"] = name;
                 const auto renders = rb::loadScene(scene, rbtest::chapters(3), options);
                 const auto& instances = renders.at(0).instances;
                 THEN("all 41 instances share one mesh, built with that layout") {
@@ -1207,9 +1321,7 @@ SCENARIO("a mesh is built once, however many nodes show it, with the layout --bv
                     for (const rb::Instance& i : instances) CHECK(i.shape == instances[0].shape);
                     const rb::Mesh* mesh = instances[0].shape->triangleMesh();
                     REQUIRE(mesh != nullptr);
-                    CHECK(mesh->bvh().layout() == (std::string(layout) == "wide"
-                                                       ? rb::BVHLayout::Wide
-                                                       : rb::BVHLayout::Binary));
+                    CHECK(mesh->bvh().layout() == expected);
                 }
             }
         }

@@ -287,9 +287,11 @@ AABB padded(const AABB& b) {
 void BVH::build(std::vector<AABB> primitiveBounds, const BVHBuildOptions& options) {
     nodes_.clear();
     wide_.clear();
+    wide8_.clear();
     order_.clear();
     bounds_ = AABB();
     layout_ = options.layout;
+    if (layout_ == BVHLayout::Wide8 && !wide8Available()) layout_ = BVHLayout::Wide4;
     if (primitiveBounds.empty()) return;
     const size_t n = primitiveBounds.size();
     BuildState s{{}, options};
@@ -310,32 +312,70 @@ void BVH::build(std::vector<AABB> primitiveBounds, const BVHBuildOptions& option
     order_.reserve(n);
     for (const PrimRef& r : s.refs) order_.push_back(r.index);
     std::vector<PrimRef>().swap(s.refs);
-    if (layout_ == BVHLayout::Wide) {
-        wide_ = collapseToWide(tree.nodes);
+    if (layout_ == BVHLayout::Wide4) {
+        wide_ = collapseToWide<4>(tree.nodes);
+    } else if (layout_ == BVHLayout::Wide8) {
+        wide8_ = collapseToWide<8>(tree.nodes);
     } else {
         tree.nodes.shrink_to_fit();
         nodes_ = std::move(tree.nodes);
     }
 }
 
+bool wide8Available() {
+#if RB_HAVE_WIDE8
+    // libgcc's check reads cpuid, and XGETBV for the operating system's support of the 256-bit
+    // registers.
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
+BVHLayout bestWideLayout() {
+    return wide8Available() ? BVHLayout::Wide8 : BVHLayout::Wide4;
+}
+
 BVHLayout bvhLayoutNamed(const std::string& name) {
-    if (name.empty() || name == "wide") return BVHLayout::Wide;
+    if (name.empty() || name == "wide") return bestWideLayout();
     if (name == "binary") return BVHLayout::Binary;
-    throw InputError("--bvh: expected binary or wide, got '" + name + "'");
+    if (name == "wide4") return BVHLayout::Wide4;
+    if (name == "wide8") {
+        if (!wide8Available())
+            throw InputError(
+                "--bvh=wide8: this CPU has no AVX2 (or this build is not for x86-64); use wide4 "
+                "or wide");
+        return BVHLayout::Wide8;
+    }
+    throw InputError("--bvh: expected binary, wide, wide4 or wide8, got '" + name + "'");
+}
+
+const char* bvhLayoutDescription(BVHLayout layout) {
+    switch (layout) {
+        case BVHLayout::Binary:
+            return "binary";
+        case BVHLayout::Wide4:
+            return "wide4 (SSE)";
+        case BVHLayout::Wide8:
+            return "wide8 (AVX2)";
+    }
+    return "?";
 }
 
 namespace {
 
 /// Collapse the binary subtree under node i into wide node `index` of `wide` (already
 /// allocated), recursing into the interior children it keeps.
-void collapseNode(const std::vector<BVHNode>& binary, std::uint32_t i, std::vector<WideNode>& wide,
-                  std::uint32_t index) {
+template <int N>
+void collapseNode(const std::vector<BVHNode>& binary, std::uint32_t i,
+                  std::vector<WideNodeN<N>>& wide, std::uint32_t index) {
     // Step 1: start from the two children, then open the interior child with the largest
-    // surface area until there are four (the nodes a ray is most likely to enter are the ones
+    // surface area until there are N (the nodes a ray is most likely to enter are the ones
     // worth testing together).
-    std::uint32_t kids[4] = {i + 1, binary[i].offset};
+    std::uint32_t kids[N] = {i + 1, binary[i].offset};
     int kidCount = 2;
-    while (kidCount < 4) {
+    while (kidCount < N) {
         int open = -1;
         double largest = -1.0;
         for (int k = 0; k < kidCount; ++k) {
@@ -354,8 +394,8 @@ void collapseNode(const std::vector<BVHNode>& binary, std::uint32_t i, std::vect
         ++kidCount;
     }
     // Step 2: fill in the boxes, rounded outwards to float; unused children get empty boxes.
-    WideNode n{};
-    for (int c = 0; c < 4; ++c)
+    WideNodeN<N> n{};
+    for (int c = 0; c < N; ++c)
         for (int axis = 0; axis < 3; ++axis) {
             n.lo[axis][c] = c < kidCount ? roundDownToFloat(binary[kids[c]].bounds.lo[axis])
                                          : std::numeric_limits<float>::infinity();
@@ -375,20 +415,21 @@ void collapseNode(const std::vector<BVHNode>& binary, std::uint32_t i, std::vect
     }
     wide[index] = n;
     for (int c = 0; c < kidCount; ++c)
-        if (n.count[c] == 0) collapseNode(binary, kids[c], wide, n.child[c]);
+        if (n.count[c] == 0) collapseNode<N>(binary, kids[c], wide, n.child[c]);
 }
 
 }  // namespace
 
-std::vector<WideNode> collapseToWide(const std::vector<BVHNode>& binary) {
-    std::vector<WideNode> wide;
+template <int N>
+std::vector<WideNodeN<N>> collapseToWide(const std::vector<BVHNode>& binary) {
+    std::vector<WideNodeN<N>> wide;
     if (binary.empty()) return wide;
-    wide.reserve(binary.size() / 3 + 1);
+    wide.reserve(binary.size() / (N - 1) + 1);
     wide.emplace_back();
     if (binary[0].count > 0) {
         // A single leaf: a root with one child.
-        WideNode n{};
-        for (int c = 0; c < 4; ++c)
+        WideNodeN<N> n{};
+        for (int c = 0; c < N; ++c)
             for (int axis = 0; axis < 3; ++axis) {
                 n.lo[axis][c] = c == 0 ? roundDownToFloat(binary[0].bounds.lo[axis])
                                        : std::numeric_limits<float>::infinity();
@@ -400,9 +441,12 @@ std::vector<WideNode> collapseToWide(const std::vector<BVHNode>& binary) {
         wide[0] = n;
         return wide;
     }
-    collapseNode(binary, 0, wide, 0);
+    collapseNode<N>(binary, 0, wide, 0);
     wide.shrink_to_fit();
     return wide;
 }
+
+template std::vector<WideNodeN<4>> collapseToWide<4>(const std::vector<BVHNode>&);
+template std::vector<WideNodeN<8>> collapseToWide<8>(const std::vector<BVHNode>&);
 
 }  // namespace rb

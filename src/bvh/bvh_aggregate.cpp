@@ -74,7 +74,7 @@ std::string BVHAggregate::statistics() const {
     bytes += meshBvhBytes;
     char line[256];
     std::snprintf(line, sizeof line, "%s BVH, %zu nodes, %.2f MiB",
-                  bvh_.layout() == BVHLayout::Wide ? "wide" : "binary", nodes, bytes / 1048576.0);
+                  bvhLayoutDescription(bvh_.layout()), nodes, bytes / 1048576.0);
     std::string out = line;
     if (triangles) {
         std::snprintf(line, sizeof line, "; %zu triangles: %.1f bytes/triangle (mesh) + %.1f (BVH)",
@@ -86,7 +86,15 @@ std::string BVHAggregate::statistics() const {
 }
 
 std::unique_ptr<Aggregate> buildBVHAggregate(const std::vector<Instance>& instances) {
-    return std::make_unique<BVHAggregate>(instances, BVHLayout::Wide);
+    return std::make_unique<BVHAggregate>(instances, bestWideLayout());
+}
+
+std::unique_ptr<Aggregate> buildWide4BVHAggregate(const std::vector<Instance>& instances) {
+    return std::make_unique<BVHAggregate>(instances, BVHLayout::Wide4);
+}
+
+std::unique_ptr<Aggregate> buildWide8BVHAggregate(const std::vector<Instance>& instances) {
+    return std::make_unique<BVHAggregate>(instances, BVHLayout::Wide8);
 }
 
 std::unique_ptr<Aggregate> buildBinaryBVHAggregate(const std::vector<Instance>& instances) {

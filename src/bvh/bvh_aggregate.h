@@ -15,7 +15,7 @@ Feature bvhFeature();
 class BVHAggregate final : public Aggregate {
   public:
     explicit BVHAggregate(const std::vector<Instance>& instances,
-                          BVHLayout layout = BVHLayout::Wide);
+                          BVHLayout layout = bestWideLayout());
     bool intersect(const Ray& ray, double tMax, Hit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
     /// Nodes and bytes of both levels, and bytes per triangle of the meshes.
@@ -27,9 +27,13 @@ class BVHAggregate final : public Aggregate {
     BVH bvh_;
 };
 
-/// An AggregateBuilder for BVHAggregate.
+/// An AggregateBuilder for BVHAggregate with the widest layout this CPU runs (--bvh=wide).
 std::unique_ptr<Aggregate> buildBVHAggregate(const std::vector<Instance>& instances);
 /// An AggregateBuilder for BVHAggregate with the lesson's binary traversal (--bvh=binary).
 std::unique_ptr<Aggregate> buildBinaryBVHAggregate(const std::vector<Instance>& instances);
+/// An AggregateBuilder for BVHAggregate with four-wide SSE nodes (--bvh=wide4).
+std::unique_ptr<Aggregate> buildWide4BVHAggregate(const std::vector<Instance>& instances);
+/// An AggregateBuilder for BVHAggregate with eight-wide AVX2 nodes (--bvh=wide8).
+std::unique_ptr<Aggregate> buildWide8BVHAggregate(const std::vector<Instance>& instances);
 
 }  // namespace rb

@@ -27,7 +27,7 @@ class Mesh final : public Shape {
   public:
     /// Build from OBJ data. Degenerate (zero-area) triangles are dropped; throws InputError
     /// (naming `name`) when no triangle is left. `layout` picks the BVH traversal.
-    Mesh(const ObjData& data, const std::string& name, BVHLayout layout = BVHLayout::Wide);
+    Mesh(const ObjData& data, const std::string& name, BVHLayout layout = bestWideLayout());
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
     AABB bounds() const override { return bounds_; }

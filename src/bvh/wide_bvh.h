@@ -1,6 +1,7 @@
 /// \file
 /// The wide BVH: the binary build tree collapsed into nodes of four children whose boxes, in
-/// single precision, are tested together with SSE (every x86-64 has it). Chapter 3's "going
+/// single precision, are tested together with SSE (every x86-64 has it); wide_bvh8.h does the
+/// same eight at a time with AVX2. Chapter 3's "going
 /// further" section. The boxes are rounded outwards and the slab test is made conservative in
 /// the manner of Ize, "Robust BVH Ray Traversal" (JCGT 2013), so it never misses a box that the
 /// exact ray enters.
@@ -21,21 +22,29 @@ namespace rb {
 
 struct BVHNode;
 
-/// A node of four children: their boxes in float, axis by axis (so one load fetches one plane of
-/// all four), and for each child either a node index or a leaf's range. An unused child has an
-/// empty box (lo = +∞, hi = −∞), which no ray enters. 128 bytes, two cache lines.
-struct alignas(64) WideNode {
-    float lo[3][4];          ///< [axis][child], rounded down.
-    float hi[3][4];          ///< [axis][child], rounded up.
-    std::uint32_t child[4];  ///< Interior: node index. Leaf: first primitive slot.
-    std::uint16_t count[4];  ///< 0 for an interior child; primitives in a leaf.
+/// A node of N children (4 for SSE, 8 for AVX2): their boxes in float, axis by axis (so one load
+/// fetches one plane of all N), and for each child either a node index or a leaf's range. An
+/// unused child has an empty box (lo = +∞, hi = −∞), which no ray enters. N = 4: 128 bytes, two
+/// cache lines; N = 8: 256 bytes, four.
+template <int N>
+struct alignas(64) WideNodeN {
+    float lo[3][N];          ///< [axis][child], rounded down.
+    float hi[3][N];          ///< [axis][child], rounded up.
+    std::uint32_t child[N];  ///< Interior: node index. Leaf: first primitive slot.
+    std::uint16_t count[N];  ///< 0 for an interior child; primitives in a leaf.
 };
+/// The four-wide node, tested with SSE (every x86-64 has it).
+using WideNode = WideNodeN<4>;
+/// The eight-wide node, tested with AVX2 (wide_bvh8.h) where the CPU has it.
+using WideNode8 = WideNodeN<8>;
 static_assert(sizeof(WideNode) == 128);
+static_assert(sizeof(WideNode8) == 256);
 
-/// Collapse a binary build tree (first child after its parent, second at `offset`) into wide
-/// nodes: each wide node takes the four largest subtrees below one binary node. Leaves stay as
-/// they are. Node 0 of the result is the root.
-std::vector<WideNode> collapseToWide(const std::vector<BVHNode>& binary);
+/// Collapse a binary build tree (first child after its parent, second at `offset`) into nodes
+/// of N children: each wide node takes the N largest subtrees below one binary node. Leaves stay
+/// as they are. Node 0 of the result is the root. Instantiated for N = 4 and 8.
+template <int N>
+std::vector<WideNodeN<N>> collapseToWide(const std::vector<BVHNode>& binary);
 
 /// How much the far end of a float slab interval is stretched. Each t carries three roundings
 /// (the subtraction, the reciprocal, the product: relative error γ₃ = 3u/(1 − 3u), u = 2⁻²⁴);
@@ -58,14 +67,14 @@ struct WideRay {
         // x, y, z in lanes 0–2, converted to float (round to nearest).
         const __m128 o = _mm_movelh_ps(_mm_cvtpd_ps(_mm_set_pd(r.o.y, r.o.x)),
                                        _mm_cvtpd_ps(_mm_set_pd(0.0, r.o.z)));
-        const __m128 invD = _mm_movelh_ps(
-            _mm_cvtpd_ps(_mm_div_pd(_mm_set1_pd(1.0), _mm_set_pd(r.d.y, r.d.x))),
-            _mm_cvtpd_ps(_mm_div_pd(_mm_set1_pd(1.0), _mm_set_pd(1.0, r.d.z))));
+        const __m128 invD =
+            _mm_movelh_ps(_mm_cvtpd_ps(_mm_div_pd(_mm_set1_pd(1.0), _mm_set_pd(r.d.y, r.d.x))),
+                          _mm_cvtpd_ps(_mm_div_pd(_mm_set1_pd(1.0), _mm_set_pd(1.0, r.d.z))));
         // |o − o_f| ≤ ½ ulp(o_f) ≤ 2⁻²⁴|o_f| for normal o_f, ≤ 2⁻¹⁵⁰ below; err exceeds both, and
         // o_f ± err rounds to a float at least one ulp away, so it stays on its side of o.
         const __m128 absO = _mm_andnot_ps(_mm_set1_ps(-0.0f), o);
-        const __m128 err = _mm_add_ps(_mm_mul_ps(absO, _mm_set1_ps(1.0f / (1 << 23))),
-                                      _mm_set1_ps(0x1p-149f));
+        const __m128 err =
+            _mm_add_ps(_mm_mul_ps(absO, _mm_set1_ps(1.0f / (1 << 23))), _mm_set1_ps(0x1p-149f));
         alignas(16) float up[4], down[4], inv[4];
         _mm_store_ps(up, _mm_add_ps(o, err));
         _mm_store_ps(down, _mm_sub_ps(o, err));
@@ -110,17 +119,18 @@ struct WideRay {
 
 /// A traversal's pending work: node indices and leaf ranges, each with the distance at which
 /// the ray enters its box. Reference and count share one 64-bit word so that moving an entry is
-/// two register moves.
+/// two register moves. N is the width of the nodes.
+template <int N = 4>
 class WideStack {
   public:
-    /// Entries: a node pushes at most three, and the build keeps the tree at most 80 binary
-    /// levels deep (bvh.h), so the wide tree is no deeper.
-    static constexpr int kSize = 256;
+    /// Entries: a node pushes at most N − 1 more than it pops, and the build keeps the tree at
+    /// most 80 binary levels deep (bvh.h), so the wide tree is no deeper.
+    static constexpr int kSize = (N - 1) * 80 + 16;
 
     bool empty() const { return top_ == 0; }
     int size() const { return top_; }
     /// Push child c of node n, entered at tEntry.
-    void push(const WideNode& n, int c, float tEntry) {
+    void push(const WideNodeN<N>& n, int c, float tEntry) {
         key_[top_] = std::uint64_t{n.count[c]} << 32 | n.child[c];
         t_[top_++] = tEntry;
     }
@@ -148,6 +158,7 @@ class WideStack {
     float t_[kSize];
     int top_ = 0;
 };
+static_assert(WideStack<4>::kSize == 256);
 
 /// The closest hit so far, rounded up to float and stretched, in all four lanes.
 inline __m128 wideTMax(double tMax) {
@@ -165,7 +176,7 @@ template <class LeafTest>
     if (nodes.empty()) return false;
     const WideRay r(ray);
     __m128 tMaxF = wideTMax(tMax);
-    WideStack stack;
+    WideStack<4> stack;
     bool found = false;
     std::uint32_t ref = 0, count = 0;  // start at the root node
     for (;;) {
@@ -229,7 +240,7 @@ template <class LeafTest>
     if (nodes.empty()) return false;
     const WideRay r(ray);
     const __m128 tMaxF = wideTMax(tMax);
-    WideStack stack;
+    WideStack<4> stack;
     std::uint32_t ref = 0, count = 0;  // start at the root node
     for (;;) {
         const WideNode& n = nodes[ref];

@@ -3,8 +3,11 @@
 // rtcOccluded1), medians of alternating runs, and a per-ray check that both find the same hits.
 // A benchmark for `make bench`, not a test.
 //
-// usage: bvh_vs_embree file.obj [--threads N] [--runs N] [--bvh binary|wide]
-//        (defaults: 1 thread, 5 runs, wide)
+// usage: bvh_vs_embree file.obj [--threads N] [--runs N] [--bvh LAYOUT[,LAYOUT...]]
+//        (defaults: 1 thread, 5 runs, wide: the widest layout this CPU runs). With several
+//        layouts (e.g. --bvh wide4,wide8), each run traces every layout, then Embree, in turn, so
+//        each layout is compared with the same Embree under the same load; the "target" lines
+//        are the first layout's.
 //
 // The ray sets (tests/perf/ray_sets.h): (a) coherent camera rays, 1024x1024, 45° fov, from 1.6
 // bounding radii, looking at the box centre along -z; (b) incoherent rays from a sphere of 2
@@ -23,6 +26,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bvh/mesh.h"
 #include "bvh/obj.h"
@@ -216,16 +220,21 @@ struct Settings {
     std::string obj;
     int threads = 1;
     int runs = 5;
-    rb::BVHLayout layout = rb::BVHLayout::Wide;
+    std::vector<rb::BVHLayout> layouts;  ///< Empty: the default, rb::bestWideLayout().
 };
 
-/// Parse `file.obj [--threads N] [--runs N]` (a bare number is the run count).
+/// Parse `file.obj [--threads N] [--runs N] [--bvh L1,L2...]` (a bare number is the run count).
 Settings parse(int argc, char** argv) {
     Settings s;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--bvh" && i + 1 < argc) {
-            s.layout = rb::bvhLayoutNamed(argv[++i]);
+            const std::string list = argv[++i];
+            for (size_t start = 0; start <= list.size();) {
+                const size_t comma = std::min(list.find(',', start), list.size());
+                s.layouts.push_back(rb::bvhLayoutNamed(list.substr(start, comma - start)));
+                start = comma + 1;
+            }
         } else if ((a == "--threads" || a == "--runs") && i + 1 < argc) {
             const int v = std::max(1, std::atoi(argv[++i]));
             (a == "--threads" ? s.threads : s.runs) = v;
@@ -238,6 +247,7 @@ Settings parse(int argc, char** argv) {
         }
     }
     if (s.obj.empty()) throw rb::InputError("no OBJ file given");
+    if (s.layouts.empty()) s.layouts.push_back(rb::bestWideLayout());
     return s;
 }
 
@@ -247,13 +257,15 @@ int run(const Settings& s) {
     omp_set_num_threads(s.threads);
 
     // Build times, alternating raybook and Embree.
+    // The first layout's build is timed; the others are built once, after.
     std::vector<double> rbBuild, emBuild;
-    std::unique_ptr<rb::Mesh> mesh;
+    std::vector<std::unique_ptr<rb::Mesh>> meshes(s.layouts.size());
+    std::unique_ptr<rb::Mesh>& mesh = meshes[0];
     std::unique_ptr<EmbreeScene> embree;
     for (int i = 0; i < s.runs; ++i) {
         mesh.reset();
         auto t0 = Clock::now();
-        mesh = std::make_unique<rb::Mesh>(data, s.obj, s.layout);
+        mesh = std::make_unique<rb::Mesh>(data, s.obj, s.layouts[0]);
         rbBuild.push_back(seconds(t0));
         embree.reset();
         t0 = Clock::now();
@@ -261,6 +273,8 @@ int run(const Settings& s) {
         emBuild.push_back(seconds(t0));
     }
     const Spread rbB = spread(rbBuild), emB = spread(emBuild);
+    for (size_t l = 1; l < s.layouts.size(); ++l)
+        meshes[l] = std::make_unique<rb::Mesh>(data, s.obj, s.layouts[l]);
 
     const rb::AABB box = mesh->bounds();
     const auto camera = toFloatPrecision(rbperf::cameraRays(box, 1024));
@@ -273,17 +287,23 @@ int run(const Settings& s) {
         RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, s.obj.c_str(),
         data.triangles.size(), s.threads, s.threads == 1 ? "" : "s", s.runs);
     std::printf(
-        "  build ms: raybook %s (rb::Mesh: binned SAH, collapsed to 4-wide, triangles "
+        "  build ms: raybook %s (rb::Mesh: binned SAH, %s, triangles "
         "packed), Embree %s (medium quality); %d thread%s; raybook/Embree %.2f\n",
-        show(rbB, 1e3, "%.1f").c_str(), show(emB, 1e3, "%.1f").c_str(), s.threads,
-        s.threads == 1 ? "" : "s", rbB.median / emB.median);
+        show(rbB, 1e3, "%.1f").c_str(), rb::bvhLayoutDescription(mesh->bvh().layout()),
+        show(emB, 1e3, "%.1f").c_str(), s.threads, s.threads == 1 ? "" : "s",
+        rbB.median / emB.median);
     const double n = static_cast<double>(mesh->triangleCount());
     const double meshBytes = static_cast<double>(mesh->triangleBytes()) / n;
     const double bvhBytes = static_cast<double>(mesh->bvh().nodeBytes()) / n;
-    std::printf(
-        "  memory: %.1f bytes/triangle (triangle packs and vertices %.1f, BVH nodes %.1f)\n",
-        meshBytes + bvhBytes, meshBytes, bvhBytes);
-    std::printf("  %-24s %-24s %-24s %-8s %s\n", "rays", "raybook Mrays/s", "Embree Mrays/s",
+    for (const auto& m : meshes)
+        std::printf(
+            "  memory, %s: %.1f bytes/triangle (triangle packs and vertices %.1f, BVH nodes "
+            "%.1f)\n",
+            rb::bvhLayoutDescription(m->bvh().layout()),
+            static_cast<double>(m->triangleBytes() + m->bvh().nodeBytes()) / n,
+            static_cast<double>(m->triangleBytes()) / n,
+            static_cast<double>(m->bvh().nodeBytes()) / n);
+    std::printf("  %-36s %-24s %-24s %-8s %s\n", "rays", "raybook Mrays/s", "Embree Mrays/s",
                 "rb/Embree", "agreement (hits raybook/Embree, hit-miss mismatches)");
     struct Set {
         const char* name;
@@ -297,25 +317,40 @@ int run(const Settings& s) {
     for (const Set& set : sets) {
         const Query rbQuery = set.anyHit ? raybookAny : raybookClosest;
         const Query emQuery = set.anyHit ? embreeAny : embreeClosest;
-        std::vector<float> outA(set.rays->size()), outB(set.rays->size());
-        std::vector<double> a, b;
+        const size_t layouts = meshes.size();
+        std::vector<std::vector<float>> outA(layouts, std::vector<float>(set.rays->size()));
+        std::vector<float> outB(set.rays->size());
+        std::vector<std::vector<double>> a(layouts);
+        std::vector<double> b;
         for (int i = 0; i < s.runs; ++i) {
-            a.push_back(rbQuery(mesh.get(), *set.rays, s.threads, outA));
+            for (size_t l = 0; l < layouts; ++l)
+                a[l].push_back(rbQuery(meshes[l].get(), *set.rays, s.threads, outA[l]));
             b.push_back(emQuery(embree.get(), *set.rays, s.threads, outB));
         }
-        const Spread sa = spread(a), sb = spread(b);
-        ratios.emplace_back(set.key, sa.median / sb.median);
-        const Agreement g = compare(outA, outB, set.anyHit);
-        char agreement[160];
-        std::snprintf(agreement, sizeof agreement, "%zu/%zu, %zu mismatch%s (%.1f ppm)", g.hitsA,
-                      g.hitsB, g.hitMissMismatches, g.hitMissMismatches == 1 ? "" : "es",
-                      1e6 * g.hitMissMismatches / set.rays->size());
-        std::printf("  %-24s %-24s %-24s %-8.2f %s", set.name, show(sa, 1e-6).c_str(),
-                    show(sb, 1e-6).c_str(), sa.median / sb.median, agreement);
-        if (!set.anyHit)
-            std::printf(", %zu distance%s off by >1e-4", g.distanceMismatches,
-                        g.distanceMismatches == 1 ? "" : "s");
-        std::printf("\n");
+        const Spread sb = spread(b);
+        for (size_t l = 0; l < layouts; ++l) {
+            const Spread sa = spread(a[l]);
+            if (l == 0) ratios.emplace_back(set.key, sa.median / sb.median);
+            // Every layout must find exactly the same hits.
+            if (outA[l] != outA[0])
+                std::printf("  (%s and %s DISAGREE on some rays)\n",
+                            rb::bvhLayoutDescription(meshes[l]->bvh().layout()),
+                            rb::bvhLayoutDescription(meshes[0]->bvh().layout()));
+            const Agreement g = compare(outA[l], outB, set.anyHit);
+            char agreement[160];
+            std::snprintf(agreement, sizeof agreement, "%zu/%zu, %zu mismatch%s (%.1f ppm)",
+                          g.hitsA, g.hitsB, g.hitMissMismatches,
+                          g.hitMissMismatches == 1 ? "" : "es",
+                          1e6 * g.hitMissMismatches / set.rays->size());
+            const std::string name =
+                std::string(set.name) + ", " + rb::bvhLayoutDescription(meshes[l]->bvh().layout());
+            std::printf("  %-36s %-24s %-24s %-8.2f %s", name.c_str(), show(sa, 1e-6).c_str(),
+                        show(sb, 1e-6).c_str(), sa.median / sb.median, agreement);
+            if (!set.anyHit)
+                std::printf(", %zu distance%s off by >1e-4", g.distanceMismatches,
+                            g.distanceMismatches == 1 ? "" : "s");
+            std::printf("\n");
+        }
     }
     std::printf(
         "  targets (issue 12): raybook/Embree >= 1.0 coherent, >= 0.7 incoherent, >= 0.8 shadow; "
@@ -335,7 +370,7 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
         std::fprintf(stderr,
                      "bvh_vs_embree: %s\nusage: bvh_vs_embree file.obj [--threads N] [--runs N] "
-                     "[--bvh binary|wide]\n",
+                     "[--bvh binary|wide|wide4|wide8[,...]]\n",
                      e.what());
         return 2;
     }

@@ -1,0 +1,196 @@
+/// \file
+/// The eight-wide BVH: the same tree as wide_bvh.h collapsed into nodes of eight children, whose
+/// boxes are tested together with AVX2. Chapter 3's "going further" section. Only x86-64 has
+/// it, and only some x86-64 CPUs: every function here is compiled for AVX2 alone (the
+/// `target("avx2")` attribute, not a compiler flag, so no AVX2 instruction reaches code that
+/// runs before the check), and the BVH takes this path only after wide8Available() said yes.
+/// Elsewhere (another CPU family, or the WebAssembly build) RB_HAVE_WIDE8 is 0 and the
+/// four-wide SSE path is the widest.
+#pragma once
+
+#include "bvh/wide_bvh.h"
+
+#if defined(__x86_64__) && !defined(__EMSCRIPTEN__)
+#define RB_HAVE_WIDE8 1
+#else
+#define RB_HAVE_WIDE8 0
+#endif
+
+namespace rb {
+
+/// True when this build has the eight-wide path and this CPU (and its operating system, which
+/// must save the 256-bit registers) runs AVX2. Asked once per BVH build, not per ray.
+bool wide8Available();
+
+}  // namespace rb
+
+#if RB_HAVE_WIDE8
+
+#include <immintrin.h>
+
+/// The eight-wide functions' attribute: AVX2, and nothing more. Not FMA: contracting a·b + c
+/// into one rounding would change the exact triangle test's bits (the leaf tests are inlined
+/// into these functions), and the images must not depend on the path.
+#define RB_AVX2 gnu::target("avx2")
+
+namespace rb {
+
+/// The ray of WideRay, each value in all eight lanes; the plane offsets are those of a
+/// WideNode8 (lo[3][8], then hi[3][8]), twice those of a WideNode.
+struct WideRay8 {
+    __m256 oNear[3], oFar[3], invDNear[3], invDFar[3];
+    int nearPlane[3], farPlane[3];  ///< Offsets, in floats, of the near and far planes in a node.
+
+    [[gnu::always_inline, RB_AVX2]] explicit WideRay8(const WideRay& r) {
+        for (int axis = 0; axis < 3; ++axis) {
+            oNear[axis] = _mm256_set_m128(r.oNear[axis], r.oNear[axis]);
+            oFar[axis] = _mm256_set_m128(r.oFar[axis], r.oFar[axis]);
+            invDNear[axis] = _mm256_set_m128(r.invDNear[axis], r.invDNear[axis]);
+            invDFar[axis] = _mm256_set_m128(r.invDFar[axis], r.invDFar[axis]);
+            nearPlane[axis] = 2 * r.nearPlane[axis];
+            farPlane[axis] = 2 * r.farPlane[axis];
+        }
+    }
+};
+
+// [wide8-slab-test]
+/// The slab test of intersectChildren4 against the eight children of n at once: bit c of the
+/// result is set when the ray enters child c for some t in (0, tMax], with the entry distance in
+/// tEntry lane c. The same arithmetic, lane for lane, so the same margins make it conservative:
+/// the far planes use the reciprocal stretched by kFarWidening, and `tMax` is the closest hit
+/// so far rounded up to float and stretched.
+[[gnu::always_inline, RB_AVX2]] inline int intersectChildren8(const WideNode8& n, const WideRay8& r,
+                                                              __m256 tMax, __m256& tEntry) {
+    const float* planes = &n.lo[0][0];
+    __m256 t0 = _mm256_setzero_ps(), t1 = tMax;
+    for (int axis = 0; axis < 3; ++axis) {
+        // Near and far planes by the sign of the direction, eight children at a time.
+        const __m256 tNear =
+            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(planes + r.nearPlane[axis]), r.oNear[axis]),
+                          r.invDNear[axis]);
+        const __m256 tFar =
+            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(planes + r.farPlane[axis]), r.oFar[axis]),
+                          r.invDFar[axis]);
+        // vmaxps/vminps return their second operand when either is NaN, as maxps/minps do.
+        t0 = _mm256_max_ps(tNear, t0);
+        t1 = _mm256_min_ps(tFar, t1);
+    }
+    tEntry = t0;
+    return _mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+}
+// [wide8-slab-test]
+
+/// The closest hit so far, rounded up to float and stretched, in all eight lanes.
+[[gnu::always_inline, RB_AVX2]] inline __m256 wideTMax8(double tMax) {
+    return _mm256_set1_ps(roundUpToFloat(tMax) * kFarWidening);
+}
+
+// [wide8-traverse]
+/// closestWide over eight-wide nodes: the same walk (children hit visited nearest first, the
+/// others waiting on the stack with their entry distance), eight boxes per node.
+template <class LeafTest>
+[[gnu::always_inline, RB_AVX2]] inline bool closestWide8(const std::vector<WideNode8>& nodes,
+                                                         const Ray& ray, double& tMax,
+                                                         LeafTest&& leaf) {
+    if (nodes.empty()) return false;
+    const WideRay8 r{WideRay(ray)};
+    __m256 tMaxF = wideTMax8(tMax);
+    WideStack<8> stack;
+    bool found = false;
+    std::uint32_t ref = 0, count = 0;  // start at the root node
+    for (;;) {
+        if (count > 0) {
+            // A leaf: test its primitives.
+            if (leaf(ref, count, tMax)) {
+                found = true;
+                tMaxF = wideTMax8(tMax);
+            }
+        } else {
+            // A node: which children does the ray enter, and where?
+            const WideNode8& n = nodes[ref];
+            __m256 tEntry;
+            int mask = intersectChildren8(n, r, tMaxF, tEntry);
+            if (mask != 0) {
+                const int c = __builtin_ctz(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    // One child: go straight on.
+                    ref = n.child[c];
+                    count = n.count[c];
+                    continue;
+                }
+                alignas(32) float t[8];
+                _mm256_store_ps(t, tEntry);
+                const int k = __builtin_ctz(mask);
+                if ((mask & (mask - 1)) == 0) {
+                    // Two: wait on the farther, go on with the nearer.
+                    const bool kFirst = t[k] < t[c];
+                    stack.push(n, kFirst ? c : k, kFirst ? t[c] : t[k]);
+                    ref = n.child[kFirst ? k : c];
+                    count = n.count[kFirst ? k : c];
+                    continue;
+                }
+                // More: push them all, nearest on top, and continue with the nearest.
+                const int first = stack.size();
+                stack.push(n, c, t[c]);
+                for (; mask != 0; mask &= mask - 1) {
+                    const int k = __builtin_ctz(mask);
+                    stack.push(n, k, t[k]);
+                }
+                stack.sortFrom(first);
+                stack.pop(ref, count);
+                continue;
+            }
+        }
+        // Pop the nearest pending entry that can still hold a closer hit.
+        stack.dropBeyond(_mm256_cvtss_f32(tMaxF));
+        if (stack.empty()) return found;
+        stack.pop(ref, count);
+    }
+}
+// [wide8-traverse]
+
+/// anyWide over eight-wide nodes: stops at the first leaf for which leaf(first, count, tMax)
+/// returns true.
+template <class LeafTest>
+[[gnu::always_inline, RB_AVX2]] inline bool anyWide8(const std::vector<WideNode8>& nodes,
+                                                     const Ray& ray, double tMax, LeafTest&& leaf) {
+    if (nodes.empty()) return false;
+    const WideRay8 r{WideRay(ray)};
+    const __m256 tMaxF = wideTMax8(tMax);
+    WideStack<8> stack;
+    std::uint32_t ref = 0, count = 0;  // start at the root node
+    for (;;) {
+        const WideNode8& n = nodes[ref];
+        __m256 tEntry;
+        for (int mask = intersectChildren8(n, r, tMaxF, tEntry); mask; mask &= mask - 1) {
+            const int c = __builtin_ctz(mask);
+            if (n.count[c] == 0)
+                stack.push(n, c, 0.0f);
+            else if (leaf(n.child[c], n.count[c], tMax))
+                return true;
+        }
+        if (stack.empty()) return false;
+        stack.pop(ref, count);
+    }
+}
+
+/// closestWide8 as a function of its own, compiled for AVX2, that a caller compiled for any
+/// x86-64 may call (a function cannot be inlined into one with fewer instructions). The leaf
+/// test is inlined into it.
+template <class LeafTest>
+[[gnu::noinline, RB_AVX2]] bool closestWide8Call(const std::vector<WideNode8>& nodes,
+                                                 const Ray& ray, double& tMax, LeafTest& leaf) {
+    return closestWide8(nodes, ray, tMax, leaf);
+}
+
+/// anyWide8 as a function of its own, compiled for AVX2 (see closestWide8Call).
+template <class LeafTest>
+[[gnu::noinline, RB_AVX2]] bool anyWide8Call(const std::vector<WideNode8>& nodes, const Ray& ray,
+                                             double tMax, LeafTest& leaf) {
+    return anyWide8(nodes, ray, tMax, leaf);
+}
+
+}  // namespace rb
+
+#endif  // RB_HAVE_WIDE8
