@@ -20,7 +20,8 @@ FUZZ_TARGETS := obj lua_scene options
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: deps bench-deps mpi-deps mpi configure rt test test-exercises test-assignments assignment grade \
-        test-sanitize sanitize-build demo docs golden-update bench charts fuzz clean $(CHAPTER_TARGETS)
+        test-sanitize sanitize-build demo docs golden-update bench charts fuzz web clean \
+        $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
 deps:
@@ -207,5 +208,21 @@ fuzz:
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_TARGETS))
 	bash tests/fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
+# make web: rt as WebAssembly (src/web/README.md), for the docs' live panels: Debian's
+# emscripten builds build-web/rt_web.js from the same sources, and the page's Lua (wasmoon, from
+# the npm registry, the version pinned in src/web/package.json) goes to build-web/npm. emcc
+# needs NODE_PATH to find Debian's acorn (DESIGN section 10).
+WEB_BUILD ?= build-web
+WEB_DEBS  := emscripten nodejs npm chromium
+web:
+	@$(MAKE) --no-print-directory deps DEBS="$(WEB_DEBS)"
+	@[ -f $(WEB_BUILD)/CMakeCache.txt ] || NODE_PATH=/usr/share/nodejs emcmake cmake -S . -B $(WEB_BUILD) \
+	  -DCMAKE_BUILD_TYPE=Release
+	NODE_PATH=/usr/share/nodejs cmake --build $(WEB_BUILD) -j $(JOBS) --target rt_web
+	@if [ -f src/web/package-lock.json ]; then \
+	  mkdir -p $(WEB_BUILD)/npm && cp src/web/package.json src/web/package-lock.json $(WEB_BUILD)/npm/ && \
+	  (cd $(WEB_BUILD)/npm && npm ci --silent --no-audit --no-fund); \
+	fi
+
 clean:
-	rm -rf $(BUILD) $(FUZZ_BUILD) $(SANITIZE_BUILD) rt
+	rm -rf $(BUILD) $(FUZZ_BUILD) $(SANITIZE_BUILD) $(WEB_BUILD) rt

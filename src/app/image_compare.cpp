@@ -18,6 +18,8 @@
 #include <string_view>
 #include <system_error>
 
+#include "core/from_chars.h"
+
 namespace rb::golden {
 
 namespace {
@@ -37,7 +39,7 @@ std::string_view trim(std::string_view s) {
 template <typename T>
 bool parse_number(std::string_view text, T& value) {
     const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    const auto [ptr, ec] = rb::fromChars(text.data(), end, value);
     return ec == std::errc() && ptr == end && !text.empty();
 }
 

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "core/from_chars.h"
 #include "core/image.h"
 
 namespace rb {
@@ -15,7 +16,7 @@ namespace {
 long long parseInteger(const std::string& option, const std::string& text, long long lo,
                        long long hi) {
     long long v = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    const auto [end, ec] = rb::fromChars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
         throw InputError(option + ": expected a whole number from " + std::to_string(lo) + " to " +
                          std::to_string(hi) + ", got '" + text + "'");

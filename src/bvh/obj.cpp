@@ -17,6 +17,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/from_chars.h"
 
 namespace rb {
 namespace {
@@ -80,7 +81,7 @@ double parseNumber(std::string_view token, const LineContext& ctx) {
     double value = 0.0;
     const char* first = digits.data();
     const char* last = digits.data() + digits.size();
-    const auto [ptr, ec] = std::from_chars(first, last, value);
+    const auto [ptr, ec] = rb::fromChars(first, last, value);
     if (ptr != last || ec == std::errc::invalid_argument) {
         ctx.fail(quoted(token) + " is not a number");
     }
@@ -124,7 +125,7 @@ int resolveIndex(std::string_view text, std::string_view corner, const IndexKind
     // Parse the integer; it must fill the whole field
     long long index = 0;
     const char* last = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), last, index);
+    const auto [ptr, ec] = rb::fromChars(text.data(), last, index);
     if (text.empty() || ptr != last || ec == std::errc::invalid_argument) {
         // Name the corner too when the field is only part of it ("1/a/2")
         const std::string where = text == corner ? "" : " in corner " + quoted(corner);

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/from_chars.h"
 
 namespace rb {
 namespace {
@@ -22,7 +23,7 @@ std::uint64_t cgroupLimit(const char* path) {
     std::string text;
     if (!(in >> text) || text == "max") return std::numeric_limits<std::uint64_t>::max();
     std::uint64_t value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    const auto [end, ec] = rb::fromChars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc() || end != text.data() + text.size())
         return std::numeric_limits<std::uint64_t>::max();
     return value;
@@ -124,7 +125,7 @@ MemoryBudget memoryBudgetFromOption(const std::string& size) {
     double number = 0.0;
     const char* first = size.data();
     const char* last = size.data() + size.size();
-    const auto [end, ec] = std::from_chars(first, last, number);
+    const auto [end, ec] = rb::fromChars(first, last, number);
     if (ec != std::errc() || end == first || !std::isfinite(number) || number < 0) throw fail();
     const std::uint64_t multiplier = suffixMultiplier(std::string(end, last));
     if (multiplier == 0) throw fail();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/from_chars.h"
 #include "core/instance.h"
 #include "core/scene_graph.h"
 
@@ -58,7 +59,7 @@ inline std::string formatNumber(double value) {
 /// A feature's command-line number (`--option=text`), or InputError naming the option.
 inline double parseNumberOption(const std::string& option, const std::string& text) {
     double v = 0.0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    const auto [end, ec] = rb::fromChars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
         throw InputError(option + ": expected a number, got '" + text + "'");
     return v;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/from_chars.h"
 #include "core/material.h"
 #include "core/render_context.h"
 #include "glossy/lobe_samplers.h"
@@ -42,7 +43,7 @@ namespace {
 /// A whole number from 0 to 65536, or InputError naming `what`.
 int parseSampleCount(const std::string& what, const std::string& text) {
     int v = -1;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    const auto [end, ec] = rb::fromChars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || v < 0 || v > 65536)
         throw InputError(what + ": expected a whole number from 0 to 65536, got '" + text + "'");
     return v;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/from_chars.h"
 #include "core/image.h"
 
 namespace rb {
@@ -165,7 +166,7 @@ std::string panelPng(const WarpRun& run, const std::function<Rgb(size_t bin)>& c
 long long wholeNumber(const std::string& option, const std::string& text, long long lo,
                       long long hi) {
     long long v = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    const auto [end, ec] = rb::fromChars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
         throw InputError("--warptest " + option + ": expected a whole number from " +
                          std::to_string(lo) + " to " + std::to_string(hi) + ", got '" + text + "'");
@@ -492,8 +493,7 @@ int warpTestCommand(const std::vector<std::string>& args, const std::vector<Feat
                                  " (options: --samples, --bins, --seed, --output, --output-dir)");
             else {
                 double v = 0.0;
-                const auto [end, ec] =
-                    std::from_chars(value.data(), value.data() + value.size(), v);
+                const auto [end, ec] = rb::fromChars(value.data(), value.data() + value.size(), v);
                 if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v))
                     throw InputError("--warptest: " + name + " must be a number, got '" + value +
                                      "'");

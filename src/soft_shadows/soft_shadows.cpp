@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/from_chars.h"
 #include "lab/warp.h"
 
 namespace rb {
@@ -31,7 +32,7 @@ SoftShadowSettings softShadowSettings(const RenderContext& context) {
     const std::string cli = context.cliOption("light-samples");
     if (!cli.empty()) {
         int n = -1;
-        const auto [end, ec] = std::from_chars(cli.data(), cli.data() + cli.size(), n);
+        const auto [end, ec] = rb::fromChars(cli.data(), cli.data() + cli.size(), n);
         if (ec != std::errc() || end != cli.data() + cli.size() || n < 0 || n > kMaxSamplesPerAxis)
             throw InputError("--light-samples: expected a whole number from 0 to " +
                              std::to_string(kMaxSamplesPerAxis) + ", got '" + cli + "'");
