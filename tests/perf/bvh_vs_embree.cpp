@@ -215,6 +215,13 @@ Agreement compare(const std::vector<float>& a, const std::vector<float>& b, bool
     return g;
 }
 
+/// The --bvh name of a layout: binary, wide4 or wide8.
+const char* layoutKey(rb::BVHLayout layout) {
+    return layout == rb::BVHLayout::Binary  ? "binary"
+           : layout == rb::BVHLayout::Wide4 ? "wide4"
+                                            : "wide8";
+}
+
 /// Command-line settings.
 struct Settings {
     std::string obj;
@@ -313,7 +320,7 @@ int run(const Settings& s) {
     } sets[] = {{"coherent camera 1024^2", "coherent", &camera, false},
                 {"incoherent 2^20", "incoherent", &incoherent, false},
                 {"shadow (any hit) 2^20", "shadow", &shadow, true}};
-    std::vector<std::pair<const char*, double>> ratios;
+    std::vector<std::pair<std::string, double>> ratios;
     for (const Set& set : sets) {
         const Query rbQuery = set.anyHit ? raybookAny : raybookClosest;
         const Query emQuery = set.anyHit ? embreeAny : embreeClosest;
@@ -330,7 +337,11 @@ int run(const Settings& s) {
         const Spread sb = spread(b);
         for (size_t l = 0; l < layouts; ++l) {
             const Spread sa = spread(a[l]);
+            // The first layout's ratio under the set's own name; every layout's under
+            // name_layout (coherent_wide4, ...).
             if (l == 0) ratios.emplace_back(set.key, sa.median / sb.median);
+            ratios.emplace_back(std::string(set.key) + "_" + layoutKey(meshes[l]->bvh().layout()),
+                                sa.median / sb.median);
             // Every layout must find exactly the same hits.
             if (outA[l] != outA[0])
                 std::printf("  (%s and %s DISAGREE on some rays)\n",
@@ -356,7 +367,7 @@ int run(const Settings& s) {
         "  targets (issue 12): raybook/Embree >= 1.0 coherent, >= 0.7 incoherent, >= 0.8 shadow; "
         "build <= 1.5x Embree's time (1 thread); <= 100 bytes/triangle\n");
     // Machine-readable lines for bench.sh's summary: "target <name> <value>".
-    for (const auto& [key, ratio] : ratios) std::printf("target %s %.2f\n", key, ratio);
+    for (const auto& [key, ratio] : ratios) std::printf("target %s %.2f\n", key.c_str(), ratio);
     std::printf("target build %.2f\n", rbB.median / emB.median);
     std::printf("target bytes_per_triangle %.1f\n", meshBytes + bvhBytes);
     return 0;
