@@ -23,6 +23,13 @@ function rbNewWorker() {
   return new Worker(rbWorkerUrl);
 }
 
+// rt's output as a terminal would leave it: a progress bar redrawn with carriage returns
+// (rt's WebAssembly build writes one, since its stderr counts as a terminal) keeps only what
+// follows the last return of its line.
+function rbTerminal(text) {
+  return text.split('\n').map((l) => l.slice(l.lastIndexOf('\r') + 1)).join('\n');
+}
+
 function rbEl(tag, attrs, children) {
   const e = document.createElement(tag);
   for (const [k, v] of Object.entries(attrs || {})) {
@@ -219,7 +226,7 @@ class RbPanel {
     this.pending = null;
     clearInterval(this.tick);
     this.busy(false);
-    const log = ((m.out || '') + (m.err || '')).replace(/\n+$/, '');
+    const log = rbTerminal((m.out || '') + (m.err || '')).replace(/\n+$/, '');
     if (m.type === 'failed') {
       this.status.textContent = 'failed';
       this.show('error', (m.err || '') + m.message);
