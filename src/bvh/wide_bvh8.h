@@ -28,9 +28,10 @@ bool wide8Available();
 
 #include <immintrin.h>
 
-/// The eight-wide functions' attribute: AVX2, and nothing more. Not FMA: contracting a·b + c
-/// into one rounding would change the exact triangle test's bits (the leaf tests are inlined
-/// into these functions), and the images must not depend on the path.
+/// The eight-wide functions' attribute: AVX2, and nothing more. Not FMA: the leaf tests are
+/// inlined into these functions, and contracting the exact triangle test's a·b + c into one
+/// rounding would change its bits, so the images would depend on the path. The build's
+/// -ffp-contract=off forbids that too; leaving FMA out keeps it so without the flag.
 #define RB_AVX2 gnu::target("avx2")
 
 namespace rb {
