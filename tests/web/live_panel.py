@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """live_panel: the docs' live chapter panels render what the command line renders.
 
-    live_panel.py --rt build/rt_ch17 --html docs/html --work build/live_panel [--chapters 1,5,13]
+    live_panel.py --rt build/rt_ch17 --html docs/html --work build/live_panel [--chapters 1,5,13|all]
 
 In headless Chromium (Debian's chromium, driven over the DevTools pipe, tests/web/cdp.py), for
 each chapter N given it opens the built page docs/html/chNN.html from file://, renders the
@@ -181,7 +181,7 @@ def main():
     ap.add_argument('--html', required=True, help='the built docs (docs/html)')
     ap.add_argument('--work', required=True, help='a folder for the images')
     ap.add_argument('--scenes', default=os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'scenes'))
-    ap.add_argument('--chapters', default='1,5,13')
+    ap.add_argument('--chapters', default='1,5,13', help='N,N,... or all (every page with a panel)')
     ap.add_argument('--timeout', type=float, default=300, help='seconds for one render')
     ap.add_argument('--skip-limits', action='store_true', help='only the pixel comparisons')
     args = ap.parse_args()
@@ -199,12 +199,16 @@ def main():
         return 77
     print('live_panel: bundle %s, %.1f MiB' % (bundle, os.path.getsize(bundle) / 2**20))
 
-    chapters = [int(c) for c in args.chapters.split(',')]
     scenes = {}
     for name in os.listdir(args.scenes):
         m = re.fullmatch(r'chapter(\d\d)-.*\.lua', name)
         if m:
             scenes[int(m.group(1))] = name
+    if args.chapters == 'all':  # every chapter whose built page has a panel
+        chapters = [n for n in sorted(scenes) if os.path.exists(os.path.join(args.html, 'ch%02d.html' % n))
+                    and 'rb-live' in open(os.path.join(args.html, 'ch%02d.html' % n)).read()]
+    else:
+        chapters = [int(c) for c in args.chapters.split(',')]
 
     with cdp.Browser() as browser:
         for n in chapters:
