@@ -56,6 +56,12 @@ def main():
                     help='folder of the chapter scenes (default: the repository\'s scenes/)')
     ap.add_argument('--name', default='raybook-live.js', help='output file name')
     args = ap.parse_args()
+    for path, what in ((args.rt, 'make web builds it'), (args.lua_host, 'src/web/lua_host.js'),
+                       (os.path.join(args.wasmoon, 'dist', 'index.js'),
+                        'npm ci in the folder of src/web/package.json\'s copy installs it'),
+                       (args.scenes, 'the repository\'s scenes/')):
+        if not os.path.exists(path):
+            sys.exit('bundle.py: %s is missing (%s)' % (path, what))
 
     wasmoon_pkg = json.loads(read(os.path.join(args.wasmoon, 'package.json')))
     wasmoon_js = read(os.path.join(args.wasmoon, 'dist', 'index.js'))
