@@ -20,7 +20,7 @@ FUZZ_TARGETS := obj lua_scene options
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: deps bench-deps mpi-deps mpi configure rt test test-exercises test-assignments assignment grade \
-        test-sanitize sanitize-build demo docs golden-update bench charts fuzz web clean \
+        test-sanitize sanitize-build demo docs golden-update bench charts fuzz web web-bundle clean \
         $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
@@ -62,8 +62,10 @@ mpi: mpi-deps configure
 	cmake -S . -B $(BUILD) >/dev/null
 	@$(MAKE) --no-print-directory rt
 
-# Every test: the unit tests, golden images, scenes, bad input and MPI runs (CTest; Open MPI is
-# installed first and CMake configured again to find it), then the chapter
+# Every test: the unit tests, golden images, scenes, bad input, MPI runs and the docs' live
+# panels (CTest; Open MPI is installed first and CMake configured again to find it; before the
+# whole-book suites, make web installs emscripten and Chromium and builds rt as WebAssembly, and
+# make docs the pages with their live panels, which CMake, configured again, then tests), then the chapter
 # ladder the way a student climbs it (make chapterN for each N), which leaves ./rt the newest,
 # then the check that the tests notice every exercise region blanked, then the assignments'
 # round trip and grading (make test-assignments).
@@ -82,6 +84,7 @@ test: mpi-deps configure
 	$(if $(FULL),rm -rf $(BUILD)/stamps)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L 'unit|golden'
 	@if $(STAMPS_PY) stale $(BUILD) suite suite; then \
+	  $(MAKE) --no-print-directory web docs && cmake -S . -B $(BUILD) >/dev/null && \
 	  (cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'unit|golden') && \
 	  $(STAMPS_PY) record $(BUILD) suite suite; \
 	else \
@@ -163,12 +166,17 @@ demo: rt
 # make docs EDITION=student: the student edition, every exercise region's code replaced by its
 # stub in the listings (tests/exercises/student_docs.py), into docs/student/html, for an
 # instructor to publish.
+#
+# With emscripten installed (make web installs it), make docs also builds the chapter pages'
+# live panels: rt as WebAssembly, and src/web/bundle.py's docs/html/live/raybook-live.js.
 docs: configure
 ifeq ($(EDITION),student)
 	cmake --build $(BUILD) --target docs-student
 	@echo "docs (student edition): $$(pwd)/docs/student/html/index.html"
 else ifeq ($(EDITION),)
 	cmake --build $(BUILD) --target docs
+	@if command -v emcc >/dev/null; then $(MAKE) --no-print-directory web-bundle; else \
+	  echo "docs: without the live panels (emscripten is not installed; make web installs it)"; fi
 	@echo "docs: $$(pwd)/docs/html/index.html"
 else
 	@echo "make docs: EDITION=$(EDITION) is not an edition; leave it out (the full docs) or use EDITION=student" >&2
@@ -213,16 +221,23 @@ fuzz:
 # the npm registry, the version pinned in src/web/package.json) goes to build-web/npm. emcc
 # needs NODE_PATH to find Debian's acorn (DESIGN section 10).
 WEB_BUILD ?= build-web
-WEB_DEBS  := emscripten nodejs npm chromium
+# Node.js and npm come with the machine (emscripten needs Node.js; Debian's npm would replace it).
+WEB_DEBS  := emscripten chromium
 web:
 	@$(MAKE) --no-print-directory deps DEBS="$(WEB_DEBS)"
 	@[ -f $(WEB_BUILD)/CMakeCache.txt ] || NODE_PATH=/usr/share/nodejs emcmake cmake -S . -B $(WEB_BUILD) \
 	  -DCMAKE_BUILD_TYPE=Release
 	NODE_PATH=/usr/share/nodejs cmake --build $(WEB_BUILD) -j $(JOBS) --target rt_web
-	@if [ -f src/web/package-lock.json ]; then \
-	  mkdir -p $(WEB_BUILD)/npm && cp src/web/package.json src/web/package-lock.json $(WEB_BUILD)/npm/ && \
-	  (cd $(WEB_BUILD)/npm && npm ci --silent --no-audit --no-fund); \
-	fi
+	@command -v npm >/dev/null || { echo "make web: npm is missing (it comes with Node.js)" >&2; exit 1; }
+	@mkdir -p $(WEB_BUILD)/npm
+	@cmp -s src/web/package-lock.json $(WEB_BUILD)/npm/package-lock.json || { \
+	  cp src/web/package.json src/web/package-lock.json $(WEB_BUILD)/npm/ && \
+	  (cd $(WEB_BUILD)/npm && npm ci --silent --no-audit --no-fund); }
+
+# The live panels' one script, from rt_web.js, the page's Lua and the chapter scenes.
+web-bundle: web
+	python3 src/web/bundle.py --rt $(WEB_BUILD)/rt_web.js --lua-host src/web/lua_host.js \
+	  --wasmoon $(WEB_BUILD)/npm/node_modules/wasmoon --out docs/html/live
 
 clean:
 	rm -rf $(BUILD) $(FUZZ_BUILD) $(SANITIZE_BUILD) $(WEB_BUILD) rt
