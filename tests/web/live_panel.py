@@ -339,8 +339,8 @@ def bad_input(browser, args, n, scene_name):
     searched for a missing file, a path that climbs out of the scene's folder). Left out: cases
     with rt-args (the panel has no such control), cases of later chapters (skip-if-feature),
     cases that load the suite's broken OBJ files (not in the page), cases that render with
-    the panel's --output (output-dir-*) and LAYOUT_CASES. memory-string-rep hits the page's own memory limit
-    (what wasm32 leaves): only its first words are compared."""
+    the panel's --output (output-dir-*) and LAYOUT_CASES. memory-string-rep hits the page's
+    own memory limit (what wasm32 leaves): only its first words are compared."""
     cases_dir = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'bad_input', 'cases')
     page = open_panel(browser, 'file://%s/ch%02d.html' % (args.html, n))
     if not page.evaluate('!!window.raybookLive.panels[0].features'):
