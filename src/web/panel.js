@@ -30,6 +30,17 @@ function rbTerminal(text) {
   return text.split('\n').map((l) => l.slice(l.lastIndexOf('\r') + 1)).join('\n');
 }
 
+function rbLoad(key) {
+  try { return window.localStorage.getItem(key); } catch (e) { return null; }
+}
+
+function rbSave(key, value) {
+  try {
+    if (value === null) window.localStorage.removeItem(key);
+    else window.localStorage.setItem(key, value);
+  } catch (e) { /* storage off or full: the edit lasts until the page is left */ }
+}
+
 function rbEl(tag, attrs, children) {
   const e = document.createElement(tag);
   for (const [k, v] of Object.entries(attrs || {})) {
@@ -66,7 +77,18 @@ class RbPanel {
     }
     this.text = rbEl('textarea', {class: 'rb-text', spellcheck: 'false', rows: '18',
                                    'aria-label': 'scene ' + this.scene});
-    this.text.value = this.original;
+    // The reader's edit survives a reload (kept per scene in localStorage, when the browser
+    // allows it); Reset scene puts the chapter's own text back and forgets the edit.
+    this.storeKey = 'raybook-live:' + this.scene;
+    const kept = rbLoad(this.storeKey);
+    this.text.value = kept !== null && kept !== this.original ? kept : this.original;
+    this.text.addEventListener('input', () => {
+      clearTimeout(this.saveTimer);
+      this.saveTimer = setTimeout(() => {
+        if (this.text.value === this.original) rbSave(this.storeKey, null);
+        else rbSave(this.storeKey, this.text.value);
+      }, 300);
+    });
     this.text.addEventListener('keydown', (e) => {
       if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) { e.preventDefault(); this.onRender(); }
       if (e.key === 'Tab' && !e.shiftKey && !e.ctrlKey && !e.altKey) {
@@ -84,7 +106,11 @@ class RbPanel {
                                       disabled: '', onclick: () => this.stop('stopped')});
     this.resetButton = rbEl('button', {type: 'button', class: 'rb-reset', text: 'Reset scene',
                                        title: 'put the chapter\'s scene back in the text box',
-                                       onclick: () => { this.text.value = this.original; }});
+                                       onclick: () => {
+                                         this.text.value = this.original;
+                                         rbSave(this.storeKey, null);
+                                         this.show('', '');
+                                       }});
     this.status = rbEl('span', {class: 'rb-status', role: 'status'});
     this.canvas = rbEl('canvas', {class: 'rb-canvas', width: '160', height: '120'});
     this.messages = rbEl('pre', {class: 'rb-msg'});
@@ -98,6 +124,10 @@ class RbPanel {
       this.status]));
     root.appendChild(rbEl('div', {class: 'rb-view'}, [this.canvas]));
     root.appendChild(this.messages);
+    if (this.text.value !== this.original) {
+      this.show('', 'This is your edited scene from an earlier visit; Reset scene puts the ' +
+                    'chapter\'s own back.');
+    }
     this.start();
   }
 
