@@ -167,7 +167,9 @@ class RbPanel {
     this.switches.textContent = 'chapters: ';
     this.boxes = [];
     for (const f of features) {
-      if (f.chapter > this.chapter) continue;
+      // A later chapter in rt's core (2 phong, 3 bvh) is shown too, checked and disabled: it
+      // stays on (chapter 1's scene is shaded as from chapter 2 on, unlike make chapter1's rt).
+      if (f.chapter > this.chapter && !f.core) continue;
       const box = rbEl('input', {type: 'checkbox', value: f.name});
       box.checked = keep && this.prevBoxes ? (this.prevBoxes[f.name] ?? true) : true;
       if (f.core) { box.checked = true; box.disabled = true; }
