@@ -298,7 +298,9 @@ def limits(browser, args, n, scene_name):
         page.evaluate('document.querySelector(".rb-live .rb-status").textContent')
         lag.append(time.time() - t0)
         time.sleep(0.2)
-    check(max(lag) < 1.0, 'the page answers during an endless loop (slowest answer %.3f s)' % max(lag))
+    # A page frozen by the loop would answer only when it ends, after several seconds; 3 s leaves
+    # room for a machine busy with other tests.
+    check(max(lag) < 3.0, 'the page answers during an endless loop (slowest answer %.3f s)' % max(lag))
     t0 = time.time()
     r = page.evaluate('window.rbLoop', args.timeout)
     secs = time.time() - t0 + 2.0
