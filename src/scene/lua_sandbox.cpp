@@ -200,6 +200,10 @@ lua_State* newSandboxState(SceneBuilder& builder) {
     lua_State* L = lua_newstate(limitedAlloc, &builder);
     if (!L) return nullptr;
     *static_cast<SceneBuilder**>(lua_getextraspace(L)) = &builder;
+    // The limit, for a Lua that allocates with an allocator of its own: the page's (src/web)
+    // holds its scripts to it.
+    lua_pushinteger(L, static_cast<lua_Integer>(builder.options.memoryLimit));
+    lua_setfield(L, LUA_REGISTRYINDEX, "rb.memory_limit");
     openSandbox(L, builder);
     return L;
 }

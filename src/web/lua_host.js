@@ -16,7 +16,8 @@ async function createLuaHost(factory) {
   // rb_shim_op; the functions it leaves in __rb answer the shim.
   const prelude = String.raw`
 local js = __rb_js
-__rb_js = nil
+local __rb_memory_max = __rb_memory_max
+__rb_js, _G.__rb_memory_max = nil, nil
 local dgetinfo, dsethook, dsetupvalue = debug.getinfo, debug.sethook, debug.setupvalue
 local sformat, ssub, sfind, mtype, tostring, type, pcall, error, select, next =
   string.format, string.sub, string.find, math.type, tostring, type, pcall, error, select, next
@@ -167,6 +168,7 @@ __rb = {
   -- text, chunk name; ref: the handle of rt's globals, behind the chunk's own _ENV.
   load = function(ref, data)
     local v = decodeAll(data)
+    if v[3] then __rb_memory_max(v[3]) end
     local globals = proxy(ref)
     local env = setmetatable({}, {__index = globals})
     local f, err = load(v[1], v[2], "t", env)
@@ -221,6 +223,8 @@ __rb = {
         rt._free(out);
         return text;
       });
+      // The sandbox's memory limit for scripts, counted by wasmoon's own allocator.
+      engine.global.set('__rb_memory_max', (bytes) => { engine.global.setMemoryMax(bytes); });
       engine.doStringSync(prelude);
       const table = engine.global.get('__rb');
       states.set(L, { engine, table, opName, rt });
@@ -240,6 +244,7 @@ __rb = {
 
   function wasmoonEngine(module) {
     // wasmoon's own conversions are not used: every value crosses as text (see the prelude).
-    return new wasmoon.LuaEngine(module, { openStandardLibs: true, injectObjects: false, enableProxy: false });
+    return new wasmoon.LuaEngine(module, { openStandardLibs: true, injectObjects: false, enableProxy: false,
+                                          traceAllocations: true });
   }
 }

@@ -1321,6 +1321,9 @@ int luaL_loadbufferx(lua_State* L, const char* buff, size_t sz, const char* name
     std::string data;
     encode(L, stringValue(std::string(buff, sz)), data);
     encode(L, stringValue(name ? name : "?"), data);
+    // The scripts' memory limit (lua_sandbox.cpp puts it in the registry), which the page's
+    // Lua holds its own allocations to.
+    encode(L, L->registry->get(stringValue("rb.memory_limit")), data);
     try {
         const std::vector<Value> f = request(L, "load", rb_shim_globals(L), data);
         push(L, f.empty() ? nilValue() : f[0]);
