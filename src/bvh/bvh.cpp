@@ -365,17 +365,81 @@ const char* bvhLayoutDescription(BVHLayout layout) {
 
 namespace {
 
+/// Where to cut the binary tree into wide nodes so that the wide tree's SAH cost is least (in
+/// the manner of Ylitie, Karras and Laine, "Efficient Incoherent Ray Traversal on GPUs Through
+/// Compressed Wide BVHs", HPG 2017, without their leaf merging). The leaves are fixed, so that
+/// cost is, up to constants, the summed surface area of the wide nodes: each is opened by the
+/// rays that enter its box. For a binary node c given a slots in its parent's wide node,
+/// cost(c, a) is the least summed area of the wide nodes below that parent that c's subtree
+/// needs: 0 for a leaf; for an interior node the smaller of taking it as one child (it becomes a
+/// wide node: its area, plus the cost of cutting its own subtree into N slots) and, with a ≥ 2,
+/// opening it (its two children share the a slots).
+template <int N>
+class CollapsePlan {
+  public:
+    explicit CollapsePlan(const std::vector<BVHNode>& binary)
+        : cost_(binary.size()), openCost_(binary.size()), split_(binary.size()) {
+        // Children come after their parent in the build's numbering: go backwards.
+        for (size_t i = binary.size(); i-- > 0;) {
+            const BVHNode& node = binary[i];
+            if (node.count > 0) {
+                cost_[i].fill(0.0);
+                continue;
+            }
+            const std::uint32_t left = static_cast<std::uint32_t>(i) + 1, right = node.offset;
+            // Opening with a slots: the best share s of them for the first child.
+            for (int a = 2; a <= N; ++a) {
+                double best = std::numeric_limits<double>::infinity();
+                for (int s = 1; s < a; ++s) {
+                    const double c = cost_[left][s] + cost_[right][a - s];
+                    if (c < best) {
+                        best = c;
+                        split_[i][a] = static_cast<std::int8_t>(s);
+                    }
+                }
+                openCost_[i][a] = best;
+            }
+            // Taking it as one child: a wide node of its own, cut into N slots.
+            const double take = node.bounds.halfArea() + openCost_[i][N];
+            cost_[i][1] = take;
+            for (int a = 2; a <= N; ++a) cost_[i][a] = std::min(take, openCost_[i][a]);
+        }
+    }
+    /// Append to kids the children that binary node c becomes when given a slots; `open` makes
+    /// an interior node give up its own slot (the wide node made from it).
+    void expand(const std::vector<BVHNode>& binary, std::uint32_t c, int a, bool open,
+                std::uint32_t* kids, int& kidCount) const {
+        if (binary[c].count > 0 || a < 2 || (!open && cost_[c][a] < openCost_[c][a])) {
+            kids[kidCount++] = c;
+            return;
+        }
+        const int s = split_[c][a];
+        expand(binary, c + 1, s, false, kids, kidCount);
+        expand(binary, binary[c].offset, a - s, false, kids, kidCount);
+    }
+
+  private:
+    std::vector<std::array<double, N + 1>> cost_, openCost_;
+    std::vector<std::array<std::int8_t, N + 1>> split_;
+};
+
 /// Collapse the binary subtree under node i into wide node `index` of `wide` (already
-/// allocated), recursing into the interior children it keeps.
+/// allocated), recursing into the interior children it keeps. With a plan (eight-wide), its
+/// cut; without (four-wide), the greedy one.
 template <int N>
 void collapseNode(const std::vector<BVHNode>& binary, std::uint32_t i,
-                  std::vector<WideNodeN<N>>& wide, std::uint32_t index) {
+                  std::vector<WideNodeN<N>>& wide, std::uint32_t index,
+                  const CollapsePlan<N>* plan) {
     // Step 1: start from the two children, then open the interior child with the largest
     // surface area until there are N (the nodes a ray is most likely to enter are the ones
-    // worth testing together).
+    // worth testing together); or take the children the plan says.
     std::uint32_t kids[N] = {i + 1, binary[i].offset};
     int kidCount = 2;
-    while (kidCount < N) {
+    if (plan) {
+        kidCount = 0;
+        plan->expand(binary, i, N, true, kids, kidCount);
+    }
+    while (!plan && kidCount < N) {
         int open = -1;
         double largest = -1.0;
         for (int k = 0; k < kidCount; ++k) {
@@ -415,7 +479,7 @@ void collapseNode(const std::vector<BVHNode>& binary, std::uint32_t i,
     }
     wide[index] = n;
     for (int c = 0; c < kidCount; ++c)
-        if (n.count[c] == 0) collapseNode<N>(binary, kids[c], wide, n.child[c]);
+        if (n.count[c] == 0) collapseNode<N>(binary, kids[c], wide, n.child[c], plan);
 }
 
 }  // namespace
@@ -443,7 +507,12 @@ std::vector<WideNodeN<N>> collapseToWide(const std::vector<BVHNode>& binary) {
         wide[0] = n;
         return wide;
     }
-    collapseNode<N>(binary, 0, wide, 0);
+    if constexpr (N == 8) {
+        const CollapsePlan<N> plan(binary);
+        collapseNode<N>(binary, 0, wide, 0, &plan);
+    } else {
+        collapseNode<N>(binary, 0, wide, 0, nullptr);
+    }
     wide.shrink_to_fit();
     return wide;
 }
