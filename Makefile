@@ -172,6 +172,8 @@ demo: rt
 docs: configure
 ifeq ($(EDITION),student)
 	cmake --build $(BUILD) --target docs-student
+	@if command -v emcc >/dev/null; then $(MAKE) --no-print-directory web-bundle WEB_OUT=docs/student/html/live; \
+	  else echo "docs: without the live panels (emscripten is not installed; make web installs it)"; fi
 	@echo "docs (student edition): $$(pwd)/docs/student/html/index.html"
 else ifeq ($(EDITION),)
 	cmake --build $(BUILD) --target docs
@@ -235,9 +237,10 @@ web:
 	  (cd $(WEB_BUILD)/npm && npm ci --silent --no-audit --no-fund); }
 
 # The live panels' one script, from rt_web.js, the page's Lua and the chapter scenes.
+WEB_OUT ?= docs/html/live
 web-bundle: web
 	python3 src/web/bundle.py --rt $(WEB_BUILD)/rt_web.js --lua-host src/web/lua_host.js \
-	  --wasmoon $(WEB_BUILD)/npm/node_modules/wasmoon --out docs/html/live
+	  --wasmoon $(WEB_BUILD)/npm/node_modules/wasmoon --out $(WEB_OUT)
 
 clean:
 	rm -rf $(BUILD) $(FUZZ_BUILD) $(SANITIZE_BUILD) $(WEB_BUILD) rt

@@ -31,5 +31,5 @@ add_library(PkgConfig::STB ALIAS rb_web_deps)
 # emscripten toolchain's search would look only in its own sysroot.
 if(EXISTS /usr/include/nanovdb/NanoVDB.h)
   file(CREATE_LINK /usr/include/nanovdb ${RB_WEB_INCLUDE}/nanovdb SYMBOLIC)
-  set(RB_NANOVDB_INCLUDE_DIR ${RB_WEB_INCLUDE} CACHE PATH "NanoVDB's headers (WebAssembly build)")
+  set(RB_NANOVDB_INCLUDE_DIR ${RB_WEB_INCLUDE} CACHE PATH "NanoVDB headers (WebAssembly build)" FORCE)
 endif()
