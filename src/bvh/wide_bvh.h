@@ -41,8 +41,10 @@ static_assert(sizeof(WideNode) == 128);
 static_assert(sizeof(WideNode8) == 256);
 
 /// Collapse a binary build tree (first child after its parent, second at `offset`) into nodes
-/// of N children: each wide node takes the N largest subtrees below one binary node. Leaves stay
-/// as they are. Node 0 of the result is the root. Instantiated for N = 4 and 8.
+/// of up to N children, each a subtree below one binary node: for N = 4 greedily (the largest
+/// child is opened until there are four), for N = 8 where the SAH cost of the wide tree is least
+/// (CollapsePlan in bvh.cpp). Leaves stay as they are. Node 0 of the result is the root.
+/// Instantiated for N = 4 and 8.
 template <int N>
 std::vector<WideNodeN<N>> collapseToWide(const std::vector<BVHNode>& binary);
 
