@@ -8,9 +8,10 @@
 /// the same shadow-ray verdict); that the tree is well formed; and that the work per ray grows
 /// like log n rather than n. The tests sweep rays exactly through shared edges and vertices,
 /// compare the BVH with a loop over every triangle (Stanford bunny) and over every instance
-/// (a scene of spheres, boxes and meshes) on thousands of random rays with fixed seeds, walk
-/// every tree to check its invariants, and count the triangle tests and the BVH nodes pierced
-/// by rays hitting meshes of 2 048 to 524 288 triangles.
+/// (a scene of spheres, boxes and meshes) on thousands of random rays with fixed seeds, in every
+/// layout this processor runs (binary, four-wide SSE, eight-wide AVX2), walk every tree to check
+/// its invariants, and count the triangle tests and the BVH nodes pierced by rays hitting meshes
+/// of 2 048 to 524 288 triangles.
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
@@ -1287,6 +1288,35 @@ SCENARIO("the cost of a ray grows like log n with the number of triangles",
     }
 }
 // [ch03-log-cost]
+
+SCENARIO("--bvh names a layout, and wide is the widest this processor runs", "[ch03]") {
+    GIVEN("the names --bvh takes") {
+        THEN(
+            "binary and wide4 are always there; wide, and no name, are wide8 exactly when AVX2 "
+            "is") {
+            CHECK(rb::bvhLayoutNamed("binary") == rb::BVHLayout::Binary);
+            CHECK(rb::bvhLayoutNamed("wide4") == rb::BVHLayout::Wide4);
+            const rb::BVHLayout widest =
+                rb::wide8Available() ? rb::BVHLayout::Wide8 : rb::BVHLayout::Wide4;
+            CHECK(rb::bestWideLayout() == widest);
+            CHECK(rb::bvhLayoutNamed("wide") == widest);
+            CHECK(rb::bvhLayoutNamed("") == widest);
+        }
+        THEN("wide8 is refused where AVX2 is not, and any other name always") {
+            if (rb::wide8Available())
+                CHECK(rb::bvhLayoutNamed("wide8") == rb::BVHLayout::Wide8);
+            else
+                CHECK_THROWS_WITH(rb::bvhLayoutNamed("wide8"), Catch::Contains("AVX2"));
+            CHECK_THROWS_AS(rb::bvhLayoutNamed("wide16"), rb::InputError);
+            CHECK_THROWS_WITH(rb::bvhLayoutNamed("Wide"), Catch::Contains("wide4 or wide8"));
+        }
+        THEN("--stats names each path") {
+            CHECK(std::string(rb::bvhLayoutDescription(rb::BVHLayout::Binary)) == "binary");
+            CHECK(std::string(rb::bvhLayoutDescription(rb::BVHLayout::Wide4)) == "wide4 (SSE)");
+            CHECK(std::string(rb::bvhLayoutDescription(rb::BVHLayout::Wide8)) == "wide8 (AVX2)");
+        }
+    }
+}
 
 SCENARIO("a mesh is built once, however many nodes show it, with the layout --bvh asks for",
          "[ch03][ex3.2]") {
