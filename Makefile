@@ -202,6 +202,12 @@ bench: bench-deps mpi-deps configure
 	cmake -S . -B $(BUILD) >/dev/null
 	cmake --build $(BUILD) -j $(JOBS)
 	bash tests/perf/bench.sh $(BUILD)
+	@# The live panels' cost (issue 25): the bundle's size, and each chapter's scene at 160x120 in
+	@# headless Chromium against native rt on one thread; with emscripten installed.
+	@if command -v emcc >/dev/null; then $(MAKE) --no-print-directory docs && \
+	  python3 tests/perf/web/bench_live.py --bundle docs/html/live/raybook-live.js \
+	    --rt $(BUILD)/rt_ch$(LAST) --out $(BUILD)/bench-live.md; \
+	else echo "bench: no live-panel numbers (emscripten is not installed; make web installs it)"; fi
 
 # Charts for the chapter pages, into docs/charts/.
 charts: bench-deps configure
