@@ -111,7 +111,13 @@ MemoryBudget defaultMemoryBudget() {
     const std::uint64_t machine = machineMemory();
     MemoryBudget budget;
     budget.limit = machine / 2;
+#ifdef __EMSCRIPTEN__
+    // In the docs' live panels (src/web) the "machine" is the page's WebAssembly memory.
+    budget.origin = "the default: half of the " + formatBytes(machine) +
+                    " this page's WebAssembly can use";
+#else
     budget.origin = "the default: half of this machine's " + formatBytes(machine);
+#endif
     return budget;
 }
 
