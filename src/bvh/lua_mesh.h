@@ -11,7 +11,8 @@ namespace rb {
 
 struct SceneLoadOptions;
 
-/// The BVH layout that --bvh asks for (binary|wide; wide when absent).
+/// The BVH layout that --bvh asks for (binary|wide4|wide8|wide; wide, the best this CPU runs,
+/// when absent).
 BVHLayout bvhLayout(const SceneLoadOptions& options);
 
 /// The mesh given as Lua tables at stack indices 2 (vertices: {x, y, z} triples) and 3 (faces:
