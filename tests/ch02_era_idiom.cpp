@@ -209,7 +209,7 @@ SCENARIO("gr.cone('c'), raybook's own first form, does not switch a current scen
 SCENARIO("every scene of the project is rendered in the era it was written for",
          "[ch02][era][needs-ch17]") {
     namespace fs = std::filesystem;
-    const fs::path scenes = fs::path(RB_SOURCE_DIR) / "scenes";
+    const fs::path scenes = fs::path(rbtest::sourceDir()) / "scenes";
     // The era each scene expects: its "-- rt-era:" line, else current. Seed 001's garage is
     // written in seed 001's dialect (gr.cyllinder), so it is pre-2015.
     const auto expected = [&](const fs::path& file, const std::string& text) {

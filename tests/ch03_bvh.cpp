@@ -43,7 +43,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 
 /// The bunny that chapter 3's scene uses: 3 674 triangles.
-const std::string kBunnyPath = std::string(RB_SOURCE_DIR) + "/scenes/assets/bunny.obj";
+const std::string kBunnyPath = rbtest::sourceDir() + "/scenes/assets/bunny.obj";
 
 /// A BVH layout and its --bvh name.
 struct NamedLayout {

@@ -102,7 +102,7 @@ double wallHeightAfter(int k) {
 /// `maxDepth` ≥ 0 overrides like --max-depth.
 std::unique_ptr<rb::World> loadRepoScene(const std::string& relative,
                                          const rb::FeatureSet& features, int maxDepth = -1) {
-    auto renders = rb::loadScene(std::string(RB_SOURCE_DIR) + "/" + relative, features,
+    auto renders = rb::loadScene(rbtest::sourceDir() + "/" + relative, features,
                                  rb::SceneLoadOptions{});
     REQUIRE(!renders.empty());
     return rb::buildWorld(std::move(renders[0]), features, {}, maxDepth);

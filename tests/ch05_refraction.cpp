@@ -788,7 +788,7 @@ SCENARIO("deep in the tree the term follows one ray, chosen so the mean is uncha
 
 SCENARIO("with --features=all,-refraction glass shades as plain Phong", "[ch05][ex5.1][ex5.3]") {
     GIVEN("the chapter scene, loaded by a chapter-5 build") {
-        const std::string path = std::string(RB_SOURCE_DIR) + "/scenes/chapter05-refraction.lua";
+        const std::string path = rbtest::sourceDir() + "/scenes/chapter05-refraction.lua";
         WHEN("it renders with refraction off, and with the refraction fields deleted instead") {
             auto off = rb::buildWorld(
                 std::move(rb::loadScene(path, chapters(5, "all,-refraction"), {})[0]),

@@ -1005,7 +1005,7 @@ SCENARIO("a lobe whose axis lies in the surface loses half its samples",
 SCENARIO("the chapter scene renders finite, non-negative and the same on 1 and 2 threads",
          "[ch07][stability][ex7.1]") {
     GIVEN("scenes/chapter07-glossy.lua at 48×36 with 4 glossy directions") {
-        std::ifstream in(std::string(RB_SOURCE_DIR) + "/scenes/chapter07-glossy.lua");
+        std::ifstream in(rbtest::sourceDir() + "/scenes/chapter07-glossy.lua");
         const std::string lua((std::istreambuf_iterator<char>(in)), {});
         REQUIRE(!lua.empty());
         const auto w = buildWorld(lua, chapters(7), {{"glossy-samples", "4"}});

@@ -115,7 +115,7 @@ SCENARIO("angle weighting makes a vertex normal independent of the triangulation
         "the unit cube as 12 triangles, split so that corner (1,0,0) touches one face's "
         "two triangles and one triangle of each other face") {
         const rb::ObjData data =
-            rb::loadObj(std::string(RB_SOURCE_DIR) + "/scenes/assets/cube.obj");
+            rb::loadObj(rbtest::sourceDir() + "/scenes/assets/cube.obj");
         auto cornersAt = [&](const std::vector<std::array<Vec3, 3>>& normals, const Vec3& vertex) {
             std::vector<Vec3> at;
             for (size_t f = 0; f < data.triangles.size(); ++f)
@@ -330,7 +330,7 @@ SCENARIO("the Phong-tessellated point lies closer to the sphere, and stays put w
 
 SCENARIO("with the chapter switched off a smooth mesh renders as the faceted mesh", "[ch09][ex9.1][ex9.3][ex9.4]") {
     GIVEN("the icosphere as gr.mesh and as gr.smooth_mesh, lit from the side") {
-        const std::string asset = std::string(RB_SOURCE_DIR) + "/scenes/assets/icosphere80.obj";
+        const std::string asset = rbtest::sourceDir() + "/scenes/assets/icosphere80.obj";
         auto scene = [&](const std::string& call) {
             return "local m = gr.material({0.7, 0.6, 0.5}, {0.5, 0.5, 0.5}, 25)\n"
                    "root = gr.node('root')\nlocal s = " +
@@ -364,7 +364,7 @@ SCENARIO("with the chapter switched off a smooth mesh renders as the faceted mes
 }
 
 SCENARIO("gr.smooth_mesh checks its options", "[ch09][ex9.2]") {
-    const std::string asset = std::string(RB_SOURCE_DIR) + "/scenes/assets/cube.obj";
+    const std::string asset = rbtest::sourceDir() + "/scenes/assets/cube.obj";
     auto call = [&](const std::string& options) {
         return "root = gr.node('root')\nroot:add_child(gr.smooth_mesh('c', '" + asset + "'" +
                options + "))\n" + rbtest::renderLine();

@@ -922,7 +922,7 @@ SCENARIO("a height map steep enough to flip the normal is held on the viewer's s
 // [ch11-stage]
 SCENARIO("a bump is a shading-normal stage that runs after chapter 9's smooth normals", "[ch11]") {
     GIVEN("the icosphere as a rippled smooth mesh") {
-        const std::string asset = std::string(RB_SOURCE_DIR) + "/scenes/assets/icosphere80.obj";
+        const std::string asset = rbtest::sourceDir() + "/scenes/assets/icosphere80.obj";
         auto scene = [&](const std::string& call, const std::string& bump) {
             return "local m = gr.material({0.7, 0.6, 0.5}, {0.5, 0.5, 0.5}, 25)\n" + bump +
                    "root = gr.node('root')\nlocal s = " + call + "('s', '" + asset +

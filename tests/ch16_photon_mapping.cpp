@@ -51,7 +51,7 @@ gr.render(root, 'x.png', 64, 64, {0, 3, 3}, {0, -1, -1}, {0, 1, 0}, 50, {0, 0, 0
 
 /// The text of a file of the repository.
 std::string sourceFile(const std::string& path) {
-    std::ifstream in(std::string(RB_SOURCE_DIR) + "/" + path, std::ios::binary);
+    std::ifstream in(rbtest::sourceDir() + "/" + path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 

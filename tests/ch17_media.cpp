@@ -652,7 +652,7 @@ SCENARIO("A dense medium renders without black or NaN pixels", "[ch17]") {
 
 SCENARIO("A scene without media pays nothing for chapter 17", "[ch17]") {
     GIVEN("chapter 16's scene, which calls no media") {
-        std::ifstream in(std::string(RB_SOURCE_DIR) + "/scenes/chapter16-photon-mapping.lua");
+        std::ifstream in(rbtest::sourceDir() + "/scenes/chapter16-photon-mapping.lua");
         const std::string lua{std::istreambuf_iterator<char>(in), {}};
         const auto world = rbtest::worldFromLua(lua, rbtest::chapters(17));
         THEN("no media term is installed") {

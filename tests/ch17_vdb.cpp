@@ -375,7 +375,7 @@ SCENARIO("broken VDB input is refused with a message naming the file", "[ch17]")
 
 SCENARIO("the chapter's smoke plume loads, with densities in [0, 1]", "[ch17]") {
     GIVEN("scenes/assets/plume.nvdb") {
-        const std::string path = std::string(RB_SOURCE_DIR) + "/scenes/assets/plume.nvdb";
+        const std::string path = rbtest::sourceDir() + "/scenes/assets/plume.nvdb";
         const auto plume = rb::loadVdbDensity(path, "density", nullptr);
         WHEN("its density is sampled on a 24 × 48 × 24 lattice over its bounds") {
             const rb::AABB box = plume->bounds();

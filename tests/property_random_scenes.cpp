@@ -127,13 +127,13 @@ class SceneWriter {
                   << ", " << rng_.uniform(0.01, 2.0) << ")";
                 break;
             case 4:
-                s << "gr.mesh('" << name << "', '" << RB_SOURCE_DIR << "/scenes/a4/"
+                s << "gr.mesh('" << name << "', '" << rbtest::sourceDir() << "/scenes/a4/"
                   << (rng_.uniform() < 0.5 ? "dodeca.obj" : "cubeSq.obj") << "')";
                 break;
             case 5: {
                 static const char* const kMeshes[] = {"a4/dodeca.obj", "a4/cubeSq.obj",
                                                       "assets/icosphere80.obj"};
-                s << "gr.smooth_mesh('" << name << "', '" << RB_SOURCE_DIR << "/scenes/"
+                s << "gr.smooth_mesh('" << name << "', '" << rbtest::sourceDir() << "/scenes/"
                   << kMeshes[choose(3)] << "', {normals = '"
                   << (rng_.uniform() < 0.5 ? "file" : "computed")
                   << "', crease = " << rng_.uniform(0, 180)
@@ -214,7 +214,8 @@ class SceneWriter {
         if (rng_.uniform() < 0.5)
             s << "checker = {" << colour(0, 1) << ", " << colour(0, 1) << "}";
         else
-            s << "image = '" << RB_SOURCE_DIR << "/scenes/assets/textures/globe.png', wrap = '"
+            s << "image = '" << rbtest::sourceDir()
+              << "/scenes/assets/textures/globe.png', wrap = '"
               << (rng_.uniform() < 0.5 ? "repeat" : "clamp") << "', filter = '"
               << (rng_.uniform() < 0.5 ? "bilinear" : "nearest") << "'";
         auto nonZero = [&] { return (rng_.uniform() < 0.2 ? -1 : 1) * rng_.uniform(0.05, 20); };
@@ -245,7 +246,7 @@ class SceneWriter {
                 s << "pattern = 'ramp', slope = " << triple(direction() * rng_.uniform(0, 3));
                 break;
             default:
-                s << "pattern = 'image', file = '" << RB_SOURCE_DIR
+                s << "pattern = 'image', file = '" << rbtest::sourceDir()
                   << "/scenes/assets/tiles-height.png', mapping = '"
                   << (rng_.uniform() < 0.5 ? "surface" : "planar") << "'";
         }

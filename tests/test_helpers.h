@@ -68,6 +68,9 @@ namespace rbtest {
 
 using rb::Vec3;
 
+/// The project's root folder, where the tests read scenes and meshes (tests/source_dir.cpp).
+const std::string& sourceDir();
+
 /// Uniform random numbers from a fixed seed. The standard library's distributions are allowed
 /// to differ between implementations, so the tests turn the raw std::mt19937_64 stream (whose
 /// output the C++ standard fixes) into doubles themselves: the same seed gives the same rays on

@@ -273,11 +273,10 @@ CHECK_CMAKE = """
 # make check (an assignment): chapter {n}'s tests alone, so that a check builds only them.
 file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp
      ${{CMAKE_SOURCE_DIR}}/tests/stability*.cpp)
-add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp ${{RB_CHECK_SOURCES}})
+add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp source_dir.cpp ${{RB_CHECK_SOURCES}})
 target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src
                            ${{CMAKE_SOURCE_DIR}}/tests)
 target_link_libraries(raybook_check PRIVATE raybook Catch2::Catch2)
-target_compile_definitions(raybook_check PRIVATE RB_SOURCE_DIR="${{CMAKE_SOURCE_DIR}}")
 """
 
 
@@ -1123,8 +1122,11 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
 
 def roundtrip(args) -> int:
     """Every chapter's round trip, `--workers` chapters at a time (default 2), each in a
-    project and build folder of its own (WORK/slotK), all sharing one object cache. Chapter 1
-    runs alone first: it fills the cache with the core every later chapter compiles. With
+    project and build folder of its own (WORK/slotK/project, WORK/slotK/build), all sharing one
+    object cache. Chapter 1 runs alone first: it fills the cache with the core every later
+    chapter compiles. make grade's staging folders and mc_golden.py's chapters have the same
+    layout (ROOT/project, ROOT/build), so given one $RB_OBJCACHE (make test gives them
+    BUILD/objcache) they take each other's objects too. With
     `--stamps BUILD`, a chapter unchanged since its round trip passed (stamps.py) is skipped,
     and one that passes is stamped."""
     work = Path(args.work).resolve()
@@ -1150,7 +1152,7 @@ def roundtrip(args) -> int:
         slot = slots.get()
         try:
             start = time.monotonic()
-            problems, log = roundtrip_chapter(n, slot / "assignment", slot / "build",
+            problems, log = roundtrip_chapter(n, slot / "project", slot / "build",
                                               not args.no_bugs)
         finally:
             slots.put(slot)

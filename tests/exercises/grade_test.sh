@@ -20,7 +20,7 @@ SCRIPT=$ROOT/tests/exercises/assignment.py
 start=$SECONDS
 rm -rf "$CLASS"
 mkdir -p "$CLASS"
-export RB_OBJCACHE=$WORK/objcache RB_OBJCACHE_STRIP=$CLASS
+export RB_OBJCACHE=${RB_OBJCACHE:-$WORK/objcache} RB_OBJCACHE_STRIP=$CLASS
 export RB_COMPILER_LAUNCHER="python3;$ROOT/tests/exercises/objcache.py"
 
 for student in untouched solved buggy broken; do

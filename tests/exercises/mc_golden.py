@@ -137,7 +137,9 @@ def plant(project: Path, region_id: str, code: str | None) -> None:
 
 
 def check_chapter(n: int, work: Path) -> list[str]:
-    project, build = work / f"ch{n:02d}", work / f"build-ch{n:02d}"
+    # The layout of the round trip's slots and make grade's staging folders (ROOT/project,
+    # ROOT/build): with one $RB_OBJCACHE, objcache.py gives each the others' objects.
+    project, build = work / f"ch{n:02d}" / "project", work / f"ch{n:02d}" / "build"
     shutil.rmtree(project, ignore_errors=True)
     env = dict(os.environ)
     script = str(HERE / "assignment.py")

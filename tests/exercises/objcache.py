@@ -15,7 +15,8 @@ With $RB_OBJCACHE_STRIP=FOLDER, projects side by side in FOLDER (grade_test.sh's
 round trip's slots) share objects too: FOLDER/<project> is replaced by a placeholder in the key
 and in the dependency file. Such an object keeps the first project's paths in its __FILE__
 strings, which only assertion messages show. An object compiled with a -D definition that names
-the project's folder (the tests' RB_SOURCE_DIR) is never shared: the path is in its code.
+the project's folder is never shared: the path is in its code. Only tests/source_dir.cpp has
+one (RB_SOURCE_DIR, the folder the tests read scenes from), so the test files are shared too.
 """
 
 import hashlib
