@@ -219,7 +219,8 @@ Agreement compare(const std::vector<float>& a, const std::vector<float>& b, bool
 const char* layoutKey(rb::BVHLayout layout) {
     return layout == rb::BVHLayout::Binary  ? "binary"
            : layout == rb::BVHLayout::Wide4 ? "wide4"
-                                            : "wide8";
+           : layout == rb::BVHLayout::Wide8 ? "wide8"
+                                            : "wide8q";
 }
 
 /// Command-line settings.
