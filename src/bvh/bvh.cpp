@@ -288,12 +288,10 @@ void BVH::build(std::vector<AABB> primitiveBounds, const BVHBuildOptions& option
     nodes_.clear();
     wide_.clear();
     wide8_.clear();
-    wide8q_.clear();
     order_.clear();
     bounds_ = AABB();
     layout_ = options.layout;
-    if ((layout_ == BVHLayout::Wide8 || layout_ == BVHLayout::Wide8Q) && !wide8Available())
-        layout_ = BVHLayout::Wide4;
+    if (layout_ == BVHLayout::Wide8 && !wide8Available()) layout_ = BVHLayout::Wide4;
     if (primitiveBounds.empty()) return;
     const size_t n = primitiveBounds.size();
     BuildState s{{}, options};
@@ -318,14 +316,6 @@ void BVH::build(std::vector<AABB> primitiveBounds, const BVHBuildOptions& option
         wide_ = collapseToWide<4>(tree.nodes);
     } else if (layout_ == BVHLayout::Wide8) {
         wide8_ = collapseToWide<8>(tree.nodes);
-    } else if (layout_ == BVHLayout::Wide8Q) {
-        wide8_ = collapseToWide<8>(tree.nodes);
-        if (quantizeWide8(wide8_, wide8q_)) {
-            std::vector<WideNode8>().swap(wide8_);
-        } else {
-            wide8q_.clear();
-            layout_ = BVHLayout::Wide8;
-        }
     } else {
         tree.nodes.shrink_to_fit();
         nodes_ = std::move(tree.nodes);
@@ -358,11 +348,6 @@ BVHLayout bvhLayoutNamed(const std::string& name) {
                 "or wide");
         return BVHLayout::Wide8;
     }
-    if (name == "wide8q") {
-        if (!wide8Available())
-            throw InputError("--bvh=wide8q: this CPU has no AVX2; use wide4 or wide");
-        return BVHLayout::Wide8Q;
-    }
     throw InputError("--bvh: expected binary, wide, wide4 or wide8, got '" + name + "'");
 }
 
@@ -374,8 +359,6 @@ const char* bvhLayoutDescription(BVHLayout layout) {
             return "wide4 (SSE)";
         case BVHLayout::Wide8:
             return "wide8 (AVX2)";
-        case BVHLayout::Wide8Q:
-            return "wide8q (AVX2, quantized)";
     }
     return "?";
 }
@@ -532,69 +515,6 @@ std::vector<WideNodeN<N>> collapseToWide(const std::vector<BVHNode>& binary) {
     }
     wide.shrink_to_fit();
     return wide;
-}
-
-namespace {
-
-/// Quantize axis `axis` of node n into m: the origin is the lowest lower plane, and the scale
-/// the smallest power of two (from about extent/255 up) for which every plane has a step
-/// count whose decoded value is on its outer side. False when none has.
-bool quantizeAxis(const WideNode8& n, int axis, WideNode8Q& m) {
-    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    for (int c = 0; c < 8; ++c)
-        if (m.valid >> c & 1) {
-            lo = std::min(lo, n.lo[axis][c]);
-            hi = std::max(hi, n.hi[axis][c]);
-        }
-    if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
-    m.origin[axis] = lo;
-    int e = 0;
-    std::frexp((static_cast<double>(hi) - lo) / 255.0, &e);
-    for (e = std::max(e, -126); e <= 127; ++e) {
-        const float scale = std::ldexp(1.0f, e);
-        bool fits = true;
-        for (int c = 0; c < 8 && fits; ++c) {
-            if (!(m.valid >> c & 1)) {
-                m.q[0][axis][c] = 255;
-                m.q[1][axis][c] = 0;
-                continue;
-            }
-            int qlo = static_cast<int>(std::clamp(
-                std::floor((static_cast<double>(n.lo[axis][c]) - lo) / scale), 0.0, 255.0));
-            while (qlo > 0 && decodePlane(qlo, scale, lo) > n.lo[axis][c]) --qlo;
-            int qhi = static_cast<int>(std::clamp(
-                std::ceil((static_cast<double>(n.hi[axis][c]) - lo) / scale), 0.0, 255.0));
-            while (qhi < 255 && decodePlane(qhi, scale, lo) < n.hi[axis][c]) ++qhi;
-            fits = decodePlane(qlo, scale, lo) <= n.lo[axis][c] &&
-                   decodePlane(qhi, scale, lo) >= n.hi[axis][c];
-            m.q[0][axis][c] = static_cast<std::uint8_t>(qlo);
-            m.q[1][axis][c] = static_cast<std::uint8_t>(qhi);
-        }
-        if (fits) {
-            m.scale[axis] = scale;
-            return true;
-        }
-    }
-    return false;
-}
-
-}  // namespace
-
-bool quantizeWide8(const std::vector<WideNode8>& nodes, std::vector<WideNode8Q>& out) {
-    out.clear();
-    out.reserve(nodes.size());
-    for (const WideNode8& n : nodes) {
-        WideNode8Q m{};
-        for (int c = 0; c < 8; ++c) {
-            if (n.lo[0][c] <= n.hi[0][c]) m.valid |= std::uint8_t(1u << c);
-            m.child[c] = n.child[c];
-            m.count[c] = n.count[c];
-        }
-        for (int axis = 0; axis < 3; ++axis)
-            if (!quantizeAxis(n, axis, m)) return false;
-        out.push_back(m);
-    }
-    return true;
 }
 
 template std::vector<WideNodeN<4>> collapseToWide<4>(const std::vector<BVHNode>&);

@@ -28,7 +28,6 @@ enum class BVHLayout {
     Binary,  ///< The build tree itself, one double-precision box per node: the lesson.
     Wide4,   ///< The build tree collapsed into four-wide float nodes, SSE (wide_bvh.h).
     Wide8,   ///< The build tree collapsed into eight-wide float nodes, AVX2 (wide_bvh8.h).
-    Wide8Q,  ///< Wide8 with its child boxes quantized to 8 bits a plane (WideNode8Q).
 };
 
 /// The widest layout this build and CPU run: Wide8 with AVX2, else Wide4. The default.
@@ -74,21 +73,17 @@ class BVH {
     const std::vector<WideNode>& wideNodes() const { return wide_; }
     /// The eight-wide nodes (empty unless BVHLayout::Wide8).
     const std::vector<WideNode8>& wide8Nodes() const { return wide8_; }
-    /// The quantized eight-wide nodes (empty unless BVHLayout::Wide8Q).
-    const std::vector<WideNode8Q>& wide8QNodes() const { return wide8q_; }
     const std::vector<std::uint32_t>& primitiveOrder() const { return order_; }
     /// Frees primitiveOrder() once its owner has put its primitives in that order.
     void releasePrimitiveOrder() { std::vector<std::uint32_t>().swap(order_); }
     /// The bounds of every primitive (exact: the nodes' boxes are a few ulps wider).
     const AABB& bounds() const { return bounds_; }
     /// Nodes of the kept tree.
-    size_t nodeCount() const {
-        return nodes_.size() + wide_.size() + wide8_.size() + wide8q_.size();
-    }
+    size_t nodeCount() const { return nodes_.size() + wide_.size() + wide8_.size(); }
     /// Bytes of node storage.
     size_t nodeBytes() const {
         return nodes_.size() * sizeof(BVHNode) + wide_.size() * sizeof(WideNode) +
-               wide8_.size() * sizeof(WideNode8) + wide8q_.size() * sizeof(WideNode8Q);
+               wide8_.size() * sizeof(WideNode8);
     }
     /// Depth of the deepest leaf.
     int depth() const { return depth_; }
@@ -166,7 +161,6 @@ class BVH {
     [[gnu::always_inline]] bool closest(const Ray& ray, double& tMax, LeafTest&& leaf) const {
 #if RB_HAVE_WIDE8
         if (layout_ == BVHLayout::Wide8) return closestWide8Call(wide8_, ray, tMax, leaf);
-        if (layout_ == BVHLayout::Wide8Q) return closestWide8Call(wide8q_, ray, tMax, leaf);
 #endif
         return layout_ == BVHLayout::Wide4 ? closestWide(wide_, ray, tMax, leaf)
                                            : closestSimple(ray, tMax, leaf);
@@ -177,7 +171,6 @@ class BVH {
     [[gnu::always_inline]] bool any(const Ray& ray, double tMax, LeafTest&& leaf) const {
 #if RB_HAVE_WIDE8
         if (layout_ == BVHLayout::Wide8) return anyWide8Call(wide8_, ray, tMax, leaf);
-        if (layout_ == BVHLayout::Wide8Q) return anyWide8Call(wide8q_, ray, tMax, leaf);
 #endif
         return layout_ == BVHLayout::Wide4 ? anyWide(wide_, ray, tMax, leaf)
                                            : anySimple(ray, tMax, leaf);
@@ -195,9 +188,6 @@ class BVH {
         for (WideNode8& n : wide8_)
             for (int c = 0; c < 8; ++c)
                 if (n.count[c] > 0) f(n.child[c], std::uint32_t{n.count[c]});
-        for (WideNode8Q& n : wide8q_)
-            for (int c = 0; c < 8; ++c)
-                if (n.count[c] > 0) f(n.child[c], std::uint32_t{n.count[c]});
     }
     /// Call f(first, count) for every leaf, in the same order.
     template <class F>
@@ -207,10 +197,9 @@ class BVH {
     }
 
   private:
-    std::vector<BVHNode> nodes_;      ///< The build tree; kept only for BVHLayout::Binary.
-    std::vector<WideNode> wide_;      ///< The four-wide nodes; only for BVHLayout::Wide4.
-    std::vector<WideNode8> wide8_;    ///< The eight-wide nodes; only for BVHLayout::Wide8.
-    std::vector<WideNode8Q> wide8q_;  ///< The quantized ones; only for BVHLayout::Wide8Q.
+    std::vector<BVHNode> nodes_;    ///< The build tree; kept only for BVHLayout::Binary.
+    std::vector<WideNode> wide_;    ///< The four-wide nodes; only for BVHLayout::Wide4.
+    std::vector<WideNode8> wide8_;  ///< The eight-wide nodes; only for BVHLayout::Wide8.
     std::vector<std::uint32_t> order_;
     AABB bounds_;
     BVHLayout layout_ = BVHLayout::Wide4;

@@ -18,7 +18,6 @@ void installChapter03(Pipeline& p, Scene&, const RenderContext& context) {
             p.buildAggregate = buildWide4BVHAggregate;
             break;
         case BVHLayout::Wide8:
-        case BVHLayout::Wide8Q:
             p.buildAggregate = buildWide8BVHAggregate;
             break;
     }

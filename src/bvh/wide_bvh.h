@@ -40,31 +40,6 @@ using WideNode8 = WideNodeN<8>;
 static_assert(sizeof(WideNode) == 128);
 static_assert(sizeof(WideNode8) == 256);
 
-/// An eight-wide node with its child boxes quantized: each plane is 8 bits, a step count from the
-/// node's origin in steps of a power of two, axis by axis. A plane decodes to the float
-/// q·scale + origin, computed in float as written (q·scale is exact), and the build chose every
-/// q so that the decoded lower planes are at most, and the upper planes at least, the float
-/// boxes of WideNode8: the boxes only grow, so the slab test stays conservative. Unused
-/// children are left out by `valid`. 128 bytes, two cache lines.
-struct alignas(64) WideNode8Q {
-    float origin[3];          ///< The lowest lower plane of the children, axis by axis.
-    float scale[3];           ///< A power of two per axis.
-    std::uint8_t q[2][3][8];  ///< [lower, upper][axis][child].
-    std::uint32_t child[8];   ///< Interior: node index. Leaf: first primitive slot.
-    std::uint16_t count[8];   ///< 0 for an interior child; primitives in a leaf.
-    std::uint8_t valid;       ///< Bit c: child c exists.
-};
-static_assert(sizeof(WideNode8Q) == 128);
-
-/// A quantized plane as the traversal decodes it.
-inline float decodePlane(int q, float scale, float origin) {
-    return static_cast<float>(q) * scale + origin;
-}
-
-/// The eight-wide nodes quantized (WideNode8Q); false, leaving `out` unspecified, when a box
-/// cannot be (infinite planes, say), in which case the float nodes stay.
-bool quantizeWide8(const std::vector<WideNode8>& nodes, std::vector<WideNode8Q>& out);
-
 /// Collapse a binary build tree (first child after its parent, second at `offset`) into nodes
 /// of up to N children, each a subtree below one binary node: for N = 4 greedily (the largest
 /// child is opened until there are four), for N = 8 where the SAH cost of the wide tree is least
@@ -157,8 +132,7 @@ class WideStack {
     bool empty() const { return top_ == 0; }
     int size() const { return top_; }
     /// Push child c of node n, entered at tEntry.
-    template <class Node>
-    void push(const Node& n, int c, float tEntry) {
+    void push(const WideNodeN<N>& n, int c, float tEntry) {
         key_[top_] = std::uint64_t{n.count[c]} << 32 | n.child[c];
         t_[top_++] = tEntry;
     }

@@ -81,36 +81,6 @@ struct WideRay8 {
 }
 // [wide8-slab-test]
 
-/// Eight planes of a quantized node, decoded as decodePlane does, lane for lane: `offset` bytes
-/// into its q, on `axis`.
-[[gnu::always_inline, RB_AVX2]] inline __m256 decodePlanes8(const WideNode8Q& n, int offset,
-                                                            int axis) {
-    const __m128i bytes = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(&n.q[0][0][0] + offset));
-    const __m256 steps = _mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(bytes));
-    return _mm256_add_ps(_mm256_mul_ps(steps, _mm256_broadcast_ss(&n.scale[axis])),
-                         _mm256_broadcast_ss(&n.origin[axis]));
-}
-
-/// The slab test of intersectChildren8 against a quantized node: each plane decoded to the float
-/// q·scale + origin, then the same arithmetic. The plane offsets of WideRay8, in floats of a
-/// WideNode8, are the offsets in bytes of the planes in q.
-[[gnu::always_inline, RB_AVX2]] inline int intersectChildren8(const WideNode8Q& n,
-                                                              const WideRay8& r, __m256 tMax,
-                                                              __m256& tEntry) {
-    __m256 t0 = _mm256_setzero_ps(), t1 = tMax;
-    for (int axis = 0; axis < 3; ++axis) {
-        const __m256 tNear =
-            _mm256_mul_ps(_mm256_sub_ps(decodePlanes8(n, r.nearPlane[axis], axis), r.oNear[axis]),
-                          r.invDNear[axis]);
-        const __m256 tFar = _mm256_mul_ps(
-            _mm256_sub_ps(decodePlanes8(n, r.farPlane[axis], axis), r.oFar[axis]), r.invDFar[axis]);
-        t0 = _mm256_max_ps(tNear, t0);
-        t1 = _mm256_min_ps(tFar, t1);
-    }
-    tEntry = t0;
-    return _mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ)) & n.valid;
-}
-
 /// The closest hit so far, rounded up to float and stretched, in all eight lanes.
 [[gnu::always_inline, RB_AVX2]] inline __m256 wideTMax8(double tMax) {
     return _mm256_set1_ps(roundUpToFloat(tMax) * kFarWidening);
@@ -119,8 +89,8 @@ struct WideRay8 {
 // [wide8-traverse]
 /// closestWide over eight-wide nodes: the same walk (children hit visited nearest first, the
 /// others waiting on the stack with their entry distance), eight boxes per node.
-template <class Node, class LeafTest>
-[[gnu::always_inline, RB_AVX2]] inline bool closestWide8(const std::vector<Node>& nodes,
+template <class LeafTest>
+[[gnu::always_inline, RB_AVX2]] inline bool closestWide8(const std::vector<WideNode8>& nodes,
                                                          const Ray& ray, double& tMax,
                                                          LeafTest&& leaf) {
     if (nodes.empty()) return false;
@@ -138,7 +108,7 @@ template <class Node, class LeafTest>
             }
         } else {
             // A node: which children does the ray enter, and where?
-            const Node& n = nodes[ref];
+            const WideNode8& n = nodes[ref];
             __m256 tEntry;
             int mask = intersectChildren8(n, r, tMaxF, tEntry);
             if (mask != 0) {
@@ -183,16 +153,16 @@ template <class Node, class LeafTest>
 
 /// anyWide over eight-wide nodes: stops at the first leaf for which leaf(first, count, tMax)
 /// returns true.
-template <class Node, class LeafTest>
-[[gnu::always_inline, RB_AVX2]] inline bool anyWide8(const std::vector<Node>& nodes, const Ray& ray,
-                                                     double tMax, LeafTest&& leaf) {
+template <class LeafTest>
+[[gnu::always_inline, RB_AVX2]] inline bool anyWide8(const std::vector<WideNode8>& nodes,
+                                                     const Ray& ray, double tMax, LeafTest&& leaf) {
     if (nodes.empty()) return false;
     const WideRay8 r{WideRay(ray)};
     const __m256 tMaxF = wideTMax8(tMax);
     WideStack<8> stack;
     std::uint32_t ref = 0, count = 0;  // start at the root node
     for (;;) {
-        const Node& n = nodes[ref];
+        const WideNode8& n = nodes[ref];
         __m256 tEntry;
         for (int mask = intersectChildren8(n, r, tMaxF, tEntry); mask; mask &= mask - 1) {
             const int c = __builtin_ctz(mask);
@@ -209,15 +179,15 @@ template <class Node, class LeafTest>
 /// closestWide8 as a function of its own, compiled for AVX2, that a caller compiled for any
 /// x86-64 may call (a function cannot be inlined into one with fewer instructions). The leaf
 /// test is inlined into it.
-template <class Node, class LeafTest>
-[[gnu::noinline, RB_AVX2]] bool closestWide8Call(const std::vector<Node>& nodes, const Ray& ray,
-                                                 double& tMax, LeafTest& leaf) {
+template <class LeafTest>
+[[gnu::noinline, RB_AVX2]] bool closestWide8Call(const std::vector<WideNode8>& nodes,
+                                                 const Ray& ray, double& tMax, LeafTest& leaf) {
     return closestWide8(nodes, ray, tMax, leaf);
 }
 
 /// anyWide8 as a function of its own, compiled for AVX2 (see closestWide8Call).
-template <class Node, class LeafTest>
-[[gnu::noinline, RB_AVX2]] bool anyWide8Call(const std::vector<Node>& nodes, const Ray& ray,
+template <class LeafTest>
+[[gnu::noinline, RB_AVX2]] bool anyWide8Call(const std::vector<WideNode8>& nodes, const Ray& ray,
                                              double tMax, LeafTest& leaf) {
     return anyWide8(nodes, ray, tMax, leaf);
 }

@@ -219,8 +219,7 @@ Agreement compare(const std::vector<float>& a, const std::vector<float>& b, bool
 const char* layoutKey(rb::BVHLayout layout) {
     return layout == rb::BVHLayout::Binary  ? "binary"
            : layout == rb::BVHLayout::Wide4 ? "wide4"
-           : layout == rb::BVHLayout::Wide8 ? "wide8"
-                                            : "wide8q";
+                                            : "wide8";
 }
 
 /// Command-line settings.
