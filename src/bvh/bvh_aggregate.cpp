@@ -9,10 +9,13 @@
 
 namespace rb {
 
-BVHAggregate::BVHAggregate(const std::vector<Instance>& instances, BVHLayout layout) {
+BVHAggregate::BVHAggregate(const std::vector<Instance>& instances, BVHLayout layout,
+                           size_t binaryUpTo)
+    : asked_(layout == BVHLayout::Wide8 && !wide8Available() ? BVHLayout::Wide4 : layout) {
     std::vector<AABB> boxes;
     boxes.reserve(instances.size());
     for (const Instance& i : instances) boxes.push_back(i.worldBounds);
+    if (instances.size() <= binaryUpTo) layout = BVHLayout::Binary;
     bvh_.build(boxes, BVHBuildOptions{16, 2, 1.0, layout});
     for (std::uint32_t p : bvh_.primitiveOrder()) ordered_.push_back(&instances[p]);
 }
@@ -73,9 +76,12 @@ std::string BVHAggregate::statistics() const {
             }
     bytes += meshBvhBytes;
     char line[256];
-    std::snprintf(line, sizeof line, "%s BVH, %zu nodes, %.2f MiB",
-                  bvhLayoutDescription(bvh_.layout()), nodes, bytes / 1048576.0);
+    std::snprintf(line, sizeof line, "%s BVH, %zu nodes, %.2f MiB", bvhLayoutDescription(asked_),
+                  nodes, bytes / 1048576.0);
     std::string out = line;
+    if (bvh_.layout() != asked_)
+        out += std::string(" (top level ") + bvhLayoutDescription(bvh_.layout()) + ": " +
+               std::to_string(ordered_.size()) + " instances)";
     if (triangles) {
         std::snprintf(line, sizeof line, "; %zu triangles: %.1f bytes/triangle (mesh) + %.1f (BVH)",
                       triangles, double(triangleBytes) / triangles,

@@ -11,11 +11,18 @@ namespace rb {
 /// Chapter 3: triangle meshes and the two-level BVH.
 Feature bvhFeature();
 
-/// A BVH over instances' world bounds; each instance then uses its shape's own structure.
+/// Top levels of at most this many instances are binary trees whatever the layout asked for:
+/// for a handful of instances, preparing the ray for a wide node costs more than the one-box
+/// tests it replaces (chapter 3, "Two levels and instancing", has the measurements).
+inline constexpr size_t kBinaryTopLevel = 8;
+
+/// A BVH over instances' world bounds; each instance then uses its shape's own structure. The
+/// tree has the layout asked for, unless there are at most `binaryUpTo` instances; the meshes'
+/// trees are theirs (built when the scene is read).
 class BVHAggregate final : public Aggregate {
   public:
     explicit BVHAggregate(const std::vector<Instance>& instances,
-                          BVHLayout layout = bestWideLayout());
+                          BVHLayout layout = bestWideLayout(), size_t binaryUpTo = kBinaryTopLevel);
     bool intersect(const Ray& ray, double tMax, Hit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
     /// Nodes and bytes of both levels, and bytes per triangle of the meshes.
@@ -25,6 +32,7 @@ class BVHAggregate final : public Aggregate {
   private:
     std::vector<const Instance*> ordered_;  ///< Instances in BVH leaf order.
     BVH bvh_;
+    BVHLayout asked_;  ///< The layout asked for (--bvh), which --stats names.
 };
 
 /// An AggregateBuilder for BVHAggregate with the widest layout this CPU runs (--bvh=wide).
