@@ -4,10 +4,11 @@
 // subdivisions (tests/perf/subdivide.cpp: 3.7k, 15k, 59k and 235k triangles) and draws
 // docs/charts/ch03-bvh-scaling.svg. A benchmark, not a test.
 //
-// usage: bvh_scaling file.obj [--rays N] [--brute-rays N] [--runs N] [--header]
+// usage: bvh_scaling file.obj [--rays N] [--brute-rays N] [--runs N] [--bvh LAYOUT] [--header]
 //   --rays N        incoherent rays through the BVH (default 2^18)
 //   --brute-rays N  the first N of them also through a loop over every triangle (default 0: off)
 //   --runs N        repeats of each timing; the median is reported (default 3)
+//   --bvh LAYOUT    binary, wide4, wide8 or wide (default: wide, the widest this CPU runs)
 //   --header        print the column names first
 // Prints one line: triangles, Mesh construction ms, BVH::build ms, BVH µs/ray, brute-force
 // µs/ray (-1 when off), mesh bytes/triangle, BVH bytes/triangle, peak RSS after loading the OBJ
@@ -96,6 +97,7 @@ struct Settings {
     int rays = 1 << 18;
     int bruteRays = 0;
     int runs = 3;
+    rb::BVHLayout layout = rb::bestWideLayout();
     bool header = false;
 };
 
@@ -114,6 +116,8 @@ Settings parse(int argc, char** argv) {
             s.bruteRays = number();
         else if (a == "--runs")
             s.runs = std::max(1, number());
+        else if (a == "--bvh" && i + 1 < argc)
+            s.layout = rb::bvhLayoutNamed(argv[++i]);
         else if (a == "--header")
             s.header = true;
         else if (s.obj.empty() && !a.empty() && a[0] != '-')
@@ -129,7 +133,7 @@ int run(const Settings& s) {
     // Load and build once, as ./rt does, and take the memory peak there.
     const rb::ObjData data = rb::loadObj(s.obj);
     const double peakLoad = peakMiB();
-    auto mesh = std::make_unique<rb::Mesh>(data, s.obj);
+    auto mesh = std::make_unique<rb::Mesh>(data, s.obj, s.layout);
     const double peakBuild = peakMiB();
 
     // Build times: the whole rb::Mesh (copying triangles into BVH order included), and
@@ -145,12 +149,14 @@ int run(const Settings& s) {
     for (int i = 0; i < s.runs; ++i) {
         auto t0 = Clock::now();
         {
-            const rb::Mesh m(data, s.obj);
+            const rb::Mesh m(data, s.obj, s.layout);
             meshMs.push_back(1e3 * seconds(t0));
         }
         t0 = Clock::now();
         rb::BVH bvh;
-        bvh.build(boxes);
+        rb::BVHBuildOptions options;
+        options.layout = s.layout;
+        bvh.build(boxes, options);
         bvhMs.push_back(1e3 * seconds(t0));
     }
 
