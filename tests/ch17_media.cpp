@@ -11,7 +11,9 @@
 /// furnace: an albedo-1 medium under a uniform sky returns the sky. End to end: the image does
 /// not depend on the majorant grid, the camera may sit inside a medium, concave, nested and
 /// overlapping media hold the medium the scene graph says, interfaces cost no depth, a dense
-/// medium (σ = 1000) renders without black or NaN pixels, and bad media are refused.
+/// medium (σ = 1000) renders without black or NaN pixels, a dense white medium lit by ambient
+/// light alone returns no more than the ambient term (the term is counted once per path), and bad
+/// media are refused.
 /// Random streams use seed 1 (RB_CH17_SEED re-runs them on other streams).
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -634,17 +636,57 @@ SCENARIO("A dense medium renders without black or NaN pixels", "[ch17]") {
             THEN("every pixel is finite, and every pixel of the box's face is lit") {
                 CHECK(rbtest::allFiniteNonNegative(image));
                 // The box covers the middle of the view; its face scatters the light back. A4's
-                // ambient (0.1) alone would give 0.1, and single scattering adds about an eighth
-                // of a white wall's light (the first particle sees the light through the cloud
-                // only at grazing depth), together about 0.2; multiple scattering brings the
-                // face near a white wall's 0.5 to 0.9. So a face darker than 0.25 means the
-                // light got lost in the cloud.
+                // ambient (0.1, counted once per path) alone would give 0.1, and single
+                // scattering adds about an eighth of a white wall's light (the first particle
+                // sees the light through the cloud only at grazing depth), together about 0.14;
+                // multiple scattering brings the face near a white wall's 0.5 to 0.9 (mean 0.76
+                // at 16 paths; at these 4 paths the darkest pixel is 0.31). So a face darker
+                // than 0.25 means the light got lost in the cloud.
                 float darkest = 1e9f;
                 for (int y = 12; y < 20; ++y)
                     for (int x = 12; x < 20; ++x)
                         darkest = std::min(darkest, image.data()[3 * (y * 32 + x)]);
                 INFO("darkest pixel of the face " << darkest);
                 CHECK(darkest > 0.25f);
+            }
+        }
+    }
+}
+
+SCENARIO("An ambient furnace: a dense white medium lit by ambient light alone returns no more "
+         "than the ambient term",
+         "[ch17]") {
+    // Source: A4's ambient term stands for all the indirect light, so a path counts it once, at
+    // its first scattering, as a diffuse surface does (DESIGN §6: the ambient term is counted once
+    // per camera path). With no lights and a black sky, every path that scatters returns exactly
+    // the ambient A, and one that does not returns 0: a pixel is A times the fraction of its
+    // paths that scatter, never more. A path that counted A at each of its hundreds of
+    // scatterings in a cloud of albedo 1 returned up to 1/(1 − albedo) times A.
+    GIVEN("a ball of a milk-like medium (σs = 45, σa = 0, no surface), ambient 0.1, a dark light") {
+        const std::string lua = R"(
+local root = gr.node('root')
+local milk = gr.sphere('milk')
+milk:set_medium(gr.medium{sigma_s = 45, sigma_a = 0})
+root:add_child(milk)
+gr.render(root, 'x.png', 32, 32, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 40, {0.1, 0.1, 0.1},
+          {gr.light({1, 2, 3}, {0, 0, 0}, {1, 0, 0})})
+)";
+        WHEN("it is rendered with 4 paths a pixel") {
+            const rb::Image image = renderMedia(lua, 4);
+            THEN("no pixel reads more than the ambient term, and the ball's middle reads it") {
+                float brightest = 0.0f, middle = 1e9f;
+                for (int y = 0; y < 32; ++y)
+                    for (int x = 0; x < 32; ++x) {
+                        const float v = image.data()[3 * (y * 32 + x)];
+                        brightest = std::max(brightest, v);
+                        if (x >= 14 && x < 18 && y >= 14 && y < 18) middle = std::min(middle, v);
+                    }
+                INFO("brightest pixel " << brightest << ", darkest of the middle " << middle);
+                // The float film rounds 0.1 to within 1e-7.
+                CHECK(brightest <= 0.1f + 1e-6f);
+                // Through the middle the ball is 2 units of σt = 45: e^−90 of the paths cross
+                // it without scattering.
+                CHECK(middle >= 0.1f - 1e-6f);
             }
         }
     }

@@ -6,11 +6,11 @@ namespace rb {
 
 // [trace]
 Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth,
-                         const MediumStack& media, double weight) const {
+                         const MediumStack& media, double weight, bool ambient) const {
     Hit hit;
     const bool found =
         scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit);
-    const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight};
+    const ShadeContext ctx{scene_, *this, sampler, counters, depth, media, weight, ambient};
     if (pipeline_.media) {
         // Media (chapter 17): the light they scatter in, plus what reaches us from the end.
         Colour throughput(1.0);

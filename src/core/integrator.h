@@ -52,6 +52,9 @@ struct ShadeContext {
     int depth;
     const MediumStack& media;
     double weight;  ///< How much this surface's colour counts in the pixel (1 at the camera).
+    /// False once the path has counted A4's ambient term at a scattering event (chapter 17):
+    /// the ambient light stands for all the indirect light, so a path counts it once.
+    bool ambient = true;
 };
 
 /// The local shading model: chapter 1 has a headlight; chapter 2 replaces it with Phong.
@@ -146,8 +149,10 @@ class Integrator {
     Integrator(const Scene& scene, const Pipeline& pipeline) : scene_(scene), pipeline_(pipeline) {}
     /// Radiance arriving along a ray (reversed): the shaded colour of the first surface, or
     /// the background.
+    /// `ambient` is false on a path that has already counted A4's ambient term.
     Colour trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth,
-                 const MediumStack& media = kNoMedia, double weight = 1.0) const;
+                 const MediumStack& media = kNoMedia, double weight = 1.0,
+                 bool ambient = true) const;
     /// True when something lies along the ray with t in (0, tMax): the shadow query.
     bool occluded(const Ray& ray, double tMax, RayCounters& counters) const {
         counters.add(RayKind::Shadow);

@@ -172,13 +172,17 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
                                     ctx.counters,
                                     ctx.depth + 1,
                                     ctx.media,
-                                    ctx.weight * maxChannel(beta)};
+                                    ctx.weight * maxChannel(beta),
+                                    false};
             return radiance +
                    beta * (found ? ctx.integrator.shade(next, r, hit) : ctx.scene.background);
         }
-        // Step 1: a particle at x scatters the lights' light towards us (single scattering).
+        // Step 1: a particle at x scatters the lights' light towards us (single scattering),
+        // and at the path's first scattering A4's ambient light, which stands for all the
+        // indirect light: the rest of the path must not count it again.
         const Vec3 travel = glm::normalize(r.d);
         radiance += beta * lightScattered(ctx, x, travel, *m);
+        if (bounce == 0 && ctx.ambient) radiance += beta * ctx.scene.ambient;
         // Step 2: and light from one direction the phase function draws (its pdf cancels the
         // phase function), until the path has scattered `bounces` more times.
         if (bounce >= settings_.bounces || ctx.weight * maxChannel(beta) < ctx.scene.minWeight)
@@ -194,9 +198,7 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
 // [media-light-scattered]
 Colour ParticipatingMedia::lightScattered(const ShadeContext& ctx, const Vec3& x,
                                           const Vec3& travel, const Medium& m) const {
-    // A4's ambient light arrives from every direction alike, and the phase function integrates
-    // to 1: a particle scatters all of it, as a white diffuse surface returns kd · ambient.
-    Colour light = ctx.scene.ambient;
+    Colour light(0.0);
     for (const PointLight& source : ctx.scene.lights) {
         const bool area = source.shape && ctx.scene.sampleAreaLights;
         const int perAxis = !area                        ? 1
@@ -239,7 +241,12 @@ Colour ParticipatingMedia::march(const ShadeContext& ctx, const Ray& ray, const 
         const double density = m.density->at(local.o + t * local.d);
         if (!(density > 0.0)) continue;
         const Vec3 x = ray.o + t * ray.d;
-        scattered += tr * m.sigmaS * density * settings_.step * lightScattered(ctx, x, travel, m);
+        // Single scattering only: each step's particle is a path's one scattering, so it
+        // counts A4's ambient light (which arrives from every direction alike, and the phase
+        // function integrates to 1), as a white diffuse surface returns kd · ambient.
+        const Colour ambient = ctx.ambient ? ctx.scene.ambient : Colour(0.0);
+        scattered += tr * m.sigmaS * density * settings_.step *
+                     (ambient + lightScattered(ctx, x, travel, m));
         tr *= beerLambert(m.sigmaT() * density, settings_.step);
         if (!(maxChannel(tr) > 0.0)) break;
     }

@@ -45,8 +45,8 @@ class ParticipatingMedia final : public MediaTerm {
     void pieces(const Ray& ray, double tEnd, std::vector<Piece>& out) const;
 
     /// The light that a particle at x of medium m scatters along the unit direction `travel`
-    /// reversed: A4's ambient light, and every light through attenuated shadow rays (single
-    /// scattering).
+    /// reversed from every light, through attenuated shadow rays (single scattering). A4's
+    /// ambient light is the caller's to add, once per path.
     Colour lightScattered(const ShadeContext& ctx, const Vec3& x, const Vec3& travel,
                           const Medium& m) const;
 

@@ -58,7 +58,8 @@ Colour shadePhong(const ShadeContext& ctx, const Ray& ray, const Hit& hit) {
     const Vec3 v = -glm::normalize(ray.d);
     const Vec3 n = faceForward(hit.ns, v);
     const Vec3 ng = faceForward(hit.ng, v);
-    Colour colour = m.kd * ctx.scene.ambient;
+    // A4's ambient term, unless the path counted it already (at a particle of smoke, chapter 17).
+    Colour colour = ctx.ambient ? m.kd * ctx.scene.ambient : Colour(0.0);
     for (const PointLight& light : ctx.scene.lights) {
         if (!light.shape || !ctx.scene.sampleAreaLights) {
             colour += lightFromPoint(ctx, hit, m, n, ng, v, light, light.position, 1.0);

@@ -31,7 +31,7 @@ Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, 
         // One sharp ray.
         ctx.counters.add(kind);
         return ctx.integrator.trace(Ray{origin, axis}, ctx.sampler, ctx.counters, ctx.depth + 1,
-                                    media, pathWeight);
+                                    media, pathWeight, ctx.ambient);
     }
     // A glossy surface: average the lobe's directions; those that fall below the surface
     // carry nothing.
@@ -41,7 +41,7 @@ Colour traceSpecular(const ShadeContext& ctx, const Hit& hit, const Vec3& axis, 
         if (!lobe->sample(*hit.material, axis, side, ctx.sampler, direction)) continue;
         ctx.counters.add(RayKind::Glossy);
         sum += ctx.integrator.trace(Ray{origin, direction}, ctx.sampler, ctx.counters,
-                                    ctx.depth + 1, media, pathWeight);
+                                    ctx.depth + 1, media, pathWeight, ctx.ambient);
     }
     return sum / static_cast<double>(samples);
 }
