@@ -62,6 +62,7 @@
 #include "quadrics/quadrics.h"
 #include "photon_map/photon_map.h"
 #include "media/media.h"
+#include "path_tracing/path_tracing.h"
 #include "lab/chi_square.h"
 
 namespace rbtest {
@@ -122,7 +123,7 @@ inline rb::FeatureSet chapters(int last, const std::string& spec = "all") {
                                           rb::bumpFeature(),        rb::toneMapFeature(),
                                           rb::dofFeature(),         rb::csgFeature(),
                                           rb::quadricsFeature(),    rb::photonMapFeature(),
-                                          rb::mediaFeature()};
+                                          rb::mediaFeature(),       rb::pathTracingFeature()};
     std::vector<rb::Feature> upTo;
     for (const rb::Feature& f : all)
         if (f.chapter <= last) upTo.push_back(f);

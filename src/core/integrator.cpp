@@ -7,6 +7,8 @@ namespace rb {
 // [trace]
 Colour Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters, int depth,
                          const MediumStack& media, double weight, bool ambient) const {
+    // A camera ray of a path-traced render (chapter 18): the estimator follows the whole path.
+    if (pipeline_.radiance && depth == 0) return pipeline_.radiance->Li(*this, ray, sampler, counters);
     Hit hit;
     const bool found =
         scene_.aggregate->intersect(ray, std::numeric_limits<double>::infinity(), hit);

@@ -114,6 +114,32 @@ class MediaTerm {
     /// were already tested).
     virtual Colour transmittance(const Vec3& a, const Vec3& b, Sampler& sampler,
                                  RayCounters& counters) const = 0;
+
+    /// Where a path scatters in the media along the ray up to tEnd (chapter 18's one path
+    /// loop): false when it reaches tEnd (`beta` is multiplied by the free-flight weight, the
+    /// transmittance's estimate); true with the particle at x, the phase function's asymmetry
+    /// g and `beta` multiplied by the flight's weight (the albedo for a grey medium). An
+    /// absorbed path returns true with beta zero.
+    struct Interaction {
+        Vec3 x{0.0};     ///< Where the particle is.
+        double g = 0.0;  ///< Its Henyey–Greenstein asymmetry.
+    };
+    virtual bool sampleInteraction(const ShadeContext& ctx, const Ray& ray, double tEnd,
+                                   Colour& beta, Interaction& interaction) const = 0;
+    /// The phase function's value for light travelling along unit `travel` and leaving along
+    /// unit `out` (per steradian), and a direction drawn from it (its pdf equals its value).
+    virtual double phase(double g, const Vec3& travel, const Vec3& out) const = 0;
+    virtual Vec3 samplePhase(double g, const Vec3& travel, const Vec2& u) const = 0;
+};
+
+/// Radiance along a camera ray by a method of its own, replacing the surface shader and the
+/// secondary terms (chapter 18's path tracer).
+class RadianceEstimator {
+  public:
+    virtual ~RadianceEstimator() = default;
+    /// The radiance arriving along the ray (reversed).
+    virtual Colour Li(const Integrator& integrator, const Ray& ray, Sampler& sampler,
+                      RayCounters& counters) const = 0;
 };
 
 /// How a render is put together; each enabled feature adjusts it.
@@ -141,6 +167,9 @@ struct Pipeline {
     std::vector<std::shared_ptr<PrePass>> prePasses;
     /// Participating media along every ray (chapter 17), or null: rays cross empty space.
     std::shared_ptr<const MediaTerm> media;
+    /// A method that computes a camera ray's radiance itself (chapter 18's path tracer), or
+    /// null: Whitted's recursion through the surface shader and the terms above.
+    std::shared_ptr<const RadianceEstimator> radiance;
 };
 
 /// Traces rays through a scene with a pipeline.
@@ -166,6 +195,8 @@ class Integrator {
     }
     /// True when media fill some of the scene (chapter 17).
     bool hasMedia() const { return pipeline_.media != nullptr; }
+    /// The scene this integrator traces.
+    const Scene& scene() const { return scene_; }
     /// The colour of the surface at hit, seen along ray: local shading, then each chapter's
     /// secondary term (smooth normals and bumps adjust hit first).
     Colour shade(const ShadeContext& ctx, const Ray& ray, Hit& hit) const;

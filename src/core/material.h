@@ -41,6 +41,9 @@ struct Material {
     /// Textures by slot: "kd" and "ks" replace those colours (chapter 10), "bump" is chapter
     /// 11's height map. Empty for an untextured material, which then costs nothing to shade.
     std::map<std::string, std::shared_ptr<const Texture>, std::less<>> textures = {};
+    /// Radiance the surface emits on both sides: chapter 18's emitting surfaces (zero for
+    /// A4's materials, which only reflect).
+    Colour emission{0.0};
 
     /// A chapter parameter, or fallback when the scene did not set it.
     double param(std::string_view name, double fallback = 0.0) const {

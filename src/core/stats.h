@@ -8,11 +8,21 @@
 namespace rb {
 
 /// The kinds of ray raybook counts. Chapters add secondary kinds here as they appear.
-enum class RayKind : int { Camera, Shadow, Reflection, Refraction, Glossy, Photon, Scatter, Count };
+enum class RayKind : int {
+    Camera,
+    Shadow,
+    Reflection,
+    Refraction,
+    Glossy,
+    Photon,
+    Scatter,
+    Path,  ///< A path tracer's bounce (chapter 18).
+    Count
+};
 
 /// Names for RayKind, in order.
 inline constexpr std::array<const char*, static_cast<int>(RayKind::Count)> kRayKindNames = {
-    "camera", "shadow", "reflection", "refraction", "glossy", "photon", "scatter"};
+    "camera", "shadow", "reflection", "refraction", "glossy", "photon", "scatter", "path"};
 
 /// One thread's ray counts. Aligned to a cache line so threads never share one.
 struct alignas(64) RayCounters {

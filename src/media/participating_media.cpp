@@ -254,6 +254,33 @@ Colour ParticipatingMedia::march(const ShadeContext& ctx, const Ray& ray, const 
 }
 // [media-march]
 
+// [media-interaction]
+bool ParticipatingMedia::sampleInteraction(const ShadeContext& ctx, const Ray& ray, double tEnd,
+                                           Colour& beta, Interaction& interaction) const {
+    // Chapter 18's path loop asks only where a path scatters; this chapter's free flights
+    // answer (delta tracking, whatever --media says: ray marching has no free flights).
+    Vec3 x;
+    const Medium* m = nullptr;
+    const FreeFlight::Event event = track(ctx, ray, tEnd, beta, x, m);
+    if (event == FreeFlight::Event::None) return false;
+    if (event == FreeFlight::Event::Absorbed) {
+        beta = Colour(0.0);
+        return true;
+    }
+    interaction.x = x;
+    interaction.g = m->g;
+    return true;
+}
+
+double ParticipatingMedia::phase(double g, const Vec3& travel, const Vec3& out) const {
+    return henyeyGreenstein(glm::dot(travel, out), g);
+}
+
+Vec3 ParticipatingMedia::samplePhase(double g, const Vec3& travel, const Vec2& u) const {
+    return sampleHenyeyGreenstein(travel, g, u);
+}
+// [media-interaction]
+
 // [media-transmittance]
 Colour ParticipatingMedia::transmittance(const Vec3& a, const Vec3& b, Sampler& sampler,
                                          RayCounters&) const {

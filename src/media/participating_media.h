@@ -35,6 +35,10 @@ class ParticipatingMedia final : public MediaTerm {
                    Colour& throughput) const override;
     Colour transmittance(const Vec3& a, const Vec3& b, Sampler& sampler,
                          RayCounters& counters) const override;
+    bool sampleInteraction(const ShadeContext& ctx, const Ray& ray, double tEnd, Colour& beta,
+                           Interaction& interaction) const override;
+    double phase(double g, const Vec3& travel, const Vec3& out) const override;
+    Vec3 samplePhase(double g, const Vec3& travel, const Vec2& u) const override;
 
     /// One stretch of a ray inside one medium (or in none: medium == nullptr).
     struct Piece {

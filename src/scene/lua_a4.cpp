@@ -104,6 +104,14 @@ int materialTable(lua_State* L) {
         if (key == "kd" || key == "ks") {
             const auto c = checkTupleAt(L, top, 3, label);
             (key == "kd" ? m->kd : m->ks) = Vec3(c[0], c[1], c[2]);
+        } else if (key == "emission") {
+            // Chapter 18's emitting surfaces: a colour of radiance, each channel finite and ≥ 0.
+            checkMaterialField(L, key, "gr.material");
+            const auto c = checkTupleAt(L, top, 3, label);
+            for (double v : c)
+                if (!(v >= 0.0 && std::isfinite(v)))
+                    throw ArgumentError(label + ": expected 3 finite numbers >= 0");
+            m->emission = Vec3(c[0], c[1], c[2]);
         } else if (lua_type(L, -1) == LUA_TBOOLEAN) {
             setMaterialParam(L, *m, key, lua_toboolean(L, -1) ? 1.0 : 0.0, "gr.material");
         } else {
@@ -400,9 +408,13 @@ std::vector<PointLight> checkLights(lua_State* L, int arg) {
             "gr.render: argument " + std::to_string(arg) + " (lights) must be a table of lights",
             arg);
     const lua_Unsigned n = lua_rawlen(L, arg);
-    if (n == 0)
+    // A path-traced scene (chapter 18) may be lit by its emitting surfaces alone.
+    const auto& options = sceneBuilder(L).sceneOptions;
+    const auto path = options.find("integrator_path");
+    if (n == 0 && (path == options.end() || path->second == 0.0))
         throw ArgumentError("gr.render: argument " + std::to_string(arg) +
-                                " (lights) is empty; a scene needs at least one light",
+                                " (lights) is empty; a scene needs at least one light (or, "
+                                "path traced, an emitting surface)",
                             arg);
     std::vector<PointLight> lights;
     for (lua_Unsigned i = 1; i <= n; ++i) {

@@ -66,6 +66,13 @@ int missingChapter(lua_State* L, const std::string& name, std::string& title) {
 
 void setMaterialParam(lua_State* L, Material& m, const std::string& name, double value,
                       const char* call) {
+    checkMaterialField(L, name, call);
+    if (!std::isfinite(value))
+        throw ArgumentError(std::string(call) + ": material field '" + name + "' must be finite");
+    m.params[name] = value;
+}
+
+void checkMaterialField(lua_State* L, const std::string& name, const char* call) {
     const SceneBuilder& builder = sceneBuilder(L);
     if (!builder.materialFields.count(name)) {
         std::string title;
@@ -79,9 +86,6 @@ void setMaterialParam(lua_State* L, Material& m, const std::string& name, double
         throw ArgumentError(std::string(call) + ": unknown material field '" + name +
                             "' (known: " + known + ")");
     }
-    if (!std::isfinite(value))
-        throw ArgumentError(std::string(call) + ": material field '" + name + "' must be finite");
-    m.params[name] = value;
 }
 
 }  // namespace rb

@@ -296,6 +296,10 @@ int missingChapter(lua_State* L, const std::string& name, std::string& title);
 void setMaterialParam(lua_State* L, Material& m, const std::string& name, double value,
                       const char* call);
 
+/// Throws InputError unless a built chapter reads material field `name` (naming the chapter
+/// that would, when one does).
+void checkMaterialField(lua_State* L, const std::string& name, const char* call);
+
 /// gr.material{...}: raybook's named-field form (a call body; may throw).
 int materialTable(lua_State* L);
 /// gr.material(kd, ks, shininess): A4's form (a call body; may throw).
