@@ -31,8 +31,10 @@ slab('ceiling', white, 5.76, 0.1, 5.692, -0.1, 5.488,  0)
 slab('back',    white, 5.76, 5.688, 0.1, -0.1, -0.1, 5.592)
 slab('left',    red,   0.1, 5.688, 5.692, 5.56, -0.1,  0)
 slab('right',   green, 0.1, 5.688, 5.692, -0.1, -0.1,  0)
--- The lamp hangs 1 mm below the ceiling.
-slab('lamp',    lamp,  1.30, 0.01, 1.05, 2.13, 5.468, 2.27)
+-- The lamp is set into the ceiling, its face 0.01 mm below it: only that face shows (a lamp
+-- hanging below the ceiling would light the gap above it, and its sides the ceiling beside
+-- it, brightly enough to throw speckles all over the room).
+slab('lamp',    lamp,  1.30, 0.0002, 1.05, 2.13, 5.4879, 2.27)
 
 -- The two blocks, white, each turned about its own vertical axis.
 local function block(name, height, degrees, x, z)

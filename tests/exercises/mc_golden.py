@@ -117,6 +117,32 @@ PLANTED = {
          "const int rows = strataRows(slot.count), cols = slot.count / rows; "
          "const Vec2 xi = sampler.next2D(); return {xi.x / cols, xi.y / rows};"),
     ],
+    18: [
+        ("18.3 as the balance heuristic (unbiased, a little more noise)", True,
+         "power-heuristic",
+         "if (std::isinf(pdfA)) return 1.0; "
+         "return pdfA + pdfB > 0.0 ? pdfA / (pdfA + pdfB) : 0.0;"),
+        ("18.1 choosing the lobe before drawing the direction (other numbers, same density)", True,
+         "bsdf-sample",
+         "const bool diffuse = sampler.next1D() < diffuseShare_; const Vec2 w = sampler.next2D(); "
+         "out.wi = diffuse ? sampleCosineHemisphere(n_, w.x, w.y) "
+         ": samplePhongLobe(mirrored(wo_, n_), m_.shininess, w.x, w.y); "
+         "out.delta = false; out.pdf = pdf(out.wi); if (!(out.pdf > 0.0)) return false; "
+         "out.weight = f(out.wi) * glm::dot(out.wi, n_) / out.pdf; return true;"),
+        ("18.3 weighing every sample 1 (light reaching a lamp by both techniques counted twice)",
+         False, "power-heuristic", "return 1.0;"),
+        ("18.2 with the lamp's cos theta_l left out of the density per steradian", False,
+         "light-sampling",
+         "const double u = sampler.next1D(); const EmitterSample e = emitters_->sample(u, "
+         "sampler.next2D()); const Vec3 toLight = e.p - v.p; "
+         "const double distance2 = glm::dot(toLight, toLight); if (!(distance2 > 0.0)) return L; "
+         "const Vec3 wi = toLight / std::sqrt(distance2); "
+         "const double pdfLight = e.pdfArea * distance2; const Colour f = v.scatter(wi); "
+         "if (f == Colour(0.0)) return L; const Vec3 target = offsetRayOrigin(e.p, e.n, -wi); "
+         "if (integrator.occluded(Ray{v.shadowOrigin, target - v.shadowOrigin}, 1.0, counters)) "
+         "return L; const double weight = settings_.strategy == PathStrategy::Mis ? "
+         "powerHeuristic(pdfLight, v.pdf(wi)) : 1.0; return L + f * e.Le * (weight / pdfLight);"),
+    ],
 }
 
 
