@@ -207,7 +207,7 @@ SCENARIO("gr.cone('c'), raybook's own first form, does not switch a current scen
 }
 
 SCENARIO("every scene of the project is rendered in the era it was written for",
-         "[ch02][era][needs-ch17]") {
+         "[ch02][era][needs-ch18]") {
     namespace fs = std::filesystem;
     const fs::path scenes = fs::path(rbtest::sourceDir()) / "scenes";
     // The era each scene expects: its "-- rt-era:" line, else current. Seed 001's garage is
@@ -228,7 +228,7 @@ SCENARIO("every scene of the project is rendered in the era it was written for",
             if (text.find("-- rt-module:") != std::string::npos) continue;
             WHEN("rt loads " << entry.path().lexically_relative(scenes).string()) {
                 rb::SceneLoadReport report;
-                rb::loadScene(entry.path().string(), rbtest::chapters(17), rb::SceneLoadOptions{},
+                rb::loadScene(entry.path().string(), rbtest::chapters(18), rb::SceneLoadOptions{},
                               &report);
                 INFO(report.era.line);
                 CHECK(report.era.era == expected(entry.path(), text));

@@ -137,6 +137,12 @@ constexpr LaterCall kLaterCalls[] = {
     {"medium", 17, "media"},
     {"fog", 17, "media"},
     {"set_medium", 17, "media"},
+    {"path_tracing", 18, "path_tracing"},
+    {"integrator", 18, "path_tracing"},
+    {"emission", 18, "path_tracing"},
+    {"integrator_path", 18, "path_tracing"},
+    {"path_depth", 18, "path_tracing"},
+    {"path_roulette", 18, "path_tracing"},
 };
 }  // namespace
 
