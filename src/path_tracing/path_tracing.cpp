@@ -41,6 +41,8 @@ class EmissionTerm final : public ShadingTerm {
 
 // [install-path-tracing]
 void installPathTracing(Pipeline& pipeline, Scene&, const RenderContext& context) {
+    // The options are checked whichever integrator runs: a typo is an error, not a no-op.
+    const PathSettings settings = pathSettings(context);
     if (!pathTracingChosen(context)) {
         // Whitted: emitting surfaces glow, and a scene without them pays nothing.
         for (const Instance& i : context.instances)
@@ -50,7 +52,7 @@ void installPathTracing(Pipeline& pipeline, Scene&, const RenderContext& context
             }
         return;
     }
-    auto tracer = std::make_shared<PathTracer>(pathSettings(context));
+    auto tracer = std::make_shared<PathTracer>(settings);
     pipeline.radiance = tracer;
     // The emitters are gathered once the instances are final, before the first camera ray.
     pipeline.prePasses.push_back(tracer);
