@@ -8,7 +8,7 @@ CHAPTERS   := $(shell echo $(CHAPTERS) | tr ' ' '\n' | sort -n | tr '\n' ' ')
 LAST       := $(lastword $(CHAPTERS))
 CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
 DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3 libnanovdb-dev ccache
-BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox
+BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox blender
 # Open MPI, for rendering on many processes (mpirun -np N ./rt scene.lua): make mpi installs it,
 # and so does make test, so that the MPI tests always run.
 MPI_DEBS   := openmpi-bin libopenmpi-dev

@@ -243,6 +243,9 @@ int run(int argc, char** argv, Cluster& cluster) {
         for (const std::string& warning :
              renderWarnings(world->source.job, scene.instances, camera, features, output))
             std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());
+        if (pipeline.radiance)  // path traced (chapter 18): materials that would make light
+            for (const std::string& warning : energyWarnings(world->source.job, scene.instances))
+                std::fprintf(stderr, "rt: warning: %s\n", warning.c_str());
         if (format && pipeline.postProcess)
             std::fprintf(stderr,
                          "rt: warning: %s: the tone map is not applied to %s, which keeps the "

@@ -1,6 +1,7 @@
 #include "app/render_warnings.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
@@ -154,6 +155,27 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
         warnings.push_back(job.where + ": the output '" + output +
                            "' does not end in .png; rt writes a PNG image under that name, as " +
                            "the course framework does");
+    return warnings;
+}
+
+std::vector<std::string> energyWarnings(const RenderJob& job,
+                                        const std::vector<Instance>& instances) {
+    std::vector<std::string> warnings;
+    std::set<const Material*> seen;
+    for (const Instance& i : instances) {
+        const Material* m = i.material;
+        if (!m || !seen.insert(m).second) continue;
+        // The opaque part's shares, as the path tracer reads them (src/path_tracing/bsdf.cpp).
+        const Colour total = glm::max(m->kd, Colour(0.0)) + glm::max(m->ks, Colour(0.0)) +
+                             Colour(std::max(0.0, m->param("reflect")));
+        const double largest = std::max({total.r, total.g, total.b});
+        if (!(largest > 1.0)) continue;
+        char sum[32];
+        std::snprintf(sum, sizeof sum, "%.3g", largest);
+        warnings.push_back(job.where + ": the material of '" + i.name +
+                           "' reflects more light than it receives (kd + ks + reflect = " + sum +
+                           " in its brightest channel); path tracing scales it down by that much");
+    }
     return warnings;
 }
 

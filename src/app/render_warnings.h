@@ -21,4 +21,10 @@ std::vector<std::string> renderWarnings(const RenderJob& job,
                                         const PinholeCamera& camera, const FeatureSet& features,
                                         const std::string& output);
 
+/// For a path-traced render (chapter 18): one line per material that would reflect more light
+/// than it receives (kd + ks + reflect over 1 in some channel), which the path tracer scales
+/// down, naming the first node that uses it.
+std::vector<std::string> energyWarnings(const RenderJob& job,
+                                        const std::vector<Instance>& instances);
+
 }  // namespace rb

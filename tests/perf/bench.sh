@@ -311,6 +311,15 @@ if [ -x "$build/rt_ch17" ]; then
   MEDIA_RUNS=$runs bash "$root/tests/perf/ch17/media_speed.sh" "$build" | tee "$out/ch17-speed.txt" | tee -a "$report"
 fi
 
+# ---- Path tracing against Blender's Cycles (chapter 18) -------------------------------------
+# The chapter's Cornell box path traced by raybook and by Cycles (headless blender, CPU) at equal
+# error, each against its own converged render; kept in BUILD_DIR/bench/ch18-cycles.txt.
+if [ -x "$build/rt_ch18" ]; then
+  progress "path tracing against Cycles"
+  say ""
+  BENCH_ROUNDS=$runs bash "$root/tests/perf/ch18/cycles_bench.sh" "$build" | tee -a "$report"
+fi
+
 # ---- make grade at class scale (issue 21) ---------------------------------------------------
 # A class of GRADE_STUDENTS (default 100) chapter-13 projects graded from a cold start; kept in
 # BUILD_DIR/bench/grade.txt for the summary.
