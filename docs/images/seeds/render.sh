@@ -22,3 +22,12 @@ for scene in scenes/seeds/[0-9][0-9][0-9]-*.lua; do
         --output "$out" "$scene" 2>&1 | awk '$1 == "time" && $2 == "build" {print $6}')
     echo "$name: $size, $threads threads, render $seconds s -> $out"
 done
+# Seed 002's "global illumination next" (chapter 18): the desk path traced, 256 jittered paths a
+# pixel, into docs/images/seeds/002-desk-path.png (needs rt_ch18 or later).
+if "$rt" --list-features 2>/dev/null | grep -q path_tracing; then
+    out=docs/images/seeds/002-desk-path.png
+    seconds=$("$rt" --quiet --features=all --stats --seed 1 --threads "$threads" --size "$size" \
+        --integrator=path --aa=jittered --spp 256 --output "$out" scenes/seeds/002-desk.lua 2>&1 |
+        awk '$1 == "time" && $2 == "build" {print $6}')
+    echo "002-desk, path traced: $size, $threads threads, render $seconds s -> $out"
+fi

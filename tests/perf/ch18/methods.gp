@@ -1,6 +1,6 @@
 # Chapter 18's chart: RMSE against render time, three methods, two scenes (tests/perf/ch18/charts.sh).
 # usage: gnuplot -e "data='methods.dat'; out='ch18-methods.svg'" methods.gp
-if (out =~ "\\.png$") { set terminal pngcairo size 960,420 font "sans,10" } else { set terminal svg size 960,420 font "sans,11" }
+if (strstrt(out, ".png") > 0) { set terminal pngcairo size 960,420 font "sans,10" } else { set terminal svg size 960,420 font "sans,11" }
 set output out
 set multiplot layout 1,2
 set logscale xy
