@@ -34,6 +34,7 @@
 using Catch::Contains;
 using rb::Colour;
 using rb::Vec3;
+using rbtest::meanAndError;
 using rbtest::sidak;
 
 namespace {
@@ -94,20 +95,6 @@ rb::Medium medium(double sa, double ss, std::shared_ptr<const rb::DensityField> 
 rb::AABB everywhere() {
     const double inf = std::numeric_limits<double>::infinity();
     return rb::AABB{Vec3(-inf), Vec3(inf)};
-}
-
-/// Mean and standard error of the mean of `n` draws of `draw(i)`.
-template <class Draw>
-std::pair<double, double> meanAndError(int n, Draw&& draw) {
-    double sum = 0.0, sum2 = 0.0;
-    for (int i = 0; i < n; ++i) {
-        const double x = draw(i);
-        sum += x;
-        sum2 += x * x;
-    }
-    const double mean = sum / n;
-    const double variance = std::max(0.0, (sum2 - n * mean * mean) / (n - 1));
-    return {mean, std::sqrt(variance / n)};
 }
 
 /// The p-value of Pearson's chi-square test of observed counts against expected ones, with the

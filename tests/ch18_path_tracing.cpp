@@ -30,6 +30,7 @@
 using Catch::Contains;
 using rb::Colour;
 using rb::Vec3;
+using rbtest::meanAndError;
 
 namespace {
 
@@ -38,20 +39,6 @@ constexpr double kPi = 3.14159265358979323846;
 /// The seed of every random stream in this file: 1, or RB_CH18_SEED.
 std::uint64_t seed() {
     return rbtest::seedFromEnv("RB_CH18_SEED");
-}
-
-/// Mean and standard error of the mean of n draws of draw(i).
-template <class Draw>
-std::pair<double, double> meanAndError(int n, Draw&& draw) {
-    double sum = 0.0, sum2 = 0.0;
-    for (int i = 0; i < n; ++i) {
-        const double x = draw(i);
-        sum += x;
-        sum2 += x * x;
-    }
-    const double mean = sum / n;
-    const double variance = std::max(0.0, (sum2 - n * mean * mean) / (n - 1));
-    return {mean, std::sqrt(variance / n)};
 }
 
 /// Run the world's pre-passes (the path tracer gathers its emitters there), as rb::render does.
@@ -69,6 +56,17 @@ double pathSample(const rbtest::TestWorld& world, const rb::Ray& ray, int i) {
     rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 0);
     rb::RayCounters counters;
     return integrator.trace(ray, sampler, counters, 0).g;
+}
+
+/// The mean and standard error of n paths that leave the origin in random directions (path i
+/// on stream (seed, i, 0)): what the closed rooms of this file see from their centres.
+std::pair<double, double> fromCentre(const rbtest::TestWorld& world, int n) {
+    rbtest::Rng rng(seed());
+    std::vector<Vec3> directions;
+    for (int i = 0; i < n; ++i) directions.push_back(rng.unitVector());
+    return meanAndError(n, [&](int i) {
+        return pathSample(world, rb::Ray{Vec3(0.0), directions[i]}, i);
+    });
 }
 
 /// Path-tracing options for TestWorld::build, with `more` added.
@@ -95,13 +93,7 @@ SCENARIO("A white furnace: a closed sphere of albedo ρ that emits Le reads Le /
             world.build(rbtest::chapters(18), -1, pathOptions({{"path-depth", "1000000"}}));
             runPrePasses(world);
             WHEN("paths start from its centre in random directions") {
-                rbtest::Rng rng(seed());
-                const int n = rho > 0.95 ? 4000 : 20000;
-                std::vector<Vec3> directions;
-                for (int i = 0; i < n; ++i) directions.push_back(rng.unitVector());
-                const auto [mean, error] = meanAndError(n, [&](int i) {
-                    return pathSample(world, rb::Ray{Vec3(0.0), directions[i]}, i);
-                });
+                const auto [mean, error] = fromCentre(world, rho > 0.95 ? 4000 : 20000);
                 const double expected = 0.5 / (1.0 - rho);
                 THEN("the mean is Le / (1 − ρ) within the z-bound") {
                     INFO("mean " << mean << " ± " << error << ", expected " << expected);
@@ -134,13 +126,7 @@ SCENARIO("Light bounces inside a diffuse sphere lit from its centre as the close
         world.build(rbtest::chapters(18), -1, pathOptions({{"path-depth", "1000000"}}));
         runPrePasses(world);
         WHEN("paths leave the centre in random directions") {
-            rbtest::Rng rng(seed());
-            const int n = 20000;
-            std::vector<Vec3> directions;
-            for (int i = 0; i < n; ++i) directions.push_back(rng.unitVector());
-            const auto [mean, error] = meanAndError(n, [&](int i) {
-                return pathSample(world, rb::Ray{Vec3(0.0), directions[i]}, i);
-            });
+            const auto [mean, error] = fromCentre(world, 20000);
             THEN("the wall reads 0.25 within the z-bound") {
                 INFO("mean " << mean << " ± " << error);
                 CHECK(std::abs(mean - 0.25) <= rbtest::zCritical(0.01) * error);
@@ -174,13 +160,7 @@ SCENARIO(
         world.build(rbtest::chapters(18), -1, pathOptions({{"path-depth", "1000000"}}));
         runPrePasses(world);
         WHEN("paths start in random directions") {
-            rbtest::Rng rng(seed());
-            const int n = 20000;
-            std::vector<Vec3> directions;
-            for (int i = 0; i < n; ++i) directions.push_back(rng.unitVector());
-            const auto [mean, error] = meanAndError(n, [&](int i) {
-                return pathSample(world, rb::Ray{Vec3(0.0), directions[i]}, i);
-            });
+            const auto [mean, error] = fromCentre(world, 20000);
             THEN("they return the sky's radiance, 1, within the z-bound") {
                 INFO("mean " << mean << " ± " << error);
                 CHECK(std::abs(mean - 1.0) <= rbtest::zCritical(0.01) * error);
@@ -286,16 +266,8 @@ SCENARIO("Russian roulette changes the variance, not the mean", "[ch18]") {
         const auto withRoulette = world("1");
         const auto without = world("1000");
         WHEN("the same directions are traced with roulette from the first bounce, and without") {
-            rbtest::Rng rng(seed());
-            const int n = 20000;
-            std::vector<Vec3> directions;
-            for (int i = 0; i < n; ++i) directions.push_back(rng.unitVector());
-            const auto [m1, e1] = meanAndError(n, [&](int i) {
-                return pathSample(*withRoulette, rb::Ray{Vec3(0.0), directions[i]}, i);
-            });
-            const auto [m2, e2] = meanAndError(n, [&](int i) {
-                return pathSample(*without, rb::Ray{Vec3(0.0), directions[i]}, i);
-            });
+            const auto [m1, e1] = fromCentre(*withRoulette, 20000);
+            const auto [m2, e2] = fromCentre(*without, 20000);
             THEN("the means agree within the z-bound, and roulette's variance is larger") {
                 INFO("with roulette " << m1 << " ± " << e1 << ", without " << m2 << " ± " << e2);
                 CHECK(std::abs(m1 - m2) <= rbtest::zCritical(0.01) * std::hypot(e1, e2));

@@ -435,6 +435,21 @@ inline std::uint64_t ulpDistance(double a, double b) {
     return ia > ib ? static_cast<std::uint64_t>(ia - ib) : static_cast<std::uint64_t>(ib - ia);
 }
 
+/// The mean of n draws draw(0), ..., draw(n − 1), and the standard error of that mean (the
+/// sample standard deviation over √n): what the z-tests of a Monte Carlo estimator compare.
+template <class Draw>
+std::pair<double, double> meanAndError(int n, Draw&& draw) {
+    double sum = 0.0, sum2 = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double x = draw(i);
+        sum += x;
+        sum2 += x * x;
+    }
+    const double mean = sum / n;
+    const double variance = std::max(0.0, (sum2 - n * mean * mean) / (n - 1));
+    return {mean, std::sqrt(variance / n)};
+}
+
 /// The z with P(|Z| > z) = alpha for a standard normal Z: erfc(z/√2) = alpha, by bisection.
 inline double zCritical(double alpha) {
     double lo = 0, hi = 40;

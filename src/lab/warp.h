@@ -5,6 +5,7 @@
 /// Feature hands them to the lab, so a chapter binary offers the samplers of its chapters only.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -58,20 +59,36 @@ struct Warp {
     std::function<WarpSetup(const std::map<std::string, double>& values)> setup;
 };
 
-/// The lab's coordinates of unit direction w about unit `axis`: (φ in [0, 2π), cos θ). The
-/// frame is the lab's own (Duff et al.'s basis), independent of any sampler's. A direction
-/// that is not of unit length (a sampler's bug) gets NaN: it counts as outside the domain.
+/// The lab's frame (s, t) about unit `axis`: its own (Duff et al.'s basis), independent of any
+/// sampler's.
 /// Source: T. Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017.
-inline Vec2 directionCoordinates(const Vec3& w, const Vec3& axis) {
-    if (!(std::abs(glm::dot(w, w) - 1.0) < 1e-9)) return Vec2(std::nan(""));
+inline void labFrame(const Vec3& axis, Vec3& s, Vec3& t) {
     const double sign = std::copysign(1.0, axis.z);
     const double a = -1.0 / (sign + axis.z);
     const double b = axis.x * axis.y * a;
-    const Vec3 s(1.0 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
-    const Vec3 t(b, sign + axis.y * axis.y * a, -axis.y);
+    s = Vec3(1.0 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
+    t = Vec3(b, sign + axis.y * axis.y * a, -axis.y);
+}
+
+/// The lab's coordinates of unit direction w about unit `axis`: (φ in [0, 2π), cos θ) in the
+/// lab's frame. A direction that is not of unit length (a sampler's bug) gets NaN: it counts
+/// as outside the domain.
+inline Vec2 directionCoordinates(const Vec3& w, const Vec3& axis) {
+    if (!(std::abs(glm::dot(w, w) - 1.0) < 1e-9)) return Vec2(std::nan(""));
+    Vec3 s, t;
+    labFrame(axis, s, t);
     double phi = std::atan2(glm::dot(w, t), glm::dot(w, s));
     if (phi < 0.0) phi += 2.0 * M_PI;
     return {phi, glm::dot(w, axis)};
+}
+
+/// The unit direction whose lab coordinates about `axis` are q = (φ, cos θ): the inverse of
+/// directionCoordinates, for a pdf stated per direction.
+inline Vec3 directionFromCoordinates(const Vec2& q, const Vec3& axis) {
+    Vec3 s, t;
+    labFrame(axis, s, t);
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - q.y * q.y));
+    return sinTheta * std::cos(q.x) * s + sinTheta * std::sin(q.x) * t + q.y * axis;
 }
 
 /// Append `count` points, point i being `point(sampler)` with a sampler of its own, stream

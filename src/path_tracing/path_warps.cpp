@@ -51,15 +51,7 @@ Warp bsdfWarp() {
                 return directionCoordinates(out.wi, axis);
             });
         };
-        s.pdf = [=](const Vec2& q) {
-            const double sinTheta = std::sqrt(std::max(0.0, 1.0 - q.y * q.y));
-            const Vec3 wi(sinTheta * std::cos(q.x), sinTheta * std::sin(q.x), q.y);
-            // The lab's frame about z: (φ, cos θ) back to a direction.
-            const double sign = 1.0, a = -1.0 / (sign + axis.z), b = axis.x * axis.y * a;
-            const Vec3 t1(1.0 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
-            const Vec3 t2(b, sign + axis.y * axis.y * a, -axis.y);
-            return bsdf->pdf(wi.x * t1 + wi.y * t2 + wi.z * axis);
-        };
+        s.pdf = [=](const Vec2& q) { return bsdf->pdf(directionFromCoordinates(q, axis)); };
         return s;
     };
     return w;
@@ -111,13 +103,7 @@ Warp lightWarp() {
         };
         s.pdf = [=](const Vec2& q) {
             // The direction back from the lab's coordinates, then the panel's face it meets.
-            const double sign = std::copysign(1.0, axis.z);
-            const double a = -1.0 / (sign + axis.z), b = axis.x * axis.y * a;
-            const Vec3 t1(1.0 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
-            const Vec3 t2(b, sign + axis.y * axis.y * a, -axis.y);
-            const double sinTheta = std::sqrt(std::max(0.0, 1.0 - q.y * q.y));
-            const Vec3 wi =
-                sinTheta * std::cos(q.x) * t1 + sinTheta * std::sin(q.x) * t2 + q.y * axis;
+            const Vec3 wi = directionFromCoordinates(q, axis);
             ObjectHit oh;
             const Instance& p = (*instances)[0];
             if (!p.intersect(Ray{Vec3(0.0), wi}, std::numeric_limits<double>::infinity(), oh))

@@ -8,8 +8,8 @@ import subprocess
 import sys
 
 rt, root, out, rounds = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
-sys.path.insert(0, os.path.join(root, "tests"))
-from png_read import read_png  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from images import pixels, rmse  # noqa: E402
 
 scene = os.path.join(root, "scenes", "chapter18-path-tracing.lua")
 script = os.path.join(root, "tests", "perf", "ch18", "cornell_cycles.py")
@@ -33,15 +33,6 @@ def cycles(png, spp, seed):
         sys.exit(p.stdout[-2000:] + p.stderr[-2000:])
     return float(m.group(1))
 
-
-def pixels(path):
-    _, _, _, rows = read_png(path)
-    return [v / 255.0 for row in rows for v in row]
-
-
-def rmse(a, b):
-    pa, pb = pixels(a), pixels(b)
-    return math.sqrt(sum((x - y) ** 2 for x, y in zip(pa, pb)) / len(pa))
 
 
 def time_at(curve, error):

@@ -1,15 +1,14 @@
 #!/usr/bin/env python3
 """Chapter 18's chart data: RMSE against render time of three methods on two scenes (see
 charts.sh). usage: methods_chart.py RT ROOT DATA_DIR CHARTS_DIR ROUNDS"""
-import math
 import os
 import re
 import subprocess
 import sys
 
 rt, root, data, charts, rounds = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], int(sys.argv[5])
-sys.path.insert(0, os.path.join(root, "tests"))
-from png_read import read_png  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from images import rmse  # noqa: E402
 
 SIZE = "96x96"
 source = open(os.path.join(root, "scenes", "chapter16-photon-mapping.lua")).read()
@@ -35,15 +34,6 @@ def render(scene, out, args):
     m = re.search(r"render ([0-9.]+) s", p.stderr)
     return float(m.group(1))
 
-
-def pixels(path):
-    w, h, c, rows = read_png(path)
-    return [v / 255.0 for row in rows for v in row]
-
-
-def rmse(a, b):
-    pa, pb = pixels(a), pixels(b)
-    return math.sqrt(sum((x - y) ** 2 for x, y in zip(pa, pb)) / len(pa))
 
 
 # The references.
