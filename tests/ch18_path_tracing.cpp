@@ -77,8 +77,27 @@ std::map<std::string, std::string> pathOptions(std::map<std::string, std::string
 
 }  // namespace
 
+SCENARIO(
+    "The power heuristic trusts each technique where its density is the higher, and the "
+    "two weights add to 1",
+    "[ch18][ex18.1]") {
+    // Source: w_a = p_a² / (p_a² + p_b²) (Veach 1997, §9.2.4): w(1, 1) = 1/2, w(2, 1) = 4/5,
+    // w(1, 3) = 1/10; a technique the other cannot reproduce (p_b = 0) gets all of the weight.
+    GIVEN("pairs of densities") {
+        THEN("the weights are the closed form's, and each pair's two weights add to 1") {
+            CHECK(rb::powerHeuristic(1.0, 1.0) == Approx(0.5));
+            CHECK(rb::powerHeuristic(2.0, 1.0) == Approx(0.8));
+            CHECK(rb::powerHeuristic(1.0, 3.0) == Approx(0.1));
+            CHECK(rb::powerHeuristic(5.0, 0.0) == Approx(1.0));
+            for (const double a : {0.01, 0.3, 2.0, 70.0})
+                for (const double b : {0.02, 1.0, 9.0})
+                    CHECK(rb::powerHeuristic(a, b) + rb::powerHeuristic(b, a) == Approx(1.0));
+        }
+    }
+}
+
 SCENARIO("A white furnace: a closed sphere of albedo ρ that emits Le reads Le / (1 − ρ)",
-         "[ch18][ex18.1][ex18.2]") {
+         "[ch18][ex18.1][ex18.3][ex18.4]") {
     // Source: inside a closed sphere every point sees only the wall, so the radiance L is the
     // same everywhere and in every direction: L = Le + ρ L, hence L = Le / (1 − ρ) (the
     // furnace test of pbrt-v4's integrator tests, there at ±2.5%; here a z-test).
@@ -108,7 +127,7 @@ SCENARIO("A white furnace: a closed sphere of albedo ρ that emits Le reads Le /
 }
 
 SCENARIO("Light bounces inside a diffuse sphere lit from its centre as the closed form says",
-         "[ch18][ex18.1]") {
+         "[ch18][ex18.3]") {
     // Source: a point light I with falloff {0, 0, 1} (I / r²) at the centre of a sphere of
     // radius R gives every wall point the direct radiance ρ I / R² in A4's units (cos θ = 1
     // everywhere); the wall then sees only
@@ -198,7 +217,7 @@ void veachScene(rbtest::TestWorld& world, double n, const std::string& strategy)
 SCENARIO(
     "MIS gives the same mean as light sampling and BSDF sampling, with no more variance "
     "than the better of the two",
-    "[ch18][ex18.2][ex18.3]") {
+    "[ch18][ex18.1][ex18.2][ex18.3][ex18.4]") {
     // Source: each of the three estimators is unbiased for the same direct light (Veach 1997,
     // §9.2), so their means agree; the power heuristic's variance is close to the better
     // technique's wherever one technique is good (Veach's Theorem 9.2 bounds the balance
@@ -247,7 +266,7 @@ SCENARIO(
     }
 }
 
-SCENARIO("Russian roulette changes the variance, not the mean", "[ch18]") {
+SCENARIO("Russian roulette changes the variance, not the mean", "[ch18][ex18.1][ex18.3][ex18.4]") {
     // Source: a path that goes on with probability q and then carries 1/q more has the same
     // expected value (pbrt-v4 §14.5.2); with the same depth limit, roulette and no roulette
     // estimate exactly the same quantity.
@@ -278,7 +297,7 @@ SCENARIO("Russian roulette changes the variance, not the mean", "[ch18]") {
 }
 
 SCENARIO("Where a scene has no indirect light, path tracing equals Whitted's direct light",
-         "[ch18]") {
+         "[ch18][ex18.3]") {
     // Source: a lone diffuse ball under a point light, on black, with no ambient term: the
     // only light is the direct light, kd I cos θ / r² in A4's units (chapter 2), which the
     // path tracer's next-event estimate computes with the physical kd/π times the π of A4's
@@ -312,7 +331,7 @@ gr.render(root, 'x.png', 24, 24, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 40, {0, 0, 0}
 SCENARIO(
     "The normalized Phong lobe reflects all of the light at normal incidence and never "
     "more than arrives",
-    "[ch18][ex18.4]") {
+    "[ch18][ex18.2]") {
     // Source: with wo along n, the lobe's axis is n, and ∫ (s+2)/(2π) cos^s α cos θ dω =
     // (s+2)/(2π) · 2π/(s+2) = 1 (Lafortune and Willems 1994); at oblique incidence part of the
     // lobe falls below the horizon, so the albedo is less. Integrated numerically about the
@@ -363,7 +382,7 @@ SCENARIO("A material that would reflect more than it receives is scaled down", "
 }
 
 SCENARIO("The path tracer's samplers draw the densities MIS weighs them by",
-         "[ch18][ex18.1][ex18.2]") {
+         "[ch18][ex18.2][ex18.3]") {
     // Source: Pearson's chi-square test at α = 0.01 over the sampling lab's bins (bins
     // expecting fewer than 5 pooled), Šidák-corrected for the runs below.
     const std::vector<rb::Warp> warps = rb::builtWarps(rbtest::chapters(18).built());
@@ -415,7 +434,8 @@ gr.render(root, 'x.png', 16, 16, {0, 0, 3.5}, {0, 0, -1}, {0, 1, 0}, 40, {0, 0, 
 
 }  // namespace
 
-SCENARIO("Path-traced renders are the same bits on one thread and two", "[ch18]") {
+SCENARIO("Path-traced renders are the same bits on one thread and two",
+         "[ch18][ex18.1][ex18.3][ex18.4]") {
     GIVEN("a small box lit by its ceiling") {
         const auto world = rbtest::worldFromLua(smallBox(), rbtest::chapters(18));
         auto render = [&](int threads) {

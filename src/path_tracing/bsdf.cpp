@@ -30,7 +30,7 @@ Vec3 mirrored(const Vec3& wo, const Vec3& n) {
 // [normalized-phong]
 double normalizedPhong(double shininess, const Vec3& n, const Vec3& wo, const Vec3& wi) {
     // [exercise-normalized-phong]
-    // Exercise 18.4, the normalized Phong lobe: read ch18-phong.
+    // Exercise 18.2, the normalized Phong lobe: read ch18-phong.
     // Blank: return 0.0;
     const double cosAlpha = glm::dot(mirrored(wo, n), wi);
     if (cosAlpha <= 0.0) return 0.0;
@@ -127,7 +127,7 @@ bool Bsdf::sample(Sampler& sampler, const MediumStack& media, BsdfSample& out) c
     }
     if (smoothProbability_ <= 0.0) return false;  // a black material absorbs
     // [exercise-bsdf-sample]
-    // Exercise 18.1, the BSDF sampler and its pdf: read ch18-bsdf.
+    // Exercise 18.3, the BSDF sampler and its pdf: read ch18-bsdf.
     // Blank: return false;
     const Vec2 w = sampler.next2D();
     out.wi = sampler.next1D() < diffuseShare_

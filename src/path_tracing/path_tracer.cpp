@@ -27,7 +27,7 @@ double maxChannel(const Colour& c) {
 // [power-heuristic]
 double powerHeuristic(double pdfA, double pdfB) {
     // [exercise-power-heuristic]
-    // Exercise 18.3, the MIS weight: read ch18-mis.
+    // Exercise 18.1, the MIS weight: read ch18-mis.
     // Blank: return 0.5;
     if (std::isinf(pdfA)) return 1.0;
     const double a = pdfA * pdfA, b = pdfB * pdfB;
@@ -105,7 +105,7 @@ Colour PathTracer::directLight(const Integrator& integrator, const Vertex& v, Sa
     if (settings_.strategy == PathStrategy::Bsdf || !emitters_ || !emitters_->sampleable())
         return L;
     // [exercise-light-sampling]
-    // Exercise 18.2, light sampling in solid angle: read ch18-nee.
+    // Exercise 18.4, light sampling in solid angle: read ch18-nee.
     // Blank: return L;
     const double u = sampler.next1D();
     const EmitterSample e = emitters_->sample(u, sampler.next2D());

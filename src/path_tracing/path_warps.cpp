@@ -22,7 +22,7 @@ Warp bsdfWarp() {
     w.title =
         "the path tracer's BSDF sampling: Lambert and the normalized Phong lobe, pdf "
         "(kd cos θ/π + ks (n+1)/(2π) cos^n α)/(kd + ks)";
-    w.exercise = "18.1";
+    w.exercise = "18.3";
     w.parameters = {{"kd", 0.5, 0.0, 1.0, "the Lambertian share"},
                     {"ks", 0.4, 0.0, 1.0, "the Phong share"},
                     {"exponent", 20.0, 0.0, 10000.0, "the Phong exponent n"},
@@ -64,7 +64,7 @@ Warp lightWarp() {
     w.title =
         "light sampling in solid angle: a uniform point on an emitting panel, pdf "
         "d²/(A cos θ_light)";
-    w.exercise = "18.2";
+    w.exercise = "18.4";
     w.parameters = {{"height", 1.0, 0.05, 100.0, "the panel's height above the shading point"},
                     {"offset", 0.5, 0.0, 10.0, "the panel's sideways offset"}};
     w.setup = [](const std::map<std::string, double>& v) {

@@ -118,20 +118,20 @@ PLANTED = {
          "const Vec2 xi = sampler.next2D(); return {xi.x / cols, xi.y / rows};"),
     ],
     18: [
-        ("18.3 as the balance heuristic (unbiased, a little more noise)", True,
+        ("18.1 as the balance heuristic (unbiased, a little more noise)", True,
          "power-heuristic",
          "if (std::isinf(pdfA)) return 1.0; "
          "return pdfA + pdfB > 0.0 ? pdfA / (pdfA + pdfB) : 0.0;"),
-        ("18.1 choosing the lobe before drawing the direction (other numbers, same density)", True,
+        ("18.3 choosing the lobe before drawing the direction (other numbers, same density)", True,
          "bsdf-sample",
          "const bool diffuse = sampler.next1D() < diffuseShare_; const Vec2 w = sampler.next2D(); "
          "out.wi = diffuse ? sampleCosineHemisphere(n_, w.x, w.y) "
          ": samplePhongLobe(mirrored(wo_, n_), m_.shininess, w.x, w.y); "
          "out.delta = false; out.pdf = pdf(out.wi); if (!(out.pdf > 0.0)) return false; "
          "out.weight = f(out.wi) * glm::dot(out.wi, n_) / out.pdf; return true;"),
-        ("18.3 weighing every sample 1 (light reaching a lamp by both techniques counted twice)",
+        ("18.1 weighing every sample 1 (light reaching a lamp by both techniques counted twice)",
          False, "power-heuristic", "return 1.0;"),
-        ("18.2 with the lamp's cos theta_l left out of the density per steradian", False,
+        ("18.4 with the lamp's cos theta_l left out of the density per steradian", False,
          "light-sampling",
          "const double u = sampler.next1D(); const EmitterSample e = emitters_->sample(u, "
          "sampler.next2D()); const Vec3 toLight = e.p - v.p; "
