@@ -43,7 +43,9 @@ Warp bsdfWarp() {
                     ", n = " + warpNumber(v.at("exponent")) + ", incidence " +
                     warpNumber(v.at("angle")) + "°";
         const Vec3 axis(0.0, 0.0, 1.0);
-        s.draw = [=](std::uint64_t count, std::uint64_t seed, std::vector<Vec2>& points) {
+        // The lambdas keep the material and the hit alive: the BSDF holds references to them.
+        s.draw = [bsdf, m, hit, axis](std::uint64_t count, std::uint64_t seed,
+                                      std::vector<Vec2>& points) {
             drawEach(count, seed, 180, points, [&](Sampler& sampler) {
                 BsdfSample out;
                 // A direction below the surface carries no light: it lands outside the domain.
@@ -51,7 +53,9 @@ Warp bsdfWarp() {
                 return directionCoordinates(out.wi, axis);
             });
         };
-        s.pdf = [=](const Vec2& q) { return bsdf->pdf(directionFromCoordinates(q, axis)); };
+        s.pdf = [bsdf, m, hit, axis](const Vec2& q) {
+            return bsdf->pdf(directionFromCoordinates(q, axis));
+        };
         return s;
     };
     return w;
@@ -91,7 +95,9 @@ Warp lightWarp() {
         s.domain = directionDomain(std::max(-1.0, cosMax - 1e-3));
         s.caption = "a 1.3 × 1.05 panel at height " + warpNumber(v.at("height")) + ", offset " +
                     warpNumber(v.at("offset"));
-        s.draw = [=](std::uint64_t count, std::uint64_t seed, std::vector<Vec2>& points) {
+        // The lambdas keep the box and the lamp's material alive: the instance points at them.
+        s.draw = [emitters, instances, box, lamp, axis](std::uint64_t count, std::uint64_t seed,
+                                                        std::vector<Vec2>& points) {
             drawEach(count, seed, 181, points, [&](Sampler& sampler) {
                 const double u = sampler.next1D();
                 const EmitterSample e = emitters->sample(u, sampler.next2D());
@@ -101,7 +107,7 @@ Warp lightWarp() {
                 return directionCoordinates(wi, axis);
             });
         };
-        s.pdf = [=](const Vec2& q) {
+        s.pdf = [emitters, instances, box, lamp, axis](const Vec2& q) {
             // The direction back from the lab's coordinates, then the panel's face it meets.
             const Vec3 wi = directionFromCoordinates(q, axis);
             ObjectHit oh;
@@ -112,8 +118,6 @@ Warp lightWarp() {
             const double cosLight = -glm::dot(n, wi);
             return cosLight > 0.0 ? emitters->pdfArea(&p) * oh.t * oh.t / cosLight : 0.0;
         };
-        (void)box;
-        (void)lamp;
         return s;
     };
     return w;
