@@ -24,6 +24,7 @@
 
 #include "core/error.h"
 #include "lab/chi_square.h"
+#include "media/equiangular.h"
 #include "media/henyey_greenstein.h"
 #include "media/media.h"
 #include "media/medium.h"
@@ -278,9 +279,11 @@ SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws
 namespace {
 
 /// A slab of medium m filling x in [0, ℓ] (a box node that only bounds it), lit by a light of
-/// intensity 1 without falloff at x = 10, on the axis the camera ray looks along.
+/// intensity 1 without falloff at `lamp` (x = 10 on the axis the camera ray looks along, unless
+/// told otherwise).
 struct Slab {
-    Slab(const rb::Medium& m, double length, const std::map<std::string, std::string>& options) {
+    Slab(const rb::Medium& m, double length, const std::map<std::string, std::string>& options,
+         const Vec3& lamp = Vec3(10.0, 0.0, 0.0), const Vec3& falloff = Vec3(1.0, 0.0, 0.0)) {
         world.add(box, rbtest::boxFromTo(Vec3(0.0, -5.0, -5.0), Vec3(length, 5.0, 5.0)), nullptr,
                   "slab");
         rb::Instance& slab = world.scene.instances.back();
@@ -288,7 +291,8 @@ struct Slab {
         slab.mediumBoundaryOnly = true;
         slab.mediumIndex = 0;
         rb::PointLight light;
-        light.position = Vec3(10.0, 0.0, 0.0);
+        light.position = lamp;
+        light.falloff = falloff;
         world.scene.lights.push_back(light);
         world.build(rbtest::chapters(17), -1, options);
     }
@@ -299,7 +303,7 @@ struct Slab {
 }  // namespace
 
 SCENARIO("A slab lit from behind shows single scattering's closed form",
-         "[ch17][ex17.1][ex17.2][ex17.3]") {
+         "[ch17][ex17.1][ex17.2][ex17.3][ex17.4]") {
     // Source: every point of the slab sees the light through e^(−σt (ℓ − s)) and the eye through
     // e^(−σt s), so L = ∫ σs p(cos 0) I e^(−σt ℓ) ds = σs p(1) ℓ e^(−σt ℓ) I, times π for A4's
     // lights (a white diffuse surface returns I cos θ / r², π times a physical light's).
@@ -371,6 +375,145 @@ SCENARIO("A slab lit from behind shows single scattering's closed form",
                                     << want);
                     CHECK(std::abs(mean - want) < zc * error);
                 }
+            }
+        }
+    }
+}
+
+SCENARIO("Equiangular points are spread as the angle under which the light sees them",
+         "[ch17][ex17.4]") {
+    // Source: Kulla and Fajardo 2012, eq. 6: θ(s) = atan((s − Δ) / h) is uniform between θ(a)
+    // and θ(b), so P(s' < s) = (θ(s) − θ(a)) / (θ(b) − θ(a)).
+    struct Case {
+        const char* what;
+        rb::EquiangularSegment seg;
+    };
+    for (const Case& c :
+         {Case{"a light 0.25 off the middle of [0, 4]", {0.0, 4.0, 2.0, 0.25}},
+          Case{"a light beyond the stretch's end", {0.0, 1.0, 3.0, 0.5}},
+          Case{"a light almost on the ray's line, behind its start", {1.0, 2.0, -0.5, 1e-6}}})
+        GIVEN(c.what) {
+            const rb::EquiangularSegment seg = c.seg;
+            const auto cdf = [&](double s) {
+                const double at = std::atan((seg.a - seg.delta) / seg.h);
+                return (std::atan((s - seg.delta) / seg.h) - at) /
+                       (std::atan((seg.b - seg.delta) / seg.h) - at);
+            };
+            WHEN("100000 points are drawn") {
+                const int n = 100000, bins = 40;
+                std::vector<double> observed(bins, 0.0), expected(bins, 0.0);
+                bool pdfAgrees = true;
+                for (int i = 0; i < n; ++i) {
+                    rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 8);
+                    const rb::EquiangularSample e = rb::sampleEquiangular(seg, sampler.next1D());
+                    const double x = (e.s - seg.a) / (seg.b - seg.a);
+                    observed[std::clamp(static_cast<int>(x * bins), 0, bins - 1)] += 1;
+                    pdfAgrees =
+                        pdfAgrees && std::abs(e.pdf - rb::equiangularPdf(seg, e.s)) <= 1e-9 * e.pdf;
+                }
+                for (int k = 0; k < bins; ++k)
+                    expected[k] = n * (cdf(seg.a + (k + 1.0) / bins * (seg.b - seg.a)) -
+                                       cdf(seg.a + double(k) / bins * (seg.b - seg.a)));
+                THEN("a chi-square test of 40 distance bins passes at 0.001") {
+                    const double p = chiSquarePValue(observed, expected);
+                    INFO("p = " << p << " (./rt --warptest equiangular draws it)");
+                    CHECK(p > sidak(0.001, 3));
+                }
+                THEN("each point's stated density is the pdf's") {
+                    CHECK(pdfAgrees);
+                }
+            }
+        }
+}
+
+SCENARIO("A lamp inside fog: free flights, light points and both under MIS agree",
+         "[ch17][ex17.1][ex17.2][ex17.4]") {
+    // Source: single scattering along the ray p(x) = (x, 0, 0) through a slab x in [0, ℓ] with
+    // a lamp of intensity 1 and falloff (c0, 0, c2) at q inside it is
+    // L = ∫ σs π p(cos θ) e^(−σt r) / (c0 + c2 r²) e^(−σt x) dx, r = |q − p(x)| (A4's units,
+    // hence π), integrated here by Simpson's rule: it has no simpler form.
+    const double sa = 0.1, ss = 0.4, g = 0.5, length = 4.0;
+    const Vec3 lamp(2.0, 0.5, 0.0);
+    const rb::Medium m = medium(sa, ss, std::make_shared<rb::ConstantDensity>(), g);
+    const rb::Ray ray{Vec3(-1.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)};
+    const double z = rbtest::zCritical(sidak(0.001, 6));
+    struct Lamp {
+        const char* what;
+        Vec3 falloff;
+    };
+    for (const Lamp& l :
+         {Lamp{"A4's lamp without falloff (1, 0, 0): transmittance points", Vec3(1.0, 0.0, 0.0)},
+          Lamp{"a physical lamp, falloff (0, 0, 1): equiangular points", Vec3(0.0, 0.0, 1.0)}})
+        GIVEN(std::string(l.what) +
+              ", 0.5 off the ray through a slab σa = 0.1, σs = 0.4, g = "
+              "0.5, ℓ = 4") {
+            const auto integrand = [&](double x) {
+                const Vec3 toLamp = lamp - Vec3(x, 0.0, 0.0);
+                const double r = glm::length(toLamp);
+                return ss * kPi * rb::henyeyGreenstein(toLamp.x / r, g) * std::exp(-(sa + ss) * r) /
+                       (l.falloff.x + l.falloff.z * r * r) * std::exp(-(sa + ss) * x);
+            };
+            const int intervals = 200000;
+            double expected = integrand(0.0) + integrand(length);
+            for (int k = 1; k < intervals; ++k)
+                expected += (k % 2 ? 4.0 : 2.0) * integrand(k * length / intervals);
+            expected *= length / intervals / 3.0;
+            WHEN("the ray along the axis is traced 100000 times with each --media-direct") {
+                std::map<std::string, std::pair<double, double>> estimates;
+                for (const std::string direct : {"flight", "light", "mis"}) {
+                    const Slab slab(m, length, {{"media-bounces", "0"}, {"media-direct", direct}},
+                                    lamp, l.falloff);
+                    estimates[direct] = meanAndError(100000, [&](int i) {
+                        rb::RayCounters counters;
+                        const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+                        rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 9);
+                        return integrator.trace(ray, sampler, counters, 0).r;
+                    });
+                }
+                THEN("each passes a z-test against the integral") {
+                    for (const auto& [direct, estimate] : estimates) {
+                        INFO(direct << ": mean " << estimate.first << " ± " << estimate.second
+                                    << " against " << expected);
+                        CHECK(std::abs(estimate.first - expected) < z * estimate.second);
+                    }
+                }
+                THEN("MIS has a smaller standard error than free flights alone") {
+                    INFO("MIS ± " << estimates["mis"].second << ", free flights ± "
+                                  << estimates["flight"].second);
+                    CHECK(estimates["mis"].second < estimates["flight"].second);
+                }
+            }
+        }
+}
+
+SCENARIO(
+    "A surface behind homogeneous fog is seen through Beer–Lambert's transmittance, with no "
+    "noise",
+    "[ch17]") {
+    // Source: the first ray's surface is weighted by the closed form e^(−σt ℓ), apart from the
+    // light the fog scatters (none here: no lights, no ambient light).
+    GIVEN("a slab σa = 0.25, σs = 0.5, ℓ = 1 before a sky of radiance 1, with no lights") {
+        const rb::Medium m = medium(0.25, 0.5, std::make_shared<rb::ConstantDensity>(), 0.0);
+        Slab slab(m, 1.0, {{"media-bounces", "0"}});
+        slab.world.scene.lights.clear();
+        slab.world.scene.background = Colour(1.0);
+        slab.world.scene.ambient = Colour(0.0);
+        WHEN("the ray along the axis is traced 1000 times") {
+            double lowest = 2.0, highest = -1.0;
+            for (int i = 0; i < 1000; ++i) {
+                rb::RayCounters counters;
+                const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+                rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 10);
+                const double l = integrator
+                                     .trace(rb::Ray{Vec3(-1.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)},
+                                            sampler, counters, 0)
+                                     .g;
+                lowest = std::min(lowest, l);
+                highest = std::max(highest, l);
+            }
+            THEN("every trace returns e^(−0.75), not 0 or 1") {
+                CHECK(lowest == Approx(std::exp(-0.75)).epsilon(1e-12));
+                CHECK(highest == Approx(std::exp(-0.75)).epsilon(1e-12));
             }
         }
     }
@@ -640,9 +783,10 @@ SCENARIO("A dense medium renders without black or NaN pixels", "[ch17]") {
     }
 }
 
-SCENARIO("An ambient furnace: a dense white medium lit by ambient light alone returns no more "
-         "than the ambient term",
-         "[ch17]") {
+SCENARIO(
+    "An ambient furnace: a dense white medium lit by ambient light alone returns no more "
+    "than the ambient term",
+    "[ch17]") {
     // Source: A4's ambient term stands for all the indirect light, so a path counts it once, at
     // its first scattering, as a diffuse surface does (DESIGN §6: the ambient term is counted once
     // per camera path). With no lights and a black sky, every path that scatters returns exactly

@@ -23,6 +23,24 @@ MediaSettings mediaSettings(const RenderContext& context) {
         s.shadows = TransmittanceMethod::Delta;
     else
         throw InputError("--media-shadows: expected 'ratio' or 'delta', got '" + shadows + "'");
+    const std::string direct = context.cliOption("media-direct", "mis");
+    if (direct == "mis")
+        s.direct = MediaDirect::Mis;
+    else if (direct == "flight")
+        s.direct = MediaDirect::FreeFlight;
+    else if (direct == "light")
+        s.direct = MediaDirect::LightPoints;
+    else
+        throw InputError("--media-direct: expected 'mis', 'flight' or 'light', got '" + direct +
+                         "'");
+    const std::string points = context.cliOption("media-points");
+    if (!points.empty()) {
+        const double n = parseNumberOption("--media-points", points);
+        if (!(n >= 1.0 && n <= 1024.0 && n == std::floor(n)))
+            throw InputError("--media-points: expected a whole number from 1 to 1024, got " +
+                             points);
+        s.points = static_cast<int>(n);
+    }
     const std::string step = context.cliOption("media-step");
     if (!step.empty()) {
         s.step = parseNumberOption("--media-step", step);
@@ -102,6 +120,12 @@ Feature mediaFeature() {
             {{"media", "track|march",
               "free flights by delta tracking, or ray marching (single scattering only)", "track"},
              {"media-shadows", "ratio|delta", "shadow-ray transmittance estimator", "ratio"},
+             {"media-direct", "mis|flight|light",
+              "where single scattering towards the lights is sampled in homogeneous media: where "
+              "free flights scatter, at points placed for each light (equiangular for a light "
+              "that falls off as 1/r^2), or both weighted by MIS",
+              "mis"},
+             {"media-points", "N", "light points per light along a path's first ray", "4"},
              {"media-step", "S", "ray-marching step, in scene units",
               "1/400 of the scene's size (fog box diagonal)"},
              {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "media/equiangular.h"
 #include "media/henyey_greenstein.h"
 
 namespace rb {
@@ -13,6 +14,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// The optical depth (mean free paths along the ray) beyond which a piece's single scattering
+/// is left to free flights under --media-direct=mis.
+constexpr double kPointsDepth = 8.0;
 /// The most times one ray is followed through one boundary; a closed shape a ray crosses
 /// more often than this (a very wrinkled mesh) is taken as left after the last.
 constexpr int kMaxCrossings = 64;
@@ -39,6 +43,54 @@ int crossings(const Instance& boundary, const Ray& ray, double* ts) {
         r.o = offsetRayOrigin(p, n, r.d);
     }
     return count;
+}
+
+/// Where single-scattering points go on one homogeneous piece of a ray, for one light. A light
+/// that falls off as 1/r² near the ray gets equiangular points, which cancel the falloff; one
+/// without falloff (A4's default, (1, 0, 0)) gets points spread as the piece's transmittance
+/// from its start, a truncated exponential, which is all that varies along the ray then.
+struct PiecePoints {
+    EquiangularSegment seg;  ///< The piece in world distances along the ray, and the light.
+    double sigma;            ///< The piece's extinction majorant, per unit length.
+    bool equiangular;
+
+    EquiangularSample sample(double u) const {
+        if (equiangular) return sampleEquiangular(seg, u);
+        const double s = seg.a - std::log1p(-u * reach()) / sigma;
+        return {std::min(s, seg.b), pdf(s)};
+    }
+    double pdf(double s) const {
+        return equiangular ? equiangularPdf(seg, s)
+                           : sigma * std::exp(-sigma * (s - seg.a)) / reach();
+    }
+    /// The chance that a flight from the piece's start meets a particle in it.
+    double reach() const { return -std::expm1(-sigma * (seg.b - seg.a)); }
+};
+
+/// How the points of `light` are placed on `piece` of `ray`.
+PiecePoints piecePoints(const Ray& ray, const ParticipatingMedia::Piece& piece,
+                        const PointLight& light) {
+    const double length = glm::length(ray.d);
+    const Vec3 u = ray.d / length;
+    const Vec3 toLight = light.position - ray.o;
+    const double delta = glm::dot(toLight, u);
+    const double a = piece.t0 * length, b = piece.t1 * length;
+    // A light on the ray's own line has h = 0, where the density has a pole: keep it a hair off
+    // the line, which changes only how the points are spread, not what they estimate.
+    const double h = std::max(glm::length(toLight - delta * u), 1e-9 * (b - a + std::abs(delta)));
+    // Equiangular where the falloff c0 + c1 r + c2 r² is mostly its r² term at the ray's
+    // nearest point; a medium thin enough to need no exponential gets uniform points that way.
+    const Vec3 c = light.falloff;
+    const double sigma = piece.medium->medium.sigmaTMax();
+    const bool equiangular = c.z * h * h >= c.x + c.y * h || !(sigma * (b - a) > 1e-9);
+    return {{a, b, delta, h}, sigma, equiangular};
+}
+
+/// The density, per unit world length, with which a free flight that reached a homogeneous
+/// piece scatters at distance d into it: σs e^{−σ̄ d}, with the largest channels (the tracking
+/// majorant σ̄ and σs) standing for all three. Only the MIS weights use it.
+double flightPdf(const Medium& m, double d) {
+    return maxChannel(m.sigmaS) * std::exp(-m.sigmaTMax() * d);
 }
 
 }  // namespace
@@ -112,10 +164,10 @@ void ParticipatingMedia::pieces(const Ray& ray, double tEnd, std::vector<Piece>&
 // [media-pieces]
 
 // [media-track]
-FreeFlight::Event ParticipatingMedia::track(const ShadeContext& ctx, const Ray& ray, double tEnd,
-                                            Colour& beta, Vec3& x, const Medium*& m) const {
-    std::vector<Piece> stretches;
-    pieces(ray, tEnd, stretches);
+
+FreeFlight::Event ParticipatingMedia::track(const ShadeContext& ctx, const Ray& ray,
+                                            const std::vector<Piece>& stretches, Colour& beta,
+                                            Vec3& x, const Medium*& m, FlightSite& site) const {
     for (const Piece& piece : stretches) {
         const FreeFlight flight =
             sampleFreeFlight(*piece.medium, ray, piece.t0, piece.t1, ctx.sampler);
@@ -124,12 +176,65 @@ FreeFlight::Event ParticipatingMedia::track(const ShadeContext& ctx, const Ray& 
         if (flight.event == FreeFlight::Event::Scattered) {
             x = ray.o + flight.t * ray.d;
             m = &piece.medium->medium;
+            site = {&ray, piece, flight.t, site.points};
             return flight.event;
         }
     }
     return FreeFlight::Event::None;
 }
 // [media-track]
+
+// [media-first-flight]
+FreeFlight::Event ParticipatingMedia::firstFlight(const ShadeContext& ctx, const Ray& ray,
+                                                  const std::vector<Piece>& stretches, Colour& beta,
+                                                  Vec3& x, const Medium*& m, FlightSite& site,
+                                                  Colour& throughput) const {
+    const bool closedForm = std::all_of(stretches.begin(), stretches.end(), [](const Piece& p) {
+        return p.medium->medium.homogeneous() && std::isfinite(p.t1);
+    });
+    if (!closedForm) {
+        // Delta tracking: the surface is seen exactly when the flight meets no particle.
+        const FreeFlight::Event event = track(ctx, ray, stretches, beta, x, m, site);
+        throughput = event == FreeFlight::Event::None ? beta : Colour(0.0);
+        return event;
+    }
+    // Step 1: the surface beyond, seen through the pieces' closed-form transmittance.
+    const double length = glm::length(ray.d);
+    double total = 0.0;  // The ray's optical depth under the pieces' majorants.
+    throughput = Colour(1.0);
+    for (const Piece& p : stretches) {
+        const Medium& medium = p.medium->medium;
+        total += medium.sigmaTMax() * (p.t1 - p.t0) * length;
+        throughput *= beerLambert(medium.sigmaT(), (p.t1 - p.t0) * length);
+    }
+    if (!(total > 0.0)) return FreeFlight::Event::None;
+    // Step 2: an optical depth τ drawn from the exponential cut off at the total, which
+    // the path meets with probability `reach` = 1 − e^{−total}.
+    const double reach = -std::expm1(-total);
+    const double depth = -std::log1p(-ctx.sampler.next1D() * reach);
+    // Step 3: the piece and the distance at that depth; the path's weight is
+    // T(0, t) σs / pdf(t), pdf(t) = σ̄ e^{−τ} / reach per channel (σs/σt · reach in grey fog).
+    double left = depth;
+    Colour seen(1.0);
+    for (const Piece& p : stretches) {
+        const Medium& medium = p.medium->medium;
+        const double sigma = medium.sigmaTMax(), d = (p.t1 - p.t0) * length;
+        if (left < sigma * d) {
+            const double into = left / sigma;
+            const double t = p.t0 + into / length;
+            beta *= seen * beerLambert(medium.sigmaT(), into) * medium.sigmaS *
+                    (reach / (sigma * std::exp(-depth)));
+            x = ray.o + t * ray.d;
+            m = &medium;
+            site = {&ray, p, t, site.points};
+            return FreeFlight::Event::Scattered;
+        }
+        left -= sigma * d;
+        seen *= beerLambert(medium.sigmaT(), d);
+    }
+    return FreeFlight::Event::None;  // Rounding put the depth just past the last piece.
+}
+// [media-first-flight]
 
 // [media-segment]
 Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, double tEnd,
@@ -149,23 +254,31 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
     }
     // A path through the media, one scattering after another (a loop, not recursion: a dense
     // cloud scatters light hundreds of times before it leaves).
-    throughput = Colour(0.0);
     Ray r = ray;
     double end = tEnd;
     Hit hit;
     bool found = false;
+    std::vector<Piece> stretches;
     for (int bounce = 0;; ++bounce) {
+        // Step 0: the media along this ray, and single scattering towards the lights at points
+        // placed for each (equiangular, or by transmittance), weighted against what the free
+        // flight of step 1 finds (multiple importance sampling).
+        pieces(r, end, stretches);
+        const int points = bounce == 0 ? settings_.points : 1;
+        if (settings_.direct != MediaDirect::FreeFlight)
+            radiance += beta * pointsScattered(ctx, r, stretches, points);
         Vec3 x;
         const Medium* m = nullptr;
-        const FreeFlight::Event event = track(ctx, r, end, beta, x, m);
+        FlightSite site{nullptr, {}, 0.0, points};
+        const FreeFlight::Event event =
+            bounce == 0 ? firstFlight(ctx, r, stretches, beta, x, m, site, throughput)
+                        : track(ctx, r, stretches, beta, x, m, site);
         if (event == FreeFlight::Event::Absorbed) return radiance;
         if (event == FreeFlight::Event::None) {
-            // The path leaves the media: the first ray's surface is the caller's to shade;
-            // a scattered ray's surface (or the background) is shaded here.
-            if (bounce == 0) {
-                throughput = beta;
-                return radiance;
-            }
+            // The path leaves the media: the first ray's surface is the caller's to shade,
+            // through `throughput`; a scattered ray's surface (or the background) is shaded
+            // here.
+            if (bounce == 0) return radiance;
             const ShadeContext next{ctx.scene,
                                     ctx.integrator,
                                     ctx.sampler,
@@ -177,11 +290,11 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
             return radiance +
                    beta * (found ? ctx.integrator.shade(next, r, hit) : ctx.scene.background);
         }
-        // Step 1: a particle at x scatters the lights' light towards us (single scattering),
-        // and at the path's first scattering A4's ambient light, which stands for all the
-        // indirect light: the rest of the path must not count it again.
+        // Step 1: a particle at x scatters the lights' light towards us (single scattering,
+        // each light's MIS share), and at the path's first scattering A4's ambient light, which
+        // stands for all the indirect light: the rest of the path must not count it again.
         const Vec3 travel = glm::normalize(r.d);
-        radiance += beta * lightScattered(ctx, x, travel, *m);
+        radiance += beta * lightScattered(ctx, x, travel, *m, &site);
         if (bounce == 0 && ctx.ambient) radiance += beta * ctx.scene.ambient;
         // Step 2: and light from one direction the phase function draws (its pdf cancels the
         // phase function), until the path has scattered `bounces` more times.
@@ -197,34 +310,112 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
 
 // [media-light-scattered]
 Colour ParticipatingMedia::lightScattered(const ShadeContext& ctx, const Vec3& x,
-                                          const Vec3& travel, const Medium& m) const {
+                                          const Vec3& travel, const Medium& m,
+                                          const FlightSite* site) const {
     Colour light(0.0);
     for (const PointLight& source : ctx.scene.lights) {
-        const bool area = source.shape && ctx.scene.sampleAreaLights;
-        const int perAxis = !area                        ? 1
-                            : ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples
-                                                         : source.shape->samplesPerAxis();
-        Colour sum(0.0);
-        for (int k = 0; k < perAxis * perAxis; ++k) {
-            double emission = 1.0;
-            const Vec3 from = area ? source.shape->samplePoint(source.position, x, k, perAxis,
-                                                               ctx.sampler.next2D(), emission)
-                                   : source.position;
-            const Vec3 toLight = from - x;
-            const double r = glm::length(toLight);
-            if (!(r > 0.0) || emission <= 0.0) continue;
-            if (ctx.integrator.occluded(Ray{x, toLight}, 1.0, ctx.counters)) continue;
-            // A4's lights are in units where a white diffuse surface returns I cos θ / r²,
-            // π times a physical point light's: the phase function is scaled to match.
-            const double phase = kPi * henyeyGreenstein(glm::dot(travel, toLight / r), m.g);
-            sum += emission * source.intensityAt(r) * phase *
-                   transmittance(x, from, ctx.sampler, ctx.counters);
-        }
-        light += sum / static_cast<double>(perAxis * perAxis);
+        const double share =
+            site ? 1.0 - pointsShare(*site->ray, site->piece, site->t, source, site->points) : 1.0;
+        if (share > 0.0) light += share * lightFrom(ctx, source, x, travel, m);
     }
     return light;
 }
+
+Colour ParticipatingMedia::lightFrom(const ShadeContext& ctx, const PointLight& source,
+                                     const Vec3& x, const Vec3& travel, const Medium& m) const {
+    const bool area = source.shape && ctx.scene.sampleAreaLights;
+    const int perAxis = !area                        ? 1
+                        : ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples
+                                                     : source.shape->samplesPerAxis();
+    Colour sum(0.0);
+    for (int k = 0; k < perAxis * perAxis; ++k) {
+        double emission = 1.0;
+        const Vec3 from = area ? source.shape->samplePoint(source.position, x, k, perAxis,
+                                                           ctx.sampler.next2D(), emission)
+                               : source.position;
+        const Vec3 toLight = from - x;
+        const double r = glm::length(toLight);
+        if (!(r > 0.0) || emission <= 0.0) continue;
+        if (ctx.integrator.occluded(Ray{x, toLight}, 1.0, ctx.counters)) continue;
+        // A4's lights are in units where a white diffuse surface returns I cos θ / r², π
+        // times a physical point light's: the phase function is scaled to match.
+        const double phase = kPi * henyeyGreenstein(glm::dot(travel, toLight / r), m.g);
+        sum += emission * source.intensityAt(r) * phase *
+               transmittance(x, from, ctx.sampler, ctx.counters);
+    }
+    return sum / static_cast<double>(perAxis * perAxis);
+}
 // [media-light-scattered]
+
+// [media-equiangular]
+bool ParticipatingMedia::pointsOn(const Ray& ray, const Piece& piece) const {
+    const Medium& m = piece.medium->medium;
+    if (settings_.direct == MediaDirect::FreeFlight || settings_.march || !m.homogeneous() ||
+        !(maxChannel(m.sigmaS) > 0.0))
+        return false;
+    // Deep media are the free flight's: it lands within a few mean free paths of where the
+    // ray enters, as deep as the lights reach, and points there would only double the shadow
+    // rays (a ball of milk). Light points pay where a flight would often pass the lit part.
+    const double depth = m.sigmaTMax() * (piece.t1 - piece.t0) * glm::length(ray.d);
+    return settings_.direct == MediaDirect::LightPoints || depth <= kPointsDepth;
+}
+
+double ParticipatingMedia::pointsShare(const Ray& ray, const Piece& piece, double t,
+                                       const PointLight& light, int points) const {
+    if (!pointsOn(ray, piece)) return 0.0;
+    if (settings_.direct == MediaDirect::LightPoints) return 1.0;
+    // The balance heuristic: each technique's density times its number of samples, over their
+    // sum, at the same point.
+    const PiecePoints place = piecePoints(ray, piece, light);
+    const double s = t * glm::length(ray.d);
+    const double own = points * place.pdf(s);
+    const double flight = flightPdf(piece.medium->medium, s - place.seg.a);
+    return own / (own + flight);
+}
+
+Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& ray,
+                                           const std::vector<Piece>& stretches, int points) const {
+    if (ctx.scene.lights.empty()) return Colour(0.0);
+    // Only pieces up to the last homogeneous one matter.
+    size_t last = stretches.size();
+    for (size_t k = 0; k < stretches.size(); ++k)
+        if (pointsOn(ray, stretches[k])) last = k;
+    if (last == stretches.size()) return Colour(0.0);
+    const Vec3 travel = glm::normalize(ray.d);
+    Colour tr(1.0), light(0.0);
+    for (size_t k = 0; k <= last; ++k) {
+        const Piece& piece = stretches[k];
+        const Medium& m = piece.medium->medium;
+        if (pointsOn(ray, piece)) {
+            for (const PointLight& source : ctx.scene.lights) {
+                const PiecePoints place = piecePoints(ray, piece, source);
+                for (int k = 0; k < points; ++k) {
+                    // Step 1: a point on the piece, where this light's single scattering is
+                    // (the points stratified: one in each equal share of the distribution).
+                    const double u = (k + ctx.sampler.next1D()) / points;
+                    const EquiangularSample e = place.sample(u);
+                    const double t = e.s / glm::length(ray.d);
+                    const double share = pointsShare(ray, piece, t, source, points);
+                    if (!(e.pdf > 0.0) || !(share > 0.0)) continue;
+                    // Step 2: the light it scatters towards the ray's origin, seen through the
+                    // media before it (closed form in this piece), over the point's density.
+                    const Colour seen = tr * beerLambert(m.sigmaT(), e.s - place.seg.a);
+                    light += seen * m.sigmaS * (share / (points * e.pdf)) *
+                             lightFrom(ctx, source, ray.o + t * ray.d, travel, m);
+                }
+            }
+        }
+        // Step 3: what gets through this piece, for the pieces beyond it.
+        if (k < last)
+            tr *= m.homogeneous()
+                      ? beerLambert(m.sigmaT(), (piece.t1 - piece.t0) * glm::length(ray.d))
+                      : estimateTransmittance(*piece.medium, ray, piece.t0, piece.t1,
+                                              settings_.shadows, settings_.step, ctx.sampler);
+        if (!(maxChannel(tr) > 0.0)) break;
+    }
+    return light;
+}
+// [media-equiangular]
 
 // [media-march]
 Colour ParticipatingMedia::march(const ShadeContext& ctx, const Ray& ray, const Piece& piece,
@@ -261,7 +452,10 @@ bool ParticipatingMedia::sampleInteraction(const ShadeContext& ctx, const Ray& r
     // answer (delta tracking, whatever --media says: ray marching has no free flights).
     Vec3 x;
     const Medium* m = nullptr;
-    const FreeFlight::Event event = track(ctx, ray, tEnd, beta, x, m);
+    FlightSite site{};
+    std::vector<Piece> stretches;
+    pieces(ray, tEnd, stretches);
+    const FreeFlight::Event event = track(ctx, ray, stretches, beta, x, m, site);
     if (event == FreeFlight::Event::None) return false;
     if (event == FreeFlight::Event::Absorbed) {
         beta = Colour(0.0);
@@ -284,9 +478,12 @@ Vec3 ParticipatingMedia::samplePhase(double g, const Vec3& travel, const Vec2& u
 // [media-transmittance]
 Colour ParticipatingMedia::transmittance(const Vec3& a, const Vec3& b, Sampler& sampler,
                                          RayCounters&) const {
-    const Ray ray{a, b - a};
+    return transmittanceAlong(Ray{a, b - a}, 1.0, sampler);
+}
+
+Colour ParticipatingMedia::transmittanceAlong(const Ray& ray, double tEnd, Sampler& sampler) const {
     std::vector<Piece> stretches;
-    pieces(ray, 1.0, stretches);
+    pieces(ray, tEnd, stretches);
     const TransmittanceMethod method =
         settings_.march ? TransmittanceMethod::March : settings_.shadows;
     Colour tr(1.0);

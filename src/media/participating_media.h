@@ -12,6 +12,13 @@
 
 namespace rb {
 
+/// Where single scattering towards A4's lights is sampled along a ray in a homogeneous medium.
+enum class MediaDirect {
+    Mis,          ///< Both below, weighted by the balance heuristic (the default).
+    FreeFlight,   ///< Only where the free flight scatters.
+    LightPoints,  ///< Only at points placed for each light (free flights carry the path on).
+};
+
 /// How a render treats its media: gr.option values, overridden by the command line.
 struct MediaSettings {
     bool march = false;  ///< Ray marching (single scattering only) instead of tracking.
@@ -20,6 +27,9 @@ struct MediaSettings {
     int majorantResolution = 16;  ///< Majorant grid cells per axis.
     /// Scatterings a path may take in media after the first (0: single scattering only).
     int bounces = 256;
+    MediaDirect direct = MediaDirect::Mis;  ///< Where single scattering is sampled.
+    /// Points per light along a path's first ray (its later rays take one each).
+    int points = 4;
 };
 
 /// The media of one render: the closed shapes that bound media (node:set_medium) and the fog
@@ -48,17 +58,56 @@ class ParticipatingMedia final : public MediaTerm {
     /// The stretches of the ray between t = 0 and tEnd, in order; empty space is left out.
     void pieces(const Ray& ray, double tEnd, std::vector<Piece>& out) const;
 
+    /// Where a free flight scattered: the ray, the piece and the parameter t, which the
+    /// multiple importance sampling weights need.
+    struct FlightSite {
+        const Ray* ray;
+        Piece piece;
+        double t;
+        int points;  ///< Light points per light on that ray.
+    };
+
     /// The light that a particle at x of medium m scatters along the unit direction `travel`
-    /// reversed from every light, through attenuated shadow rays (single scattering). A4's
-    /// ambient light is the caller's to add, once per path.
+    /// reversed from every light, through attenuated shadow rays (single scattering). With a
+    /// free flight's `site`, each light's share is its MIS weight against equiangular
+    /// sampling; without one (ray marching), all of it. A4's ambient light is the caller's to
+    /// add, once per path.
     Colour lightScattered(const ShadeContext& ctx, const Vec3& x, const Vec3& travel,
-                          const Medium& m) const;
+                          const Medium& m, const FlightSite* site = nullptr) const;
 
   private:
-    /// What a ray meets in the media up to tEnd: nothing (`beta` holds the transmittance),
-    /// absorption, or a scattering at x in medium m (`beta` holds the path's weight).
-    FreeFlight::Event track(const ShadeContext& ctx, const Ray& ray, double tEnd, Colour& beta,
-                            Vec3& x, const Medium*& m) const;
+    /// What a ray meets in the media along `stretches` (its pieces): nothing (`beta` holds the
+    /// transmittance), absorption, or a scattering at x in medium m (`beta` holds the path's
+    /// weight), at `site`.
+    FreeFlight::Event track(const ShadeContext& ctx, const Ray& ray,
+                            const std::vector<Piece>& stretches, Colour& beta, Vec3& x,
+                            const Medium*& m, FlightSite& site) const;
+    /// The first ray's flight (track's part for a path's first ray). Where every piece is
+    /// homogeneous, the surface beyond is seen through the closed-form transmittance
+    /// (`throughput`) and the path scatters at a distance drawn from the exponential cut off at
+    /// the pieces' end, weighted by the chance it stands for (forced scattering): neither part
+    /// is a coin toss. Elsewhere delta tracking decides between them.
+    FreeFlight::Event firstFlight(const ShadeContext& ctx, const Ray& ray,
+                                  const std::vector<Piece>& stretches, Colour& beta, Vec3& x,
+                                  const Medium*& m, FlightSite& site, Colour& throughput) const;
+    /// The transmittance along the ray from t = 0 to tEnd: closed form in homogeneous pieces,
+    /// the shadow-ray estimator in the others.
+    Colour transmittanceAlong(const Ray& ray, double tEnd, Sampler& sampler) const;
+    /// The light of one source, scattered at x along `travel` reversed (lightScattered's term).
+    Colour lightFrom(const ShadeContext& ctx, const PointLight& source, const Vec3& x,
+                     const Vec3& travel, const Medium& m) const;
+    /// Single scattering towards every light along the ray's `stretches`, at `points` stratified
+    /// points per light on each homogeneous piece (equiangular, or by transmittance for a light
+    /// without falloff), MIS-weighted against free flights.
+    Colour pointsScattered(const ShadeContext& ctx, const Ray& ray,
+                           const std::vector<Piece>& stretches, int points) const;
+    /// True when single scattering on `piece` is sampled at light points as well.
+    bool pointsOn(const Ray& ray, const Piece& piece) const;
+    /// The light points' share of single scattering towards `light` at parameter t of `piece`,
+    /// when they are `points` to the free flight's one: 0 where only free flights sample it, 1
+    /// where only light points do.
+    double pointsShare(const Ray& ray, const Piece& piece, double t, const PointLight& light,
+                       int points) const;
     /// Ray marching through one piece: the single-scattered light it adds, and `tr` dimmed.
     Colour march(const ShadeContext& ctx, const Ray& ray, const Piece& piece, Colour& tr) const;
 
