@@ -7,8 +7,11 @@
 /// constant density and for a linear ramp (T = e^−(a d + b d²/2)), ray marching's exact error
 /// on the ramp, z-tests of delta and ratio tracking at 1×, 2× and 10× the true majorant,
 /// chi-square tests of free-flight distances and of the Henyey–Greenstein sampler, single
-/// scattering in a slab lit from behind, L = π p(0) σs ℓ e^(−σt ℓ) I in A4's units, and a
-/// furnace: an albedo-1 medium under a uniform sky returns the sky. End to end: the image does
+/// scattering in a slab lit from behind, L = π p(0) σs ℓ e^(−σt ℓ) I in A4's units, a
+/// chi-square test of equiangular points, a lamp inside fog (with and without falloff) whose
+/// single scattering free flights, light points and MIS all match (Simpson's rule of the
+/// integral), a surface behind homogeneous fog seen through exactly e^(−σt ℓ), and a furnace:
+/// an albedo-1 medium under a uniform sky returns the sky. End to end: the image does
 /// not depend on the majorant grid, the camera may sit inside a medium, concave, nested and
 /// overlapping media hold the medium the scene graph says, interfaces cost no depth, a dense
 /// medium (σ = 1000) renders without black or NaN pixels, a dense white medium lit by ambient

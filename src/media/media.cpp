@@ -111,28 +111,27 @@ void installMedia(Pipeline& pipeline, Scene& scene, const RenderContext& context
 std::vector<Warp> mediaWarps();
 
 Feature mediaFeature() {
-    return {"media",
-            17,
-            "participating media: fog, light shafts and smoke (delta and ratio tracking)",
-            true,
-            bindMedia,
-            installMedia,
-            {{"media", "track|march",
-              "free flights by delta tracking, or ray marching (single scattering only)", "track"},
-             {"media-shadows", "ratio|delta", "shadow-ray transmittance estimator", "ratio"},
-             {"media-direct", "mis|flight|light",
-              "where single scattering towards the lights is sampled in homogeneous media: where "
-              "free flights scatter, at points placed for each light (equiangular for a light "
-              "that falls off as 1/r^2), or both weighted by MIS",
-              "mis"},
-             {"media-points", "N", "light points per light along a path's first ray", "4"},
-             {"media-step", "S", "ray-marching step, in scene units",
-              "1/400 of the scene's size (fog box diagonal)"},
-             {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
-             {"media-bounces", "N", "scatterings after the first (0: single scattering)",
-              "the scene's media_bounces, else 256"}},
-            {},
-            mediaWarps};
+    return {
+        "media",
+        17,
+        "participating media: fog, light shafts and smoke (delta and ratio tracking)",
+        true,
+        bindMedia,
+        installMedia,
+        {{"media", "track|march",
+          "free flights by delta tracking, or ray marching (single scattering only)", "track"},
+         {"media-shadows", "ratio|delta", "shadow-ray transmittance estimator", "ratio"},
+         {"media-direct", "mis|flight|light",
+          "single scattering in homogeneous media: free flights, lamp points, or both by MIS",
+          "mis"},
+         {"media-points", "N", "lamp points per lamp along a path's first ray (1 to 1024)", "4"},
+         {"media-step", "S", "ray-marching step, in scene units",
+          "1/400 of the scene's size (fog box diagonal)"},
+         {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
+         {"media-bounces", "N", "scatterings after the first (0: single scattering)",
+          "the scene's media_bounces, else 256"}},
+        {},
+        mediaWarps};
 }
 
 }  // namespace rb

@@ -15,7 +15,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// The optical depth (mean free paths along the ray) beyond which a piece's single scattering
-/// is left to free flights under --media-direct=mis.
+/// is left to free flights under --media-direct=mis, unless a ray takes several points per lamp.
 constexpr double kPointsDepth = 8.0;
 /// The most times one ray is followed through one boundary; a closed shape a ray crosses
 /// more often than this (a very wrinkled mesh) is taken as left after the last.
@@ -348,21 +348,22 @@ Colour ParticipatingMedia::lightFrom(const ShadeContext& ctx, const PointLight& 
 // [media-light-scattered]
 
 // [media-equiangular]
-bool ParticipatingMedia::pointsOn(const Ray& ray, const Piece& piece) const {
+bool ParticipatingMedia::pointsOn(const Ray& ray, const Piece& piece, int points) const {
     const Medium& m = piece.medium->medium;
     if (settings_.direct == MediaDirect::FreeFlight || settings_.march || !m.homogeneous() ||
         !(maxChannel(m.sigmaS) > 0.0))
         return false;
-    // Deep media are the free flight's: it lands within a few mean free paths of where the
-    // ray enters, as deep as the lights reach, and points there would only double the shadow
-    // rays (a ball of milk). Light points pay where a flight would often pass the lit part.
+    // Deep media are mostly the free flight's: it lands within a few mean free paths of where
+    // the ray enters, as deep as the lights reach. There a single point per lamp (a scattered
+    // ray's) would only double the shadow rays (a box of smoke of σs = 1000: the same noise in
+    // twice the time); several stratified points (a path's first ray) still pay.
     const double depth = m.sigmaTMax() * (piece.t1 - piece.t0) * glm::length(ray.d);
-    return settings_.direct == MediaDirect::LightPoints || depth <= kPointsDepth;
+    return settings_.direct == MediaDirect::LightPoints || points > 1 || depth <= kPointsDepth;
 }
 
 double ParticipatingMedia::pointsShare(const Ray& ray, const Piece& piece, double t,
                                        const PointLight& light, int points) const {
-    if (!pointsOn(ray, piece)) return 0.0;
+    if (!pointsOn(ray, piece, points)) return 0.0;
     if (settings_.direct == MediaDirect::LightPoints) return 1.0;
     // The balance heuristic: each technique's density times its number of samples, over their
     // sum, at the same point.
@@ -379,14 +380,14 @@ Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& r
     // Only pieces up to the last homogeneous one matter.
     size_t last = stretches.size();
     for (size_t k = 0; k < stretches.size(); ++k)
-        if (pointsOn(ray, stretches[k])) last = k;
+        if (pointsOn(ray, stretches[k], points)) last = k;
     if (last == stretches.size()) return Colour(0.0);
     const Vec3 travel = glm::normalize(ray.d);
     Colour tr(1.0), light(0.0);
     for (size_t k = 0; k <= last; ++k) {
         const Piece& piece = stretches[k];
         const Medium& m = piece.medium->medium;
-        if (pointsOn(ray, piece)) {
+        if (pointsOn(ray, piece, points)) {
             for (const PointLight& source : ctx.scene.lights) {
                 const PiecePoints place = piecePoints(ray, piece, source);
                 for (int k = 0; k < points; ++k) {

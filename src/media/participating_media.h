@@ -101,8 +101,9 @@ class ParticipatingMedia final : public MediaTerm {
     /// without falloff), MIS-weighted against free flights.
     Colour pointsScattered(const ShadeContext& ctx, const Ray& ray,
                            const std::vector<Piece>& stretches, int points) const;
-    /// True when single scattering on `piece` is sampled at light points as well.
-    bool pointsOn(const Ray& ray, const Piece& piece) const;
+    /// True when single scattering on `piece` is sampled at light points as well, `points` per
+    /// lamp.
+    bool pointsOn(const Ray& ray, const Piece& piece, int points) const;
     /// The light points' share of single scattering towards `light` at parameter t of `piece`,
     /// when they are `points` to the free flight's one: 0 where only free flights sample it, 1
     /// where only light points do.

@@ -6,30 +6,30 @@
 #   MEDIA_THREADS=N   threads for both renderers' measured runs (default 1)
 #   MEDIA_ROUNDS=N    timed rounds, the fastest run of each point kept (default 3)
 # Writes OUT_DIR/povray.dat (renderer, quality, seconds, RMSE) and prints Markdown: the
-# renderers' points, the ratio raybook/POV-Ray of render time at equal error; last, lines
-# "target media_povray RATIO" (raybook's default, delta tracking) and "target
-# media_povray_march RATIO" (raybook's ray marching, POV-Ray's own method) for make bench.
+# renderers' points, the ratio raybook/POV-Ray of render time at equal error; last, the
+# "target NAME RATIO" lines for make bench.
 #
 # The scenes: tests/perf/ch17/shaft.lua (--media-bounces=0: single scattering) and
 # tests/perf/povray/chapter17-media.pov (its comments say how the geometry, the light, the
 # finish and the fog translate, and how the two phase functions were matched: converged, the
 # two pictures' means agree within 3%). Homogeneous fog, because POV-Ray reads no VDB file.
 # Both render without antialiasing (POV-Ray -A; raybook --aa=none); both write linear colour
-# (POV-Ray with File_Gamma=1.0), 8 bits. raybook's N samples per pixel still spread over the
-# pixel (a 1-sample and a 1024-sample render differ at the edges), so its delta-tracking series
-# pays some pixel noise that POV-Ray's one ray per pixel does not, and converges to an
-# antialiased picture; its marching series (one sample per pixel, through the centre, as
-# POV-Ray's) is measured against its own reference, marched at step 0.003.
+# (POV-Ray with File_Gamma=1.0), 8 bits. raybook's N samples per pixel spread over the pixel (a
+# 1-sample and a 1024-sample render differ at the edges), so series (2) below pays pixel noise
+# that POV-Ray's one ray per pixel centre does not; series (1) does not.
 # Quality levels: POV-Ray, media method 3 (its default: one interval, adaptive, jitter 0.5)
-# with samples N = 2 to 100. raybook, two series: (1) its default, delta tracking of the camera
-# ray (one scattering point per sample; in homogeneous fog the free flight is exact and the
-# shadow ray's transmittance is Beer-Lambert's closed form), N = 1 to 256 samples per pixel;
-# (2) ray marching (--media=march), POV-Ray's kind of method: a step S from a jittered start,
-# a shadow ray at every step, one sample per pixel, S = 0.4 down to 0.0125. Each renderer's
-# error is its RMSE against its own converged reference: raybook's delta tracking at 4096
-# samples per pixel (seed 7), raybook's marching at step 0.003 (1 sample per pixel), POV-Ray's
-# samples 2000. Times: raybook's render phase (--stats),
-# POV-Ray's Trace Time.
+# with samples N = 2 to 100. raybook, three series: (1) its default estimator at the pixel
+# centres, as POV-Ray's -A: N = 1 to 64 renders of one sample each (seeds 1..N), averaged
+# (tests/perf/ch17/average_png.py), the time their sum; (2) the same default with N = 1 to 256
+# samples per pixel, jittered over the pixel (an antialiased picture: it also pays the noise of
+# the shaft's and the floor's edges); (3) ray marching (--media=march), POV-Ray's kind of
+# method: a step S from a jittered start, a shadow ray at every step, one sample per pixel,
+# S = 0.4 down to 0.0125. Each renderer's error is its RMSE against its own converged
+# reference: (1) against 256 one-sample renders with 64 lamp points per ray, (2) against 4096
+# samples per pixel (seed 7), (3) marched at step 0.003 (1 sample per pixel); POV-Ray's at
+# samples 2000. Times: raybook's render phase (--stats), POV-Ray's Trace Time. The targets
+# printed last: media_povray (series 1, like for like), media_povray_aa (series 2) and
+# media_povray_march (series 3).
 set -euo pipefail
 build=$(cd "${1:?usage: media_vs_povray.sh BUILD_DIR OUT_DIR}" && pwd)
 out=${2:?usage: media_vs_povray.sh BUILD_DIR OUT_DIR}
@@ -67,8 +67,15 @@ echo "media_vs_povray: references ($size, $(nproc) threads)" >&2
 rb "$tmp/rb-ref.png" "$(nproc)" --seed 7 --spp 4096 >/dev/null
 rb "$tmp/mr-ref.png" "$(nproc)" --seed 7 --spp 1 --media=march --media-step=0.003 >/dev/null
 pv 2000 "$tmp/pv-ref.png" "$(nproc)" >/dev/null
+# The pixel-centre reference: 256 renders of one sample each, with 64 lamp points per ray.
+for i in $(seq 256); do
+  rb "$tmp/rc-ref-$i.png" "$(nproc)" --seed $((1000 + i)) --spp 1 --media-points=64 >/dev/null
+done
+python3 "$root/tests/perf/ch17/average_png.py" "$tmp/rc-ref.png" "$tmp"/rc-ref-*.png
+rm -f "$tmp"/rc-ref-*.png
 
 rbn=(1 4 16 64 256)
+rcn=(1 4 16 64)
 steps=(0.4 0.2 0.1 0.05 0.025 0.0125)
 pvn=(2 5 10 20 50 100)
 declare -A best rmses
@@ -83,6 +90,19 @@ for round in $(seq "$rounds"); do
   for n in "${rbn[@]}"; do
     keep "rb$n" "$(rb "$tmp/img.png" "$threads" --seed 1 --spp "$n")"
     [ "$round" = 1 ] && rmses[rb$n]=$("$rmse" rmse "$tmp/img.png" "$tmp/rb-ref.png")
+  done
+  for n in "${rcn[@]}"; do
+    # N renders of one sample at the pixel centre (as POV-Ray's -A), seeds 1..N, averaged.
+    total=0
+    for i in $(seq "$n"); do
+      t=$(rb "$tmp/rc-$i.png" "$threads" --seed "$i" --spp 1)
+      total=$(awk -v a="$total" -v b="$t" 'BEGIN { print a + b }')
+    done
+    keep "rc$n" "$total"
+    if [ "$round" = 1 ]; then
+      python3 "$root/tests/perf/ch17/average_png.py" "$tmp/img.png" $(for i in $(seq "$n"); do echo "$tmp/rc-$i.png"; done)
+      rmses[rc$n]=$("$rmse" rmse "$tmp/img.png" "$tmp/rc-ref.png")
+    fi
   done
   for s in "${steps[@]}"; do
     keep "mr$s" "$(rb "$tmp/img.png" "$threads" --seed 1 --spp 1 --media=march --media-step="$s")"
@@ -104,6 +124,9 @@ dat=$out/povray.dat
   echo; echo
   echo "# march: quality = step (raybook --media=march, 1 sample per pixel)"
   for s in "${steps[@]}"; do echo "march $s ${best[mr$s]} ${rmses[mr$s]}"; done
+  echo; echo
+  echo "# centre: quality = renders of 1 sample at the pixel centre, averaged (the default estimator)"
+  for n in "${rcn[@]}"; do echo "centre $n ${best[rc$n]} ${rmses[rc$n]}"; done
 } >"$dat"
 
 python3 - "$dat" "$size" "$threads" "$rounds" <<'PY'
@@ -111,7 +134,7 @@ import math, sys
 rows = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
 def points(name):
     return [(float(r[3]), float(r[2]), r[1]) for r in rows if r[0] == name]
-rb, pv, mr = points("raybook"), points("povray"), points("march")
+rb, pv, mr, rc = points("raybook"), points("povray"), points("march"), points("centre")
 size, threads, rounds = sys.argv[2], sys.argv[3], sys.argv[4]
 print(f"Fog and a light shaft (tests/perf/ch17/shaft.lua, single scattering) at {size}, {threads} "
       f"thread(s), against POV-Ray 3.7's media (tests/perf/povray/chapter17-media.pov); each "
@@ -122,7 +145,12 @@ print("|---:|---:|---:|")
 for e, t, n in pv:
     print(f"| {n} | {t:.3f} | {e:.5f} |")
 print()
-print("| raybook, delta tracking, samples per pixel | render s | RMSE |")
+print("| raybook's default, renders of 1 sample at the pixel centre, averaged | render s | RMSE |")
+print("|---:|---:|---:|")
+for e, t, n in rc:
+    print(f"| {n} | {t:.3f} | {e:.5f} |")
+print()
+print("| raybook's default, samples per pixel (jittered over the pixel) | render s | RMSE |")
 print("|---:|---:|---:|")
 for e, t, n in rb:
     print(f"| {n} | {t:.3f} | {e:.5f} |")
@@ -146,12 +174,12 @@ print("Equal error: each raybook series' time interpolated (log-log) at each POV
       "ratio = raybook / POV-Ray (below 1: raybook is faster; - where the POV-Ray point's RMSE lies "
       "outside the series' range).")
 print()
-print("| POV-Ray samples | RMSE | POV-Ray s | raybook delta tracking s | ratio | raybook marching s | ratio |")
-print("|---:|---:|---:|---:|---:|---:|---:|")
-ratios = {"d": [], "m": []}
+print("| POV-Ray samples | RMSE | POV-Ray s | raybook pixel centres s | ratio | raybook jittered s | ratio | raybook marching s | ratio |")
+print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+ratios = {"c": [], "d": [], "m": []}
 for e, t, n in pv:
     cells = []
-    for key, series in (("d", rb), ("m", mr)):
+    for key, series in (("c", rc), ("d", rb), ("m", mr)):
         tr = time_at(series, e)
         if tr is None:
             cells += ["-", "-"]
@@ -162,7 +190,8 @@ for e, t, n in pv:
 print()
 def span(series):
     return f"{min(p[0] for p in series):.4f} to {max(p[0] for p in series):.4f}"
-for key, label, series in (("d", "raybook's default (delta tracking, N samples per pixel)", rb),
+for key, label, series in (("c", "raybook's default at the pixel centres (as POV-Ray's -A)", rc),
+                           ("d", "raybook's default, N samples jittered over the pixel (antialiased)", rb),
                            ("m", "raybook's ray marching (POV-Ray's kind of method)", mr)):
     if ratios[key]:
         print(f"- **{label}: median ratio {median(ratios[key]):.2f}** over {len(ratios[key])} POV-Ray "
@@ -172,14 +201,17 @@ for key, label, series in (("d", "raybook's default (delta tracking, N samples p
 print()
 print("What differs: POV-Ray's method 3 places its samples along each camera ray's stretch of fog "
       "(jittered, adaptively refined where neighbouring samples differ) and lights every one, as "
-      "raybook's ray marching does at a fixed step; raybook's default finds one scattering point "
-      "per sample by a free flight, which in thin fog (optical depth about 1 across the box) "
-      "most camera rays pass through without scattering, so its noise falls only as 1/sqrt(samples), "
-      "and its samples also spread over the pixel (POV-Ray's -A traces one ray through the centre). "
-      "raybook's marching series is measured against its own reference marched at step 0.003. "
-      "Each reference has an error of its own, so points near the smallest errors are the least certain.")
+      "raybook's ray marching does at a fixed step. raybook's default draws, per sample, 4 "
+      "stratified lamp points along the ray and one forced free flight, weighted by MIS; the "
+      "floor behind the fog is seen through the closed-form transmittance. POV-Ray's -A traces one "
+      "ray through each pixel centre: the pixel-centre series does the same (N one-sample renders "
+      "with their own seeds, averaged, against 256 such renders at 64 lamp points), while the "
+      "jittered series spreads its samples over the pixel and so also pays the noise of the "
+      "antialiased edges. raybook's marching series is measured against its own reference "
+      "marched at step 0.003. Each reference has an error of its own, so points near the smallest "
+      "errors are the least certain.")
 print()
-for key, name in (("d", "media_povray"), ("m", "media_povray_march")):
+for key, name in (("c", "media_povray"), ("d", "media_povray_aa"), ("m", "media_povray_march")):
     if ratios[key]:
         print(f"target {name} {median(ratios[key]):.2f}")
 PY
