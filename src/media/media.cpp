@@ -41,6 +41,16 @@ MediaSettings mediaSettings(const RenderContext& context) {
                              points);
         s.points = static_cast<int>(n);
     }
+    // The pixel's samples: --spp, else the scene's antialiasing (chapter 8's gr.antialias),
+    // else 1. Only how the lamp points are spread depends on it, not what they estimate.
+    double samples = 1.0;
+    const std::string spp = context.cliOption("spp");
+    if (!spp.empty())
+        samples = parseNumberOption("--spp", spp);
+    else if (context.sceneOption("aa_sampler", 0.0) != 0.0)
+        samples = context.sceneOption("aa_samples", 4.0);
+    const double perRay = s.points / std::max(1.0, samples);
+    s.pointsPerRay = perRay >= 1.0 ? std::round(perRay) : perRay;
     const std::string step = context.cliOption("media-step");
     if (!step.empty()) {
         s.step = parseNumberOption("--media-step", step);
@@ -111,27 +121,27 @@ void installMedia(Pipeline& pipeline, Scene& scene, const RenderContext& context
 std::vector<Warp> mediaWarps();
 
 Feature mediaFeature() {
-    return {
-        "media",
-        17,
-        "participating media: fog, light shafts and smoke (delta and ratio tracking)",
-        true,
-        bindMedia,
-        installMedia,
-        {{"media", "track|march",
-          "free flights by delta tracking, or ray marching (single scattering only)", "track"},
-         {"media-shadows", "ratio|delta", "shadow-ray transmittance estimator", "ratio"},
-         {"media-direct", "mis|flight|light",
-          "single scattering in homogeneous media: free flights, lamp points, or both by MIS",
-          "mis"},
-         {"media-points", "N", "lamp points per lamp along a path's first ray (1 to 1024)", "4"},
-         {"media-step", "S", "ray-marching step, in scene units",
-          "1/400 of the scene's size (fog box diagonal)"},
-         {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
-         {"media-bounces", "N", "scatterings after the first (0: single scattering)",
-          "the scene's media_bounces, else 256"}},
-        {},
-        mediaWarps};
+    return {"media",
+            17,
+            "participating media: fog, light shafts and smoke (delta and ratio tracking)",
+            true,
+            bindMedia,
+            installMedia,
+            {{"media", "track|march",
+              "free flights by delta tracking, or ray marching (single scattering only)", "track"},
+             {"media-shadows", "ratio|delta", "shadow-ray transmittance estimator", "ratio"},
+             {"media-direct", "mis|flight|light",
+              "single scattering in homogeneous media: free flights, lamp points, or both by MIS",
+              "mis"},
+             {"media-points", "N",
+              "lamp points per lamp per pixel, shared by its samples (1 to 1024)", "4"},
+             {"media-step", "S", "ray-marching step, in scene units",
+              "1/400 of the scene's size (fog box diagonal)"},
+             {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
+             {"media-bounces", "N", "scatterings after the first (0: single scattering)",
+              "the scene's media_bounces, else 256"}},
+            {},
+            mediaWarps};
 }
 
 }  // namespace rb

@@ -28,8 +28,11 @@ struct MediaSettings {
     /// Scatterings a path may take in media after the first (0: single scattering only).
     int bounces = 256;
     MediaDirect direct = MediaDirect::Mis;  ///< Where single scattering is sampled.
-    /// Points per light along a path's first ray (its later rays take one each).
+    /// Lamp points per lamp per pixel, shared among the pixel's samples (--media-points).
     int points = 4;
+    /// Lamp points per lamp along a path's first ray: points / samples per pixel, a whole
+    /// number where that is 1 or more, else the chance of one point (its later rays take none).
+    double pointsPerRay = 4.0;
 };
 
 /// The media of one render: the closed shapes that bound media (node:set_medium) and the fog
@@ -64,7 +67,7 @@ class ParticipatingMedia final : public MediaTerm {
         const Ray* ray;
         Piece piece;
         double t;
-        int points;  ///< Light points per light on that ray.
+        double points;  ///< Lamp points per lamp on that ray (0: none; below 1, a chance).
     };
 
     /// The light that a particle at x of medium m scatters along the unit direction `travel`
@@ -100,15 +103,15 @@ class ParticipatingMedia final : public MediaTerm {
     /// points per light on each homogeneous piece (equiangular, or by transmittance for a light
     /// without falloff), MIS-weighted against free flights.
     Colour pointsScattered(const ShadeContext& ctx, const Ray& ray,
-                           const std::vector<Piece>& stretches, int points) const;
-    /// True when single scattering on `piece` is sampled at light points as well, `points` per
-    /// lamp.
-    bool pointsOn(const Ray& ray, const Piece& piece, int points) const;
+                           const std::vector<Piece>& stretches, double points) const;
+    /// True when single scattering on `piece` is sampled at lamp points as well, `points` per
+    /// lamp (0 on the later rays of a path).
+    bool pointsOn(const Piece& piece, double points) const;
     /// The light points' share of single scattering towards `light` at parameter t of `piece`,
     /// when they are `points` to the free flight's one: 0 where only free flights sample it, 1
     /// where only light points do.
     double pointsShare(const Ray& ray, const Piece& piece, double t, const PointLight& light,
-                       int points) const;
+                       double points) const;
     /// Ray marching through one piece: the single-scattered light it adds, and `tr` dimmed.
     Colour march(const ShadeContext& ctx, const Ray& ray, const Piece& piece, Colour& tr) const;
 
