@@ -140,10 +140,11 @@ test-assignments:
 	  echo "skip make grade's tests: nothing outside the chapter modules changed since they passed (make test FULL=1 runs them)"; \
 	fi
 
-# The same CTest suite (unit tests, golden images, determinism, bad input, scenes, batch,
-# interrupt, MPI) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
-# folder (no benchmarks; the ladder is left out, since it rebuilds ./rt, and so are the two docs
-# tests, which run Doxygen and no raybook code). Any report fails its test:
+# The same CTest suite (unit tests, golden images, bad input, scenes, batch, interrupt, MPI)
+# built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder (no
+# benchmarks; the ladder is left out, since it rebuilds ./rt, and so are the two docs tests,
+# which run Doxygen and no raybook code, and the determinism and golden-all tests, which check
+# pictures the sanitizers cannot change, with code scenes_smoke runs there too). Any report fails its test:
 #   halt_on_error, -fno-sanitize-recover=all  the first report ends the program;
 #   exitcode=66                               ... with an exit code no test expects;
 #   detect_leaks=1                            LeakSanitizer checks the heap at exit;
