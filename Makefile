@@ -78,11 +78,19 @@ mpi: mpi-deps configure
 # A skipped check says so. FULL=1, and CI (CI=true), drop the stamps and run everything.
 FULL ?= $(if $(filter true,$(CI)),1)
 STAMPS_PY := python3 tests/exercises/stamps.py
+# Each stage says how long it took ("make test: the build took 212 s").
+STAGE_START = @date +%s >$(BUILD)/stage-start
+stage_took = @echo "make test: $(1) took $$(($$(date +%s) - $$(cat $(BUILD)/stage-start))) s"
 test: mpi-deps configure
 	cmake -S . -B $(BUILD) >/dev/null
+	$(STAGE_START)
 	cmake --build $(BUILD) -j $(JOBS)
+	$(call stage_took,the build)
 	$(if $(FULL),rm -rf $(BUILD)/stamps)
+	$(STAGE_START)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L 'unit|golden'
+	$(call stage_took,the unit tests and golden images)
+	$(STAGE_START)
 	@if $(STAMPS_PY) stale $(BUILD) suite suite; then \
 	  $(MAKE) --no-print-directory web docs && cmake -S . -B $(BUILD) >/dev/null && \
 	  (cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'unit|golden') && \
@@ -90,9 +98,16 @@ test: mpi-deps configure
 	else \
 	  echo "skip the whole-book CTest suites: nothing outside the chapter modules changed since they passed (make test FULL=1 runs them)"; \
 	fi
+	$(call stage_took,make web and docs and the whole-book suites)
+	$(STAGE_START)
 	LADDER_STAMPS=1 bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"
+	$(call stage_took,the chapter ladder)
+	$(STAGE_START)
 	python3 tests/exercises/regions.py mutate $(BUILD) --changed
+	$(call stage_took,the mutation check)
+	$(STAGE_START)
 	$(MAKE) --no-print-directory test-assignments ROUNDTRIP_STAMPS="--stamps $(BUILD)"
+	$(call stage_took,the assignments' round trip and grading)
 
 # The tests prove they can fail: each exercise region, blanked one at a time, must make one of
 # its chapter's tests fail (only the test program is rebuilt, and only that chapter's tests run).

@@ -636,6 +636,7 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     result = {"project": str(project), "chapter": n, "build": "ok", "build_log": "",
               "exercises": [], "golden": {"status": "not run", "metric": "", "report": ""}}
     build.mkdir(parents=True, exist_ok=True)
+    started = time.monotonic()
     configure = ["cmake", "-S", str(project), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"]
     launcher = os.environ.get("RB_COMPILER_LAUNCHER")
     if launcher:
@@ -656,6 +657,8 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
             result["exercises"].append({**e, "tests": 0, "passed": 0, "status": "no build",
                                         "failures": []})
         return result
+    result["seconds"] = {"build": time.monotonic() - started}
+    started = time.monotonic()
     program = build / "tests" / "raybook_check"
     tagged = set()
     for k, e in enumerate(info["exercises"]):
@@ -678,6 +681,8 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
         tests = run_tests(program, rest, project)
         result["others"] = {"tests": len(rest), "passed": sum(t["passed"] for t in tests),
                             "failures": [t for t in tests if not t["passed"]]}
+    result["seconds"]["tests"] = time.monotonic() - started
+    started = time.monotonic()
     # The golden image.
     if golden and info.get("scene"):
         report = build / "golden-report"
@@ -691,6 +696,7 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
         result["golden"] = {"status": "pass" if code == 0 else "fail", "scene": name,
                             "metric": m.group(1) if m else "", "output": out.strip()[-1500:],
                             "report": str(html) if code != 0 and html.exists() else ""}
+    result["seconds"]["golden"] = time.monotonic() - started
     return result
 
 
@@ -1084,6 +1090,17 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
                    stdout=subprocess.DEVNULL)
     regions = [r for r in rg.find_regions(ROOT) if r.chapter == n]
     problems, log = [], []
+    spent = {"build": 0.0, "tests": 0.0, "golden": 0.0}
+
+    def check_project(*args, **kwargs) -> dict:  # the module's, adding up where time goes
+        result = globals()["check_project"](*args, **kwargs)
+        for what, seconds in result.get("seconds", {}).items():
+            spent[what] += seconds
+        return result
+
+    def spent_line() -> str:
+        return "time: " + ", ".join(f"{what} {s:.0f} s" for what, s in spent.items())
+
     result = check_project(project, build, golden=False, others=False, fail_fast=True)
     problems += step_problems(result, 0, "stubbed")
     log.append(f"stubbed {rows_line(result)}")
@@ -1103,7 +1120,7 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
         log.append(f"1..{r.name} {rows_line(result)}" +
                    (f", golden {result['golden']['status']}" if last else ""))
     if not bugs:
-        return problems, "; ".join(log)
+        return problems, "; ".join(log + [spent_line()])
     program = build / "tests" / "raybook_check"
     for r in regions:
         if r.blank is None:
@@ -1117,7 +1134,7 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
         red = [e["name"] for e in result["exercises"] if e["status"] != "pass"]
         log.append(f"bug {r.name}: red {' '.join(red) or 'none'}")
         solve_regions(project, {r.id})
-    return problems, "; ".join(log)
+    return problems, "; ".join(log + [spent_line()])
 
 
 def roundtrip(args) -> int:
