@@ -43,6 +43,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from pathlib import Path
 
@@ -554,12 +555,14 @@ def solve(args) -> int:
 
 # ---- Checking -------------------------------------------------------------------------------
 
-def run(command, timeout, cwd=None, env=None) -> tuple[int, str]:
+def run(command, timeout, cwd=None, env=None, on_line=None) -> tuple[int, str]:
     """Run a command; return its exit code (124 on timeout, -1 when it cannot start) and its
-    output."""
+    output. With `on_line`, each line of output is handed to it as it comes."""
     # A make started from inside another make must not inherit its job server.
     env = {k: v for k, v in (env or os.environ).items()
            if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    if on_line is not None:
+        return run_line_by_line(command, timeout, cwd, env, on_line)
     try:
         p = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            text=True, errors="replace", timeout=timeout, cwd=cwd, env=env)
@@ -569,6 +572,84 @@ def run(command, timeout, cwd=None, env=None) -> tuple[int, str]:
         return 124, out + f"\n(timed out after {timeout} s)"
     except OSError as e:  # the program is missing: its build failed, which is reported there
         return -1, f"cannot run {command[0]}: {e.strerror}"
+
+
+def run_line_by_line(command, timeout, cwd, env, on_line) -> tuple[int, str]:
+    """run() for a command whose output is shown while it runs."""
+    try:
+        p = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             text=True, errors="replace", cwd=cwd, env=env)
+    except OSError as e:
+        return -1, f"cannot run {command[0]}: {e.strerror}"
+    timed_out = threading.Event()
+    timer = threading.Timer(timeout, lambda: (timed_out.set(), p.kill()))
+    timer.start()
+    lines = []
+    try:
+        for line in p.stdout:
+            lines.append(line)
+            on_line(line.rstrip("\n"))
+        code = p.wait()
+    finally:
+        timer.cancel()
+    out = "".join(lines)
+    return (124, out + f"\n(timed out after {timeout} s)") if timed_out.is_set() else (code, out)
+
+
+# A first make check compiles every chapter up to the assignment's and its tests: chapter 17's
+# export, 103 files, took 11 to 28 minutes on a busy 2-core machine (issue 39), about 13 to 33
+# seconds of one core per file.
+CORE_SECONDS_PER_FILE = (13, 33)
+
+
+def build_targets(build: Path, targets: list[str], say=None) -> tuple[int, str]:
+    """`cmake --build` of `targets`. With `say`, tell a student what is built, step by step:
+    "[12/57] building chapter 9: src/smooth_mesh/vertex_normals.cpp"; a first build says
+    once how long it will take."""
+    command = ["cmake", "--build", str(build), "-j", JOBS, "--target", *targets]
+    if say is None:
+        return run(command, BUILD_TIMEOUT)
+    # make's dry run lists the compiles to come, once per target that needs them (-k: it
+    # stops at the version file, which is generated, not listed; the count then grows by one
+    # on the way).
+    _, planned = run(["cmake", "--build", str(build), "--target", *targets, "--", "-nk"], 120)
+    total = len(set(re.findall(r"Building CXX object (\S+?)\.o\b", planned)))
+    first = not (build / "tests" / "raybook_check").exists()
+    if first and total:
+        cores = int(JOBS)
+        low, high = (max(1, round(total * s / cores / 60)) for s in CORE_SECONDS_PER_FILE)
+        say(f"make check: the first build compiles {total} files (every chapter up to this "
+            f"one, and the tests) on {cores} core{'s' * (cores > 1)}: about "
+            f"{low} minutes, up to {high} on a busy machine. Later checks compile only what "
+            f"changed.")
+    done = 0
+
+    def tell(line: str) -> None:
+        nonlocal done, total
+        compiled = re.search(r"Building CXX object (\S+?)\.o$", line)
+        linked = re.search(r"Linking CXX (?:executable|static library) (\S+)$", line)
+        if compiled:
+            done += 1
+            total = max(total, done)
+            say(f"[{done}/{total}] building {compiled_what(compiled.group(1))}")
+        elif linked:
+            say(f"        linking {Path(linked.group(1)).name}")
+        elif re.search(r"error|Error \d", line):
+            say(line)
+
+    return run(command, BUILD_TIMEOUT, on_line=tell)
+
+
+def compiled_what(object_path: str) -> str:
+    """An object file named as a student reads it: "chapter 9: src/smooth_mesh/normals.cpp",
+    "the tests: tests/ch17_media.cpp"."""
+    target, _, source = object_path.partition(".dir/")
+    chapter = re.search(r"rb_ch(\d+)$", target)
+    if chapter:
+        return f"chapter {int(chapter.group(1))}: {source}"
+    if target.endswith("raybook_check"):
+        return f"the tests: tests/{source}"
+    return source
 
 
 def catch_escape(name: str) -> str:
@@ -622,11 +703,12 @@ def configured(build: Path, project: Path, launcher: str | None) -> bool:
             and (given.group(1) if given else None) == launcher)
 
 
-def check_project(project: Path, build: Path, quiet: bool = False, golden: bool = True,
+def check_project(project: Path, build: Path, golden: bool = True,
                   others: bool = True, rows: set[int] | None = None,
-                  fail_fast: bool = False) -> dict:
+                  fail_fast: bool = False, say=None) -> dict:
     """Build and check one exported project; return its results (never raises on a student's
-    failure: a build failure is a result). Without `golden` the chapter's binary is neither
+    failure: a build failure is a result). With `say`, each step is told as it starts (make
+    check: a student must see it work). Without `golden` the chapter's binary is neither
     built nor rendered, without `others` the untagged tests are not run; only the exercise
     rows in `rows` (indices from 0) are run when it is given, the others are "not run"; with
     `fail_fast` a row stops at its first failing test (its verdict is the same). The round
@@ -644,11 +726,16 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     # A build folder already configured for this project needs no second configure (2 s each
     # time): `cmake --build` configures again by itself when a CMakeLists.txt or a globbed
     # folder changed.
-    code, out = (0, "") if configured(build, project, launcher) else run(configure, 300)
+    tell = say or (lambda _: None)
+    if configured(build, project, launcher):
+        code, out = 0, ""
+    else:
+        tell(f"make check: configuring the build in {build}")
+        code, out = run(configure, 300)
     if code == 0:
+        # Chapter N's tests and, for the golden image, its rt: nothing else of the project.
         targets = ["raybook_check"] + ([f"rt_ch{n}"] if golden else [])
-        code, out = run(["cmake", "--build", str(build), "-j", JOBS, "--target", *targets],
-                        BUILD_TIMEOUT)
+        code, out = build_targets(build, targets, say)
     if code != 0:
         result["build"] = "timed out" if code == 124 else "failed"
         errors = [l for l in out.split("\n") if "error" in l.lower()]
@@ -669,6 +756,8 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
             result["exercises"].append({**e, "spec": spec, "tests": len(names), "passed": 0,
                                         "status": "not run", "failures": []})
             continue
+        tell(f"make check: exercise {e['name']}: running its {len(names)} "
+             f"test{'s' * (len(names) != 1)}")
         tests = run_tests(program, names, project, fail_fast)
         passed = sum(t["passed"] for t in tests)
         status = "pass" if names and passed == len(names) else "fail"
@@ -678,6 +767,7 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     # The chapter's other tests (those that need no exercise of the chapter).
     if others:
         rest = [t for t in list_tests(program, f"[ch{n:02d}]") if t not in tagged]
+        tell(f"make check: chapter {n}'s other tests ({len(rest)})")
         tests = run_tests(program, rest, project)
         result["others"] = {"tests": len(rest), "passed": sum(t["passed"] for t in tests),
                             "failures": [t for t in tests if not t["passed"]]}
@@ -685,6 +775,7 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     started = time.monotonic()
     # The golden image.
     if golden and info.get("scene"):
+        tell(f"make check: rendering {Path(info['scene']).name} for the golden image")
         report = build / "golden-report"
         code, out = run(["bash", str(project / "tests/golden/run_golden.sh"),
                          str(build / f"rt_ch{n}"), info["scene"], str(project / "golden"),
@@ -743,7 +834,8 @@ def check(args) -> int:
         sys.exit(f"check: {project} is not an exported assignment (no {INFO}); "
                  "make one with make assignment N")
     build = Path(args.build).resolve() if args.build else project / "build"
-    result = check_project(project, build)
+    result = check_project(project, build, say=lambda line: print(line, flush=True))
+    print()
     print(table(result))
     for e in result["exercises"]:
         for t in e.get("failures", [])[:1]:
