@@ -626,6 +626,8 @@ def build_targets(build: Path, targets: list[str], say=None) -> tuple[int, str]:
 
     def tell(line: str) -> None:
         nonlocal done, total
+        # Under a make whose output is a terminal (make check), CMake colours its lines.
+        line = re.sub(r"\x1b\[[0-9;]*m", "", line)
         compiled = re.search(r"Building CXX object (\S+?)\.o$", line)
         linked = re.search(r"Linking CXX (?:executable|static library) (\S+)$", line)
         if compiled:
