@@ -597,9 +597,9 @@ def run_line_by_line(command, timeout, cwd, env, on_line) -> tuple[int, str]:
 
 
 # A first make check compiles every chapter up to the assignment's and its tests: chapter 17's
-# export, 103 files, took 11 to 28 minutes on a busy 2-core machine (issue 39), about 13 to 33
-# seconds of one core per file.
-CORE_SECONDS_PER_FILE = (13, 33)
+# export, 114 files, took 11 to 28 minutes on a busy 2-core machine (issue 39; 16 minutes
+# under a load near 10 while this was written), about 12 to 30 seconds of one core per file.
+CORE_SECONDS_PER_FILE = (12, 30)
 
 
 def build_targets(build: Path, targets: list[str], say=None) -> tuple[int, str]:
@@ -609,12 +609,8 @@ def build_targets(build: Path, targets: list[str], say=None) -> tuple[int, str]:
     command = ["cmake", "--build", str(build), "-j", JOBS, "--target", *targets]
     if say is None:
         return run(command, BUILD_TIMEOUT)
-    # make's dry run lists the compiles to come, once per target that needs them (-k: it
-    # stops at the version file, which is generated, not listed; the count then grows by one
-    # on the way).
-    _, planned = run(["cmake", "--build", str(build), "--target", *targets, "--", "-nk"], 120)
-    total = len(set(re.findall(r"Building CXX object (\S+?)\.o\b", planned)))
     first = not (build / "tests" / "raybook_check").exists()
+    total = len(planned_compiles(build, targets, first))
     if first and total:
         cores = int(JOBS)
         low, high = (max(1, round(total * s / cores / 60)) for s in CORE_SECONDS_PER_FILE)
@@ -640,6 +636,34 @@ def build_targets(build: Path, targets: list[str], say=None) -> tuple[int, str]:
             say(line)
 
     return run(command, BUILD_TIMEOUT, on_line=tell)
+
+
+def planned_compiles(build: Path, targets: list[str], first: bool) -> set[str]:
+    """The objects `cmake --build` of `targets` will compile. A first build compiles every
+    object of the targets and of all they depend on (CMake's Makefile2 lists each target's
+    dependencies as "A.dir/all: B.dir/all", each target's build.make its objects); a later
+    one what make's dry run lists (it names an object once per target that needs it)."""
+    found = r"Building CXX object (\S+?)\.o\b"
+    if not first:
+        _, planned = run(["cmake", "--build", str(build), "--target", *targets, "--", "-n"], 120)
+        return set(re.findall(found, planned))
+    graph = (build / "CMakeFiles" / "Makefile2").read_text(errors="replace")
+    needs = {}
+    for target, needed in re.findall(r"^(\S+\.dir)/all: (\S+\.dir)/all$", graph, re.M):
+        needs.setdefault(target, set()).add(needed)
+    folders = {f"{'tests/' * (t == 'raybook_check')}CMakeFiles/{t}.dir" for t in targets}
+    todo = list(folders)
+    while todo:
+        for needed in needs.get(todo.pop(), ()):
+            if needed not in folders:
+                folders.add(needed)
+                todo.append(needed)
+    compiles = set()
+    for folder in folders:
+        rules = build / folder / "build.make"
+        if rules.is_file():
+            compiles |= set(re.findall(found, rules.read_text(errors="replace")))
+    return compiles
 
 
 def compiled_what(object_path: str) -> str:
