@@ -67,22 +67,33 @@ mpi: mpi-deps configure
 # whole-book suites, make web installs emscripten and Chromium and builds rt as WebAssembly, and
 # make docs the pages with their live panels, which CMake, configured again, then tests), then the chapter
 # ladder the way a student climbs it (make chapterN for each N), which leaves ./rt the newest,
-# then the check that the tests notice every exercise region blanked, then the assignments'
-# round trip and grading (make test-assignments).
+# then the assignments' round trip and grading (make test-assignments). The round trip is also
+# the check that the tests notice every exercise region: each region's stub must redden its
+# row, and each blank, planted in the solved chapter, its own row. The mutation check (make
+# test-exercises) proves less with the same builds (a blank makes some test of the chapter
+# fail), so make test leaves it out.
 #
 # The loop after a change: the unit tests and golden images always run. The slower checks carry
 # content-hash stamps (tests/exercises/stamps.py, under BUILD/stamps/) and run again only when
-# the files they depend on changed: a chapter's mutation check, round trip and ladder rung when
+# the files they depend on changed: a chapter's round trip and ladder rung when
 # that chapter's own files, core or the tools changed; the whole-book CTest suites (scenes,
 # determinism, bad input, MPI, batch, docs) when anything outside the chapter modules changed.
 # A skipped check says so. FULL=1, and CI (CI=true), drop the stamps and run everything.
 FULL ?= $(if $(filter true,$(CI)),1)
 STAMPS_PY := python3 tests/exercises/stamps.py
+# Each stage says how long it took ("make test: the build took 212 s").
+STAGE_START = @date +%s >$(BUILD)/stage-start
+stage_took = @echo "make test: $(1) took $$(($$(date +%s) - $$(cat $(BUILD)/stage-start))) s"
 test: mpi-deps configure
 	cmake -S . -B $(BUILD) >/dev/null
+	$(STAGE_START)
 	cmake --build $(BUILD) -j $(JOBS)
+	$(call stage_took,the build)
 	$(if $(FULL),rm -rf $(BUILD)/stamps)
+	$(STAGE_START)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L 'unit|golden'
+	$(call stage_took,the unit tests and golden images)
+	$(STAGE_START)
 	@if $(STAMPS_PY) stale $(BUILD) suite suite; then \
 	  $(MAKE) --no-print-directory web docs && cmake -S . -B $(BUILD) >/dev/null && \
 	  (cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'unit|golden') && \
@@ -90,12 +101,18 @@ test: mpi-deps configure
 	else \
 	  echo "skip the whole-book CTest suites: nothing outside the chapter modules changed since they passed (make test FULL=1 runs them)"; \
 	fi
+	$(call stage_took,make web and docs and the whole-book suites)
+	$(STAGE_START)
 	LADDER_STAMPS=1 bash tests/ladder.sh "$(MAKE) --no-print-directory BUILD=$(BUILD)" $(BUILD) "$(CHAPTERS)"
-	python3 tests/exercises/regions.py mutate $(BUILD) --changed
+	$(call stage_took,the chapter ladder)
+	$(STAGE_START)
 	$(MAKE) --no-print-directory test-assignments ROUNDTRIP_STAMPS="--stamps $(BUILD)"
+	$(call stage_took,the assignments' round trip and grading)
 
 # The tests prove they can fail: each exercise region, blanked one at a time, must make one of
 # its chapter's tests fail (only the test program is rebuilt, and only that chapter's tests run).
+# Quicker than the round trip while writing a chapter's tests (regions.py mutate --only ID);
+# make test relies on the round trip, which checks this and more.
 test-exercises: configure
 	cmake --build $(BUILD) -j $(JOBS) --target raybook_tests
 	python3 tests/exercises/regions.py mutate $(BUILD)
@@ -140,10 +157,11 @@ test-assignments:
 	  echo "skip make grade's tests: nothing outside the chapter modules changed since they passed (make test FULL=1 runs them)"; \
 	fi
 
-# The same CTest suite (unit tests, golden images, determinism, bad input, scenes, batch,
-# interrupt, MPI) built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
-# folder (no benchmarks; the ladder is left out, since it rebuilds ./rt, and so are the two docs
-# tests, which run Doxygen and no raybook code). Any report fails its test:
+# The same CTest suite (unit tests, golden images, bad input, scenes, batch, interrupt, MPI)
+# built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder (no
+# benchmarks; the ladder is left out, since it rebuilds ./rt, and so are the two docs tests,
+# which run Doxygen and no raybook code, and the determinism and golden-all tests, which check
+# pictures the sanitizers cannot change, with code scenes_smoke runs there too). Any report fails its test:
 #   halt_on_error, -fno-sanitize-recover=all  the first report ends the program;
 #   exitcode=66                               ... with an exit code no test expects;
 #   detect_leaks=1                            LeakSanitizer checks the heap at exit;
@@ -157,8 +175,10 @@ SANITIZER_ENV  := ASAN_OPTIONS=halt_on_error=1:exitcode=66:detect_leaks=1:alloca
 test-sanitize: sanitize-build
 	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
 
-# The instrumented tree alone (make test-sanitize builds it first; .ci/run runs it after make
-# test, never beside it: the mutation check plants blanks in the source for a moment).
+# The instrumented tree alone (make test-sanitize builds it first; .ci/run builds it beside make
+# test at the lowest priority: make test leaves src/ as it is, its round trip plants stubs and
+# bugs in exported copies; make test-exercises, which plants them in src/, must not run beside
+# it).
 sanitize-build: deps
 	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DRB_SANITIZE=ON
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)

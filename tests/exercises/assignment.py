@@ -43,6 +43,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from pathlib import Path
 
@@ -554,12 +555,14 @@ def solve(args) -> int:
 
 # ---- Checking -------------------------------------------------------------------------------
 
-def run(command, timeout, cwd=None, env=None) -> tuple[int, str]:
+def run(command, timeout, cwd=None, env=None, on_line=None) -> tuple[int, str]:
     """Run a command; return its exit code (124 on timeout, -1 when it cannot start) and its
-    output."""
+    output. With `on_line`, each line of output is handed to it as it comes."""
     # A make started from inside another make must not inherit its job server.
     env = {k: v for k, v in (env or os.environ).items()
            if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    if on_line is not None:
+        return run_line_by_line(command, timeout, cwd, env, on_line)
     try:
         p = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            text=True, errors="replace", timeout=timeout, cwd=cwd, env=env)
@@ -569,6 +572,110 @@ def run(command, timeout, cwd=None, env=None) -> tuple[int, str]:
         return 124, out + f"\n(timed out after {timeout} s)"
     except OSError as e:  # the program is missing: its build failed, which is reported there
         return -1, f"cannot run {command[0]}: {e.strerror}"
+
+
+def run_line_by_line(command, timeout, cwd, env, on_line) -> tuple[int, str]:
+    """run() for a command whose output is shown while it runs."""
+    try:
+        p = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             text=True, errors="replace", cwd=cwd, env=env)
+    except OSError as e:
+        return -1, f"cannot run {command[0]}: {e.strerror}"
+    timed_out = threading.Event()
+    timer = threading.Timer(timeout, lambda: (timed_out.set(), p.kill()))
+    timer.start()
+    lines = []
+    try:
+        for line in p.stdout:
+            lines.append(line)
+            on_line(line.rstrip("\n"))
+        code = p.wait()
+    finally:
+        timer.cancel()
+    out = "".join(lines)
+    return (124, out + f"\n(timed out after {timeout} s)") if timed_out.is_set() else (code, out)
+
+
+# A first make check compiles every chapter up to the assignment's and its tests: chapter 17's
+# export, 114 files, took 11 to 28 minutes on a busy 2-core machine (issue 39; 16 minutes
+# under a load near 10 while this was written), about 12 to 30 seconds of one core per file.
+CORE_SECONDS_PER_FILE = (12, 30)
+
+
+def build_targets(build: Path, targets: list[str], say=None) -> tuple[int, str]:
+    """`cmake --build` of `targets`. With `say`, tell a student what is built, step by step:
+    "[12/57] building chapter 9: src/smooth_mesh/vertex_normals.cpp"; a first build says
+    once how long it will take."""
+    command = ["cmake", "--build", str(build), "-j", JOBS, "--target", *targets]
+    if say is None:
+        return run(command, BUILD_TIMEOUT)
+    first = not (build / "tests" / "raybook_check").exists()
+    total = len(planned_compiles(build, targets, first))
+    if first and total:
+        cores = int(JOBS)
+        low, high = (max(1, round(total * s / cores / 60)) for s in CORE_SECONDS_PER_FILE)
+        say(f"make check: the first build compiles {total} files (every chapter up to this "
+            f"one, and the tests) on {cores} core{'s' * (cores > 1)}: about "
+            f"{low} minutes, up to {high} on a busy machine. Later checks compile only what "
+            f"changed.")
+    done = 0
+
+    def tell(line: str) -> None:
+        nonlocal done, total
+        # Under a make whose output is a terminal (make check), CMake colours its lines.
+        line = re.sub(r"\x1b\[[0-9;]*m", "", line)
+        compiled = re.search(r"Building CXX object (\S+?)\.o$", line)
+        linked = re.search(r"Linking CXX (?:executable|static library) (\S+)$", line)
+        if compiled:
+            done += 1
+            total = max(total, done)
+            say(f"[{done}/{total}] building {compiled_what(compiled.group(1))}")
+        elif linked:
+            say(f"        linking {Path(linked.group(1)).name}")
+        elif re.search(r"error|Error \d", line):
+            say(line)
+
+    return run(command, BUILD_TIMEOUT, on_line=tell)
+
+
+def planned_compiles(build: Path, targets: list[str], first: bool) -> set[str]:
+    """The objects `cmake --build` of `targets` will compile. A first build compiles every
+    object of the targets and of all they depend on (CMake's Makefile2 lists each target's
+    dependencies as "A.dir/all: B.dir/all", each target's build.make its objects); a later
+    one what make's dry run lists (it names an object once per target that needs it)."""
+    found = r"Building CXX object (\S+?)\.o\b"
+    if not first:
+        _, planned = run(["cmake", "--build", str(build), "--target", *targets, "--", "-n"], 120)
+        return set(re.findall(found, planned))
+    graph = (build / "CMakeFiles" / "Makefile2").read_text(errors="replace")
+    needs = {}
+    for target, needed in re.findall(r"^(\S+\.dir)/all: (\S+\.dir)/all$", graph, re.M):
+        needs.setdefault(target, set()).add(needed)
+    folders = {f"{'tests/' * (t == 'raybook_check')}CMakeFiles/{t}.dir" for t in targets}
+    todo = list(folders)
+    while todo:
+        for needed in needs.get(todo.pop(), ()):
+            if needed not in folders:
+                folders.add(needed)
+                todo.append(needed)
+    compiles = set()
+    for folder in folders:
+        rules = build / folder / "build.make"
+        if rules.is_file():
+            compiles |= set(re.findall(found, rules.read_text(errors="replace")))
+    return compiles
+
+
+def compiled_what(object_path: str) -> str:
+    """An object file named as a student reads it: "chapter 9: src/smooth_mesh/normals.cpp",
+    "the tests: tests/ch17_media.cpp"."""
+    target, _, source = object_path.partition(".dir/")
+    chapter = re.search(r"rb_ch(\d+)$", target)
+    if chapter:
+        return f"chapter {int(chapter.group(1))}: {source}"
+    if target.endswith("raybook_check"):
+        return f"the tests: tests/{source}"
+    return source
 
 
 def catch_escape(name: str) -> str:
@@ -622,11 +729,12 @@ def configured(build: Path, project: Path, launcher: str | None) -> bool:
             and (given.group(1) if given else None) == launcher)
 
 
-def check_project(project: Path, build: Path, quiet: bool = False, golden: bool = True,
+def check_project(project: Path, build: Path, golden: bool = True,
                   others: bool = True, rows: set[int] | None = None,
-                  fail_fast: bool = False) -> dict:
+                  fail_fast: bool = False, say=None) -> dict:
     """Build and check one exported project; return its results (never raises on a student's
-    failure: a build failure is a result). Without `golden` the chapter's binary is neither
+    failure: a build failure is a result). With `say`, each step is told as it starts (make
+    check: a student must see it work). Without `golden` the chapter's binary is neither
     built nor rendered, without `others` the untagged tests are not run; only the exercise
     rows in `rows` (indices from 0) are run when it is given, the others are "not run"; with
     `fail_fast` a row stops at its first failing test (its verdict is the same). The round
@@ -636,6 +744,7 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     result = {"project": str(project), "chapter": n, "build": "ok", "build_log": "",
               "exercises": [], "golden": {"status": "not run", "metric": "", "report": ""}}
     build.mkdir(parents=True, exist_ok=True)
+    started = time.monotonic()
     configure = ["cmake", "-S", str(project), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"]
     launcher = os.environ.get("RB_COMPILER_LAUNCHER")
     if launcher:
@@ -643,11 +752,16 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     # A build folder already configured for this project needs no second configure (2 s each
     # time): `cmake --build` configures again by itself when a CMakeLists.txt or a globbed
     # folder changed.
-    code, out = (0, "") if configured(build, project, launcher) else run(configure, 300)
+    tell = say or (lambda _: None)
+    if configured(build, project, launcher):
+        code, out = 0, ""
+    else:
+        tell(f"make check: configuring the build in {build}")
+        code, out = run(configure, 300)
     if code == 0:
+        # Chapter N's tests and, for the golden image, its rt: nothing else of the project.
         targets = ["raybook_check"] + ([f"rt_ch{n}"] if golden else [])
-        code, out = run(["cmake", "--build", str(build), "-j", JOBS, "--target", *targets],
-                        BUILD_TIMEOUT)
+        code, out = build_targets(build, targets, say)
     if code != 0:
         result["build"] = "timed out" if code == 124 else "failed"
         errors = [l for l in out.split("\n") if "error" in l.lower()]
@@ -656,6 +770,8 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
             result["exercises"].append({**e, "tests": 0, "passed": 0, "status": "no build",
                                         "failures": []})
         return result
+    result["seconds"] = {"build": time.monotonic() - started}
+    started = time.monotonic()
     program = build / "tests" / "raybook_check"
     tagged = set()
     for k, e in enumerate(info["exercises"]):
@@ -666,6 +782,8 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
             result["exercises"].append({**e, "spec": spec, "tests": len(names), "passed": 0,
                                         "status": "not run", "failures": []})
             continue
+        tell(f"make check: exercise {e['name']}: running its {len(names)} "
+             f"test{'s' * (len(names) != 1)}")
         tests = run_tests(program, names, project, fail_fast)
         passed = sum(t["passed"] for t in tests)
         status = "pass" if names and passed == len(names) else "fail"
@@ -675,11 +793,15 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
     # The chapter's other tests (those that need no exercise of the chapter).
     if others:
         rest = [t for t in list_tests(program, f"[ch{n:02d}]") if t not in tagged]
+        tell(f"make check: chapter {n}'s other tests ({len(rest)})")
         tests = run_tests(program, rest, project)
         result["others"] = {"tests": len(rest), "passed": sum(t["passed"] for t in tests),
                             "failures": [t for t in tests if not t["passed"]]}
+    result["seconds"]["tests"] = time.monotonic() - started
+    started = time.monotonic()
     # The golden image.
     if golden and info.get("scene"):
+        tell(f"make check: rendering {Path(info['scene']).name} for the golden image")
         report = build / "golden-report"
         code, out = run(["bash", str(project / "tests/golden/run_golden.sh"),
                          str(build / f"rt_ch{n}"), info["scene"], str(project / "golden"),
@@ -691,6 +813,7 @@ def check_project(project: Path, build: Path, quiet: bool = False, golden: bool 
         result["golden"] = {"status": "pass" if code == 0 else "fail", "scene": name,
                             "metric": m.group(1) if m else "", "output": out.strip()[-1500:],
                             "report": str(html) if code != 0 and html.exists() else ""}
+    result["seconds"]["golden"] = time.monotonic() - started
     return result
 
 
@@ -737,7 +860,8 @@ def check(args) -> int:
         sys.exit(f"check: {project} is not an exported assignment (no {INFO}); "
                  "make one with make assignment N")
     build = Path(args.build).resolve() if args.build else project / "build"
-    result = check_project(project, build)
+    result = check_project(project, build, say=lambda line: print(line, flush=True))
+    print()
     print(table(result))
     for e in result["exercises"]:
         for t in e.get("failures", [])[:1]:
@@ -1084,6 +1208,17 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
                    stdout=subprocess.DEVNULL)
     regions = [r for r in rg.find_regions(ROOT) if r.chapter == n]
     problems, log = [], []
+    spent = {"build": 0.0, "tests": 0.0, "golden": 0.0}
+
+    def check_project(*args, **kwargs) -> dict:  # the module's, adding up where time goes
+        result = globals()["check_project"](*args, **kwargs)
+        for what, seconds in result.get("seconds", {}).items():
+            spent[what] += seconds
+        return result
+
+    def spent_line() -> str:
+        return "time: " + ", ".join(f"{what} {s:.0f} s" for what, s in spent.items())
+
     result = check_project(project, build, golden=False, others=False, fail_fast=True)
     problems += step_problems(result, 0, "stubbed")
     log.append(f"stubbed {rows_line(result)}")
@@ -1103,7 +1238,7 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
         log.append(f"1..{r.name} {rows_line(result)}" +
                    (f", golden {result['golden']['status']}" if last else ""))
     if not bugs:
-        return problems, "; ".join(log)
+        return problems, "; ".join(log + [spent_line()])
     program = build / "tests" / "raybook_check"
     for r in regions:
         if r.blank is None:
@@ -1117,7 +1252,7 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
         red = [e["name"] for e in result["exercises"] if e["status"] != "pass"]
         log.append(f"bug {r.name}: red {' '.join(red) or 'none'}")
         solve_regions(project, {r.id})
-    return problems, "; ".join(log)
+    return problems, "; ".join(log + [spent_line()])
 
 
 def roundtrip(args) -> int:

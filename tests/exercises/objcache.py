@@ -4,7 +4,7 @@ CMAKE_CXX_COMPILER_LAUNCHER: `objcache.py c++ ARGS... -o OBJ -c SOURCE`.
 
 The round trip exports chapter after chapter into the same folders and builds them there. Most
 translation units do not change from one chapter to the next, but an export rewrites some files
-with the same text, and some flags change (feature.cpp is compiled with -DRB_NEWEST_CHAPTER=N).
+with the same text, and some flags change from one project to the next.
 This launcher keys each object on the compiler, the flags that are not -D definitions (their
 effect is in the preprocessed text) and the preprocessed source, and copies a cached object
 (with its dependency file) instead of compiling when the key is known. The cache folder is
