@@ -65,6 +65,17 @@ std::vector<rb::Photon> directPhotons(const rb::World& world, std::uint64_t phot
     return rb::tracePhotons(world.scene, rb::PhotonScattering::of(world.pipeline), trace, counters);
 }
 
+/// The furnace: a point light of intensity 1 at the centre of a sphere of radius 1 and albedo
+/// 0.5, seen from inside (every photon lands on it, and each bounce keeps ρ).
+const char* kFurnace = R"(
+local shell = gr.sphere('shell')
+shell:set_material(gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 1))
+local root = gr.node('root')
+root:add_child(shell)
+gr.render(root, 'x.png', 16, 16, {0, 0, 0.5}, {0, 0, -1}, {0, 1, 0}, 50, {0, 0, 0},
+          {gr.light({0, 0, 0}, {1, 1, 1}, {0, 0, 1})})
+)";
+
 /// The irradiance a point light of intensity 1 at height h delivers at distance ρ from the
 /// foot of its perpendicular on a plane: E = I·cosθ/d² = h/(h² + ρ²)^(3/2).
 double pointLightIrradiance(double h, double rho) {
@@ -146,15 +157,7 @@ SCENARIO("the progressive radius shrinks as a product of Gamma functions", "[ch1
 SCENARIO("inside a closed diffuse sphere the indirect light is the geometric series", "[ch16]") {
     GIVEN("a point light of intensity 1 at the centre of a sphere of radius 1 and albedo 0.5") {
         // The sphere is seen from inside: every photon lands on it, and each bounce keeps ρ.
-        const char* furnace = R"(
-local shell = gr.sphere('shell')
-shell:set_material(gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 1))
-local root = gr.node('root')
-root:add_child(shell)
-gr.render(root, 'x.png', 16, 16, {0, 0, 0.5}, {0, 0, -1}, {0, 1, 0}, 50, {0, 0, 0},
-          {gr.light({0, 0, 0}, {1, 1, 1}, {0, 0, 1})})
-)";
-        const auto world = rbtest::worldFromLua(furnace, rbtest::chapters(16));
+        const auto world = rbtest::worldFromLua(kFurnace, rbtest::chapters(16));
         WHEN("32 passes of 4000 photons each keep the photons after a diffuse bounce") {
             std::vector<double> totals;
             for (int pass = 0; pass < 32; ++pass) {
@@ -193,16 +196,9 @@ SCENARIO("a final gather inside a closed diffuse sphere measures the geometric s
          "[ch16]") {
     GIVEN("a point light of intensity 1 at the centre of a sphere of radius 1 and albedo 0.5, "
           "seen from inside, 8 passes of 4000 indirect photons and 16 gather rays a pixel") {
-        const char* furnace = R"(
-gr.photons{indirect = true, caustics = false, count = 4000, passes = 8, radius = 0.2,
-           gather = 16}
-local shell = gr.sphere('shell')
-shell:set_material(gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 1))
-local root = gr.node('root')
-root:add_child(shell)
-gr.render(root, 'x.png', 48, 48, {0, 0, 0.5}, {0, 0, -1}, {0, 1, 0}, 50, {0, 0, 0},
-          {gr.light({0, 0, 0}, {1, 1, 1}, {0, 0, 1})})
-)";
+        const std::string furnace = "gr.photons{indirect = true, caustics = false, count = 4000, "
+                                    "passes = 8, radius = 0.2, gather = 16}\n" +
+                                    std::string(kFurnace);
         const auto world = rbtest::worldFromLua(furnace, rbtest::chapters(16));
         WHEN("every pixel gathers from its own random stream") {
             rb::RayCounters counters;

@@ -24,9 +24,9 @@ namespace {
 /// probability).
 constexpr int kMaxSpecularBounces = 8;
 
-/// The gather rays that read the maps: one in kMapEvery, each counting kMapEvery times. The
-/// direct light, which every ray measures, is most of what comes back; the maps' density
-/// estimates cost the most (three quarters of the time when every ray read them).
+/// The gather rays that read the indirect map: one in kMapEvery, each counting kMapEvery
+/// times. The direct light, which every ray measures, is most of what comes back; the map's
+/// density estimates cost the most (three quarters of the time when every ray read it).
 constexpr int kMapEvery = 4;
 
 /// A gather ray shorter than this many of the indirect map's radii does not read the map where
@@ -122,8 +122,10 @@ Colour PhotonMapping::gatherRadiance(const ShadeContext& ctx, Ray ray, std::size
                 const ShadeContext direct{ctx.scene,     ctx.integrator, ctx.sampler, ctx.counters,
                                           ctx.depth + 1, media,          ctx.weight,  false};
                 Colour e = pipeline.surface(direct, ray, white);
+                // Its caustic, by every ray: a bright caustic is a small, strong source seen
+                // by few rays, and a quarter of them at four times the weight would speckle.
+                e += caustics_.passIrradiance(y.p, ny, settings_.nearest, pass);
                 if (mapWeight > 0.0) {
-                    e += mapWeight * caustics_.passIrradiance(y.p, ny, settings_.nearest, pass);
                     // Step 1a: the indirect light at y: the map, unless y is so close that
                     // the map's disc there may hang over an edge; then one more diffuse
                     // bounce, cosine-weighted, whose gather reads every map.

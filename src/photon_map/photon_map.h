@@ -90,7 +90,8 @@ class PhotonMapping final : public ShadingTerm, public PrePass {
     PhotonScattering scattering_;  ///< What surfaces do to photons, and to gather rays.
     /// The light a final gather ray brings back (π L in A4's units): followed through mirrors
     /// and glass to each diffuse surface, where the direct light counts in full and the maps,
-    /// pass `pass`, count `mapWeight` times (0: not read); a ray shorter than the map's radius
+    /// pass `pass`, count (the caustic map once, the indirect map `mapWeight` times, 0: not
+    /// read); a ray shorter than the indirect map's radius
     /// times kShortGather continues one diffuse bounce instead of reading the indirect map, at
     /// most `bounces` times.
     Colour gatherRadiance(const ShadeContext& ctx, Ray ray, std::size_t pass, double mapWeight,

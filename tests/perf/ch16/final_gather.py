@@ -24,6 +24,10 @@ RT is a binary with chapters 16 and 18 (rt_ch18). What it measures:
   wall clock. Also the render phase of --stats (the photon passes included) on all cores, the
   fastest of the rounds.
 
+--pair FILE writes the chapter's own scene (with its balls) at --size, seed 1, read directly
+(left) and gathered (right), side by side, as an 8-bit PNG: the page's figure
+(docs/charts/ch16-gather-pair.png).
+
 Each configuration is a name and rt's arguments; the default ones are the direct read at the
 chapter's defaults (today's picture, --photon-gather 0) and the final gather at the chapter's
 defaults. Prints one Markdown table row per configuration.
@@ -32,8 +36,10 @@ import argparse
 import os
 import re
 import resource
+import struct
 import subprocess
 import sys
+import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
@@ -102,6 +108,22 @@ def cpu_seconds(rt, scene, size, args):
     return after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
 
 
+def write_pair(left, right, out):
+    """Two PNGs of one size side by side, 4 white pixels apart."""
+    a, b = read_png(left), read_png(right)
+    w, h = a[0], a[1]
+    rows = [bytes(a[3][y][:w * 3]) + b"\xff" * 12 + bytes(b[3][y][:w * 3]) for y in range(h)]
+    raw = b"".join(b"\x00" + r for r in rows)
+
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data +
+                struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff))
+    with open(out, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" +
+                chunk(b"IHDR", struct.pack(">IIBBBBB", 2 * w + 4, h, 8, 2, 0, 0, 0)) +
+                chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("rt")
@@ -114,6 +136,7 @@ def main():
     ap.add_argument("--scene", choices=["box", "balls"], default="box",
                     help="box: without the balls, against the path-traced reference; balls: "
                          "the chapter's own scene, timed only")
+    ap.add_argument("--pair", help="write the direct read and the gather side by side here")
     o = ap.parse_args()
     os.makedirs(o.data, exist_ok=True)
     # Step 1: the scenes, photons switched on by the scene as the chapter's does.
@@ -124,6 +147,13 @@ def main():
     scene = os.path.join(o.data, o.scene + ".lua")
     with open(scene, "w") as f:
         f.write(no_balls if o.scene == "box" else source)
+    if o.pair:
+        chapter = os.path.join(ROOT, "scenes", "chapter16-photon-mapping.lua")
+        sides = [os.path.join(o.data, "pair-direct.png"), os.path.join(o.data, "pair-gather.png")]
+        for side, args in zip(sides, [["--photon-gather", "0"], []]):
+            render(o.rt, chapter, side, o.size, args + ["--seed", "1"])
+        write_pair(sides[0], sides[1], o.pair)
+        return
     # Step 2: the reference, path traced (no photons: the scene's gr.photons is ignored by the
     # path tracer, which draws every path itself).
     ref = os.path.join(o.data, f"ref-{o.scene}-{o.size}-{o.ref_spp}.png")
