@@ -192,13 +192,14 @@ SCENARIO("inside a closed diffuse sphere the indirect light is the geometric ser
 // [furnace]
 
 // [gather-furnace]
-SCENARIO("a final gather inside a closed diffuse sphere measures the geometric series",
-         "[ch16]") {
-    GIVEN("a point light of intensity 1 at the centre of a sphere of radius 1 and albedo 0.5, "
-          "seen from inside, 8 passes of 4000 indirect photons and 16 gather rays a pixel") {
-        const std::string furnace = "gr.photons{indirect = true, caustics = false, count = 4000, "
-                                    "passes = 8, radius = 0.2, gather = 16}\n" +
-                                    std::string(kFurnace);
+SCENARIO("a final gather inside a closed diffuse sphere measures the geometric series", "[ch16]") {
+    GIVEN(
+        "a point light of intensity 1 at the centre of a sphere of radius 1 and albedo 0.5, "
+        "seen from inside, 8 passes of 4000 indirect photons and 16 gather rays a pixel") {
+        const std::string furnace =
+            "gr.photons{indirect = true, caustics = false, count = 4000, "
+            "passes = 8, radius = 0.2, gather = 16}\n" +
+            std::string(kFurnace);
         const auto world = rbtest::worldFromLua(furnace, rbtest::chapters(16));
         WHEN("every pixel gathers from its own random stream") {
             rb::RayCounters counters;
@@ -265,12 +266,11 @@ SCENARIO("the final gather gives the same bits on one thread and on two", "[ch16
             const auto two = rbtest::worldFromLua(lua, rbtest::chapters(16));
             THEN(std::string("the images are identical (") + gather + ")") {
                 rb::RayCounters c1, c2;
-                CHECK(rbtest::bitIdentical(rbtest::renderAt(*one, 40, 40, {.threads = 1}, c1),
-                                           rbtest::renderAt(*two, 40, 40,
-                                                            {.threads = 2,
-                                                             .shouldStop =
-                                                                 rbtest::bothThreadsTakeTiles()},
-                                                            c2)));
+                CHECK(rbtest::bitIdentical(
+                    rbtest::renderAt(*one, 40, 40, {.threads = 1}, c1),
+                    rbtest::renderAt(*two, 40, 40,
+                                     {.threads = 2, .shouldStop = rbtest::bothThreadsTakeTiles()},
+                                     c2)));
             }
         }
     }
