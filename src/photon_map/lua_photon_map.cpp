@@ -1,7 +1,7 @@
 // Chapter 16's Lua: photon mapping for the renders requested after the call.
 //
 //   gr.photons{count = 20000, passes = 16, radius = 0.05, alpha = 2/3,
-//              method = 'progressive', k = 0, caustics = true, indirect = false}
+//              method = 'progressive', k = 0, caustics = true, indirect = false, gather = 32}
 //       count:    photons emitted per pass, for each map
 //       passes:   passes; each traces new photons and gathers with a smaller radius
 //       radius:   the first pass's gather radius (default: from the pixel footprint)
@@ -10,6 +10,8 @@
 //       k:        gather only the k nearest photons within each pass's radius (0: all of them)
 //       caustics: keep a caustic map (light focused by mirrors and glass)
 //       indirect: keep an indirect map (colour bleeding); it replaces the ambient term
+//       gather:   final gather rays for the indirect light at each visible point; 0 reads the
+//                 indirect map there directly (blotchy, but cheaper)
 //   gr.photons{} switches photon mapping on with every default.
 #include <cmath>
 #include <string>
@@ -27,16 +29,18 @@ namespace {
 constexpr const char* kNumberFields[][2] = {{"count", "photon_count"},
                                             {"passes", "photon_passes"},
                                             {"radius", "photon_radius"},
-                                            {"k", "photon_nearest"}};
+                                            {"k", "photon_nearest"},
+                                            {"gather", "photon_gather"}};
 constexpr const char* kBoolFields[][2] = {{"caustics", "photon_caustics"},
                                           {"indirect", "photon_indirect"}};
 
 // [lua-photons]
-/// gr.photons{count=, passes=, radius=, alpha=, method=, k=, caustics=, indirect=}.
+/// gr.photons{count=, passes=, radius=, alpha=, method=, k=, caustics=, indirect=, gather=}.
 int grPhotons(lua_State* L) {
     const char* usage =
         "gr.photons expects one table {count =, passes =, radius =, alpha =, method = "
-        "'progressive' | 'classic', k =, caustics = true | false, indirect = true | false}";
+        "'progressive' | 'classic', k =, caustics = true | false, indirect = true | false, "
+        "gather =}";
     if (lua_gettop(L) != 1 || lua_type(L, 1) != LUA_TTABLE) throw InputError(usage);
     // Only known fields: a typo would otherwise be ignored.
     lua_pushnil(L);
@@ -44,12 +48,13 @@ int grPhotons(lua_State* L) {
         lua_pop(L, 1);
         const std::string key = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "?";
         const bool known = key == "alpha" || key == "method" || key == "count" || key == "passes" ||
-                           key == "radius" || key == "k" || key == "caustics" || key == "indirect";
+                           key == "radius" || key == "k" || key == "caustics" ||
+                           key == "indirect" || key == "gather";
         if (!known) {
             lua_pop(L, 1);
             throw InputError("gr.photons: unknown field '" + key +
                              "' (known: count, passes, radius, alpha, method, k, caustics, "
-                             "indirect)");
+                             "indirect, gather)");
         }
     }
     for (const auto& [field, option] : kNumberFields) {
@@ -105,6 +110,7 @@ void bindPhotonMap(LuaBindings& lua) {
     lua.option("photon_nearest", 16, 0, 1e6, true);
     lua.option("photon_caustics", 16, 0, 1, true);
     lua.option("photon_indirect", 16, 0, 1, true);
+    lua.option("photon_gather", 16, 0, 65536, true);
 }
 
 }  // namespace rb

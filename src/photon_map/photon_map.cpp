@@ -8,8 +8,8 @@
 #include "core/error.h"
 #include "core/material.h"
 #include "core/render_context.h"
-#include "phong/phong.h"
 #include "lab/warp.h"
+#include "phong/phong.h"
 
 namespace rb {
 
@@ -51,6 +51,7 @@ PhotonSettings photonSettings(const RenderContext& context) {
     s.nearest = static_cast<int>(context.sceneOption("photon_nearest", 0.0));
     s.caustics = context.sceneOption("photon_caustics", 1.0) != 0.0;
     s.indirect = context.sceneOption("photon_indirect", 0.0) != 0.0;
+    s.gather = static_cast<int>(context.sceneOption("photon_gather", s.gather));
     // The command line overrides it; --photons alone switches photon mapping on.
     if (!context.cliOption("photons").empty()) s.on = true;
     s.photons = static_cast<std::uint64_t>(
@@ -58,6 +59,7 @@ PhotonSettings photonSettings(const RenderContext& context) {
     s.passes = static_cast<int>(cliNumber(context, "photon-passes", 1, 100000, true, s.passes));
     s.radius = cliNumber(context, "photon-radius", 1e-12, 1e12, false, s.radius);
     s.alpha = cliNumber(context, "photon-alpha", 1e-6, 1.0 - 1e-6, false, s.alpha);
+    s.gather = static_cast<int>(cliNumber(context, "photon-gather", 0, 65536, true, s.gather));
     return s;
 }
 // [photon-settings]
@@ -100,6 +102,19 @@ Colour PhotonPasses::irradiance(const Vec3& x, const Vec3& n, int nearest) const
 }
 // [irradiance]
 
+Colour PhotonPasses::passIrradiance(const Vec3& x, const Vec3& n, int nearest,
+                                    std::size_t pass) const {
+    if (grids.empty()) return Colour(0.0);
+    const PhotonGrid& grid = grids[pass % grids.size()];
+    if (nearest > 0) {
+        double r2 = 0.0;
+        const Colour flux = grid.gatherNearest(x, n, nearest, r2);
+        return r2 > 0.0 ? irradianceEstimate(flux, std::sqrt(r2)) : Colour(0.0);
+    }
+    const double r = radii[pass % grids.size()];
+    return irradianceEstimate(grid.gatherFlux(x, n, r), r);
+}
+
 // [photon-term]
 Colour PhotonMapping::apply(const ShadeContext& ctx, const Ray& ray, const Hit& hit,
                             const Colour& colour) const {
@@ -113,7 +128,11 @@ Colour PhotonMapping::apply(const ShadeContext& ctx, const Ray& ray, const Hit& 
     // The gather looks at the side the ray sees.
     const Vec3 n = faceForward(hit.ns, -ray.d);
     Colour e = caustics_.irradiance(hit.p, n, settings_.nearest);
-    e += indirect_.irradiance(hit.p, n, settings_.nearest);
+    // The indirect light: a final gather over the hemisphere, or the map read right here.
+    if (settings_.gather > 0 && !indirect_.grids.empty())
+        e += gatherIrradiance(ctx, hit, n, settings_.gather);
+    else
+        e += indirect_.irradiance(hit.p, n, settings_.nearest);
     return colour + (1.0 - std::clamp(transparency, 0.0, 1.0)) * m.kd * e;
 }
 // [photon-term]
@@ -155,6 +174,7 @@ double pixelFootprint(const Scene& scene, const PrePassContext& ctx) {
 void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PrePassContext& ctx) {
     const auto start = std::chrono::steady_clock::now();
     const PhotonScattering scattering = PhotonScattering::of(pipeline);
+    scattering_ = scattering;
     glass_ = scattering.refraction != nullptr;
     // Step 1: the first radius, from the pixel footprint unless the scene gave one.
     const double footprint = pixelFootprint(scene, ctx);
@@ -244,7 +264,12 @@ std::string PhotonMapping::statistics() const {
     char head[96];
     std::snprintf(head, sizeof head, "photons    %d passes of %llu in %.3f s", settings_.passes,
                   static_cast<unsigned long long>(settings_.photons), seconds_);
-    return head + map("caustic", caustics_) + map("indirect", indirect_);
+    std::string gather;
+    if (!indirect_.grids.empty())
+        gather = settings_.gather > 0
+                     ? "; final gather " + std::to_string(settings_.gather) + " rays"
+                     : "; indirect map read directly";
+    return head + map("caustic", caustics_) + map("indirect", indirect_) + gather;
 }
 
 namespace {
@@ -281,7 +306,11 @@ Feature photonMapFeature() {
               "the scene's, else 16"},
              {"photon-radius", "R", "the first pass's gather radius, in scene units",
               "the scene's, else 3 (caustics) or 12 (indirect) pixel footprints"},
-             {"photon-alpha", "A", "radius shrink per pass, in (0, 1)", "the scene's, else 2/3"}},
+             {"photon-alpha", "A", "radius shrink per pass, in (0, 1)", "the scene's, else 2/3"},
+             {"photon-gather", "N",
+              "final gather rays for the indirect light at each visible point (0: read the "
+              "indirect map there directly)",
+              "the scene's, else 32"}},
             {},
             photonEmissionWarps};
 }

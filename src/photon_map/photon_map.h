@@ -18,6 +18,9 @@ namespace rb {
 
 struct RenderContext;
 
+/// Final gather rays per visible point when the scene does not say (see ch16-gather).
+inline constexpr int kDefaultGatherRays = 32;
+
 /// What a render asks of the photon maps: gr.photons{...}, then --photons and friends.
 struct PhotonSettings {
     bool on = false;                ///< The scene called gr.photons, or --photons was given.
@@ -29,6 +32,9 @@ struct PhotonSettings {
     int nearest = 0;           ///< k > 0: only the k nearest photons within each radius.
     bool caustics = true;      ///< Keep a caustic map (L S+ D).
     bool indirect = false;     ///< Keep an indirect map (L (S|D)* D D); drops the ambient term.
+    /// Final gather rays at each visible diffuse point for the indirect light; 0: read the
+    /// indirect map there directly.
+    int gather = kDefaultGatherRays;
 };
 
 /// The settings of one render: the scene's gr.photons, overridden by the command line.
@@ -51,6 +57,9 @@ struct PhotonPasses {
     /// The irradiance at x on the side the unit normal n faces: the mean over the passes of
     /// each pass's estimate (k nearest: within the radius of the k-th).
     Colour irradiance(const Vec3& x, const Vec3& n, int nearest) const;
+    /// The same from one pass alone: an unbiased estimate of irradiance() when the pass is
+    /// drawn uniformly. Zero for a map with no passes.
+    Colour passIrradiance(const Vec3& x, const Vec3& n, int nearest, std::size_t pass) const;
 };
 
 /// Chapter 16's shading term and pre-pass: before the render it traces the photons of every
@@ -65,6 +74,11 @@ class PhotonMapping final : public ShadingTerm, public PrePass {
                  const Colour& colour) const override;
     void run(const Scene& scene, const Pipeline& pipeline, const PrePassContext& ctx) override;
     std::string statistics() const override;
+    /// The final gather at a visible diffuse point (hit, normal n facing the viewer): the
+    /// irradiance of the light that reached it after at least one diffuse bounce, the indirect
+    /// map's share, as the mean over `rays` cosine-weighted rays of what each ray sees (see
+    /// final_gather.cpp).
+    Colour gatherIrradiance(const ShadeContext& ctx, const Hit& hit, const Vec3& n, int rays) const;
 
     const PhotonPasses& caustics() const { return caustics_; }  ///< The caustic map.
     const PhotonPasses& indirect() const { return indirect_; }  ///< The indirect map.
@@ -73,6 +87,15 @@ class PhotonMapping final : public ShadingTerm, public PrePass {
     PhotonSettings settings_;
     std::string where_;  ///< The gr.render call, for messages.
     PhotonPasses caustics_, indirect_;
+    PhotonScattering scattering_;  ///< What surfaces do to photons, and to gather rays.
+    /// The light a final gather ray brings back (π L in A4's units): followed through mirrors
+    /// and glass to each diffuse surface, where the direct light counts in full and the maps,
+    /// pass `pass`, count (the caustic map once, the indirect map `mapWeight` times, 0: not
+    /// read); a ray shorter than the indirect map's radius
+    /// times kShortGather continues one diffuse bounce instead of reading the indirect map, at
+    /// most `bounces` times.
+    Colour gatherRadiance(const ShadeContext& ctx, Ray ray, std::size_t pass, double mapWeight,
+                          int bounces) const;
     bool glass_ = false;  ///< Chapter 5 is on: transparent materials are glass, not diffuse.
     double seconds_ = 0.0;
 };

@@ -37,6 +37,12 @@ double PhotonScattering::causticShare(const Material& m) const {
     return m.param("caustics", 1.0) != 0.0 ? specularShare(m) : 0.0;
 }
 
+bool PhotonScattering::spread(const Material& m, const Vec3& side, Sampler& sampler,
+                              Vec3& direction) const {
+    if (!lobe || lobe->sampleCount(m) == 0) return true;
+    return lobe->sample(m, direction, side, sampler, direction);
+}
+
 double PhotonScattering::specularShare(const Material& m) const {
     // The shares tracePhoton's Russian roulette uses: glass takes τ; of the opaque rest, a
     // mirror takes reflect / max(1, reflect + mean(kd)).
@@ -273,14 +279,6 @@ bool keeps(PhotonPaths paths, bool specular, int diffuse) {
     return false;
 }
 
-/// Spread a specular direction into chapter 7's lobe, when the material is glossy there.
-/// Returns false when the lobe's sample falls below the surface: the photon is absorbed.
-bool spread(const PhotonScattering& s, const Material& m, const Vec3& side, Sampler& sampler,
-            Vec3& direction) {
-    if (!s.lobe || s.lobe->sampleCount(m) == 0) return true;
-    return s.lobe->sample(m, direction, side, sampler, direction);
-}
-
 // [trace-photon]
 /// Follow one photon from its light, storing it where the map keeps it.
 void tracePhoton(const Scene& scene, const PhotonScattering& s, PhotonPaths paths,
@@ -350,14 +348,14 @@ void tracePhoton(const Scene& scene, const PhotonScattering& s, PhotonPaths path
                 side = -incident;
                 media = split.media.beyond;
             }
-            if (!spread(s, m, side, sampler, direction)) return;
+            if (!s.spread(m, side, sampler, direction)) return;
             specular = true;
         } else {
             // The opaque part: u, rescaled to [0, scale), picks mirror, diffuse or absorbed.
             const double v = (u - transparency) / (1.0 - transparency) * scale;
             if (v < mirror) {
                 direction = glm::normalize(reflect(d, faceForward(hit.ns, -d)));
-                if (!spread(s, m, side, sampler, direction)) return;
+                if (!s.spread(m, side, sampler, direction)) return;
                 flux *= scale;
                 specular = true;
             } else if (v < mirror + scatter) {

@@ -39,6 +39,10 @@ struct PhotonScattering {
     /// The same for caustic paths: 0 where the material says `caustics = false` (a faint,
     /// broad mirror such as a polished floor, whose caustic is a dim glow, not a focus).
     double causticShare(const Material& m) const;
+    /// Spread a specular direction into chapter 7's lobe, when the material is glossy there.
+    /// Returns false when the lobe's sample falls below the surface (side: the normal of the
+    /// side the direction must leave towards): the particle is absorbed.
+    bool spread(const Material& m, const Vec3& side, Sampler& sampler, Vec3& direction) const;
 };
 
 /// One pass of one map.
