@@ -10,6 +10,23 @@
 
 namespace rb {
 
+namespace {
+
+/// The command line's whole number --`name`, checked to lie in [lo, hi]; `fallback` when the
+/// option is not given.
+int wholeOption(const RenderContext& context, const std::string& name, long lo, long hi,
+                int fallback) {
+    const std::string text = context.cliOption(name);
+    if (text.empty()) return fallback;
+    const double n = parseNumberOption("--" + name, text);
+    if (!(n >= lo && n <= hi && n == std::floor(n)))
+        throw InputError("--" + name + ": expected a whole number from " + std::to_string(lo) +
+                         " to " + std::to_string(hi) + ", got " + text);
+    return static_cast<int>(n);
+}
+
+}  // namespace
+
 MediaSettings mediaSettings(const RenderContext& context) {
     MediaSettings s;
     const std::string method = context.cliOption("media", "track");
@@ -33,14 +50,7 @@ MediaSettings mediaSettings(const RenderContext& context) {
     else
         throw InputError("--media-direct: expected 'mis', 'flight' or 'light', got '" + direct +
                          "'");
-    const std::string points = context.cliOption("media-points");
-    if (!points.empty()) {
-        const double n = parseNumberOption("--media-points", points);
-        if (!(n >= 1.0 && n <= 1024.0 && n == std::floor(n)))
-            throw InputError("--media-points: expected a whole number from 1 to 1024, got " +
-                             points);
-        s.points = static_cast<int>(n);
-    }
+    s.points = wholeOption(context, "media-points", 1, 1024, s.points);
     // The pixel's samples: --spp, else the scene's antialiasing (chapter 8's gr.antialias),
     // else 1. Only how the lamp points are spread depends on it, not what they estimate.
     double samples = 1.0;
@@ -58,21 +68,8 @@ MediaSettings mediaSettings(const RenderContext& context) {
     }
     // Scatterings: --media-bounces, else the scene's gr.option('media_bounces', n), else 256.
     s.bounces = static_cast<int>(context.sceneOption("media_bounces", s.bounces));
-    const std::string bounces = context.cliOption("media-bounces");
-    if (!bounces.empty()) {
-        const double n = parseNumberOption("--media-bounces", bounces);
-        if (!(n >= 0.0 && n <= 1e6 && n == std::floor(n)))
-            throw InputError("--media-bounces: expected a whole number from 0 to 1000000, got " +
-                             bounces);
-        s.bounces = static_cast<int>(n);
-    }
-    const std::string res = context.cliOption("media-majorant");
-    if (!res.empty()) {
-        const double n = parseNumberOption("--media-majorant", res);
-        if (!(n >= 1.0 && n <= 128.0 && n == std::floor(n)))
-            throw InputError("--media-majorant: expected a whole number from 1 to 128, got " + res);
-        s.majorantResolution = static_cast<int>(n);
-    }
+    s.bounces = wholeOption(context, "media-bounces", 0, 1000000, s.bounces);
+    s.majorantResolution = wholeOption(context, "media-majorant", 1, 128, s.majorantResolution);
     return s;
 }
 
