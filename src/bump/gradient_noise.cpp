@@ -18,41 +18,15 @@ std::uint32_t hashLattice(std::int64_t i, std::int64_t j, std::int64_t k, std::u
     return static_cast<std::uint32_t>(h >> 32);
 }
 
-/// The dot product of the lattice point's gradient (one of the 12 cube-edge directions) with
-/// the offset d from that point.
-double gradientDot(std::uint32_t hash, const Vec3& d) {
-    switch (hash % 12) {
-        case 0:
-            return d.x + d.y;
-        case 1:
-            return -d.x + d.y;
-        case 2:
-            return d.x - d.y;
-        case 3:
-            return -d.x - d.y;
-        case 4:
-            return d.x + d.z;
-        case 5:
-            return -d.x + d.z;
-        case 6:
-            return d.x - d.z;
-        case 7:
-            return -d.x - d.z;
-        case 8:
-            return d.y + d.z;
-        case 9:
-            return -d.y + d.z;
-        case 10:
-            return d.y - d.z;
-        default:
-            return -d.y - d.z;
-    }
-}
+/// The 12 cube-edge gradients, picked by hash % 12.
+constexpr double kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
+                                      {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+                                      {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
 
-/// Perlin's quintic fade 6t^5 − 15t^4 + 10t^3: 0 and 1 at the ends with zero first and second
-/// derivatives, so the noise is smooth across cell borders.
-double fade(double t) {
-    return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+/// The dot product of the lattice point's gradient with the offset d from that point.
+double gradientDot(std::uint32_t hash, const Vec3& d) {
+    const double* g = kGradients[hash % 12];
+    return g[0] * d.x + g[1] * d.y + g[2] * d.z;
 }
 
 double lerp(double t, double a, double b) {
@@ -60,6 +34,15 @@ double lerp(double t, double a, double b) {
 }
 
 }  // namespace
+
+double perlinFade(double t) {
+    return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+}
+
+Vec3 latticeGradient(std::int64_t i, std::int64_t j, std::int64_t k, std::uint32_t seed) {
+    const double* g = kGradients[hashLattice(i, j, k, seed) % 12];
+    return {g[0], g[1], g[2]};
+}
 
 double gradientNoise(const Vec3& x, std::uint32_t seed) {
     // Find the lattice cell and the position inside it.
@@ -77,7 +60,7 @@ double gradientNoise(const Vec3& x, std::uint32_t seed) {
                 corner[a][b][c] =
                     gradientDot(hashLattice(i + a, j + b, k + c, seed), f - Vec3(a, b, c));
     // Blend the eight with the faded weights.
-    const Vec3 w(fade(f.x), fade(f.y), fade(f.z));
+    const Vec3 w(perlinFade(f.x), perlinFade(f.y), perlinFade(f.z));
     const double y0 = lerp(w.y, lerp(w.x, corner[0][0][0], corner[1][0][0]),
                            lerp(w.x, corner[0][1][0], corner[1][1][0]));
     const double y1 = lerp(w.y, lerp(w.x, corner[0][0][1], corner[1][0][1]),

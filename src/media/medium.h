@@ -48,8 +48,8 @@ class NoiseDensity final : public DensityField {
     NoiseDensity(double frequency, int octaves, double bias, double gain, std::uint32_t seed)
         : frequency_(frequency), octaves_(octaves), bias_(bias), gain_(gain), seed_(seed) {}
     double at(const Vec3& p) const override;
-    /// The clamp's 1: noise has no cheap tight bound, so its majorant grid is flat.
-    double maxIn(const Vec3&, const Vec3&) const override { return 1.0; }
+    /// The density's bound from the noise's interval over the box (media/noise_bound.h).
+    double maxIn(const Vec3& lo, const Vec3& hi) const override;
     AABB bounds() const override;
 
   private:
