@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/sampler.h"
 #include "photon_map/emission.h"
 #include "photon_map/photon_grid.h"
 #include "photon_map/photon_map.h"
@@ -276,6 +277,65 @@ SCENARIO("the final gather gives the same bits on one thread and on two", "[ch16
     }
 }
 
+SCENARIO("a gather that grows to m photons where few lie is unbiased and less speckled",
+         "[ch16]") {
+    GIVEN("N = 4000 photons of flux 1 spread uniformly over a 2 x 2 square of the plane y = 0") {
+        // A disk of radius r holds λπr² = 4 photons on average (λ = N/4 per unit area), so the
+        // fixed-radius gather is speckle; the wide grid's disk, 3r, holds 36, so m = 16 nearly
+        // always fit there (P < 10^-4). 400 independent photon sets, one gather each at the
+        // square's centre.
+        const int n = 4000, sets = 400, m = 16;
+        const double lambda = n / 4.0, r = std::sqrt(4.0 / (M_PI * lambda));
+        std::vector<double> grown, fixed;
+        for (int set = 0; set < sets; ++set) {
+            std::vector<rb::Photon> photons(n);
+            for (int k = 0; k < n; ++k) {
+                rb::Sampler sampler(7, static_cast<std::uint64_t>(set), k);
+                rb::Photon& p = photons[k];
+                p.position[0] = static_cast<float>(2.0 * sampler.next1D() - 1.0);
+                p.position[1] = 0.0f;
+                p.position[2] = static_cast<float>(2.0 * sampler.next1D() - 1.0);
+                rb::packRgbe(rb::Colour(1.0), p.power, 0.0);
+                rb::packDirection(Vec3(0, -1, 0), p.theta, p.phi);
+                p.reserved = 0;
+            }
+            // One pass, as chapter 16 keeps it with gr.photons{at_least = m}.
+            rb::PhotonPasses map;
+            map.radii = {r};
+            map.atLeast = m;
+            map.wide.emplace_back(photons, rb::PhotonGrid::kWidestGrowth * r);
+            map.grids.emplace_back(std::move(photons), r);
+            grown.push_back(map.passIrradiance(Vec3(0.0), Vec3(0, 1, 0), 0, 0).g);
+            fixed.push_back(rb::irradianceEstimate(
+                                map.grids[0].gatherFlux(Vec3(0.0), Vec3(0, 1, 0), r), r)
+                                .g);
+        }
+        const auto meanAndSd = [](const std::vector<double>& v) {
+            double mean = 0.0, var = 0.0;
+            for (double x : v) mean += x / v.size();
+            for (double x : v) var += (x - mean) * (x - mean) / (v.size() - 1);
+            return std::pair{mean, std::sqrt(var)};
+        };
+        const auto [mean, sd] = meanAndSd(grown);
+        const auto [fixedMean, fixedSd] = meanAndSd(fixed);
+        INFO("grown: mean " << mean << " sd " << sd << "; fixed radius: mean " << fixedMean
+                            << " sd " << fixedSd << "; expected E = λ = " << lambda);
+        THEN("the mean is the irradiance λ·Φ (a z-test)") {
+            // (m − 1) photons in the disk through the m-th: the disk's share U of the square is
+            // Beta(m, N − m + 1) distributed, and E[(m − 1)/U] = N, so E = N/A exactly.
+            CHECK(std::abs(mean - lambda) / (sd / std::sqrt(double(sets))) <
+                  rbtest::zCritical(0.01));
+        }
+        THEN("its relative spread is 1/sqrt(m − 2), against 1/2 for the fixed radius") {
+            // Var[(m − 1)/U]/N² = (m − 1)(N − 1)/((m − 2) N) − 1 ≈ 1/(m − 2); the fixed disk
+            // counts a Poisson number of mean 4. The sample sd of 400 draws is good to ±20%.
+            const double expected = std::sqrt((m - 1.0) * (n - 1.0) / ((m - 2.0) * n) - 1.0);
+            CHECK(sd / lambda == Approx(expected).epsilon(0.2));
+            CHECK(fixedSd / lambda == Approx(0.5).epsilon(0.2));
+        }
+    }
+}
+
 SCENARIO("a photon record packs its power and direction in 20 bytes", "[ch16]") {
     GIVEN("a power and a direction") {
         const rb::Colour power(0.25, 1.7e-3, 3.0);
@@ -341,6 +401,8 @@ SCENARIO("bad photon settings are refused with the call and the field", "[ch16]"
     CHECK_THAT(error("gr.photons{counts = 5}"), Contains("unknown field 'counts'"));
     CHECK_THAT(error("gr.photons{gather = -1}"), Contains("gr.photons: field 'gather'"));
     CHECK_THAT(error("gr.photons{gather = 2.5}"), Contains("a whole number from 0"));
+    CHECK_THAT(error("gr.photons{at_least = -1}"), Contains("gr.photons: field 'at_least'"));
+    CHECK_THAT(error("gr.photons{at_least = 2.5}"), Contains("a whole number from 0"));
     CHECK_THAT(error("gr.photons(5)"), Contains("expects one table"));
 }
 

@@ -53,8 +53,10 @@ water:set_bump{pattern = 'ripples', strength = 0.003, wavelength = 0.06,
 
 -- Chapter 16 (raybook's gr.photons; seed 000 named no call): one pass of a million caustic
 -- photons. The water reflects a few percent of what reaches it, so the walls' share of the
--- photons is sparse; fewer photons draw that glow as speckle.
-gr.photons{count = 1000000, passes = 1}
+-- photons is sparse: a gather of the usual radius finds a handful there and draws the glow as
+-- speckle. at_least = 32 grows such a gather until it holds 32 photons (up to 3 radii), so the
+-- glow comes out smooth; the basin's dense caustics keep their sharp radius.
+gr.photons{count = 1000000, passes = 1, at_least = 32}
 
 local scene = gr.node('bathhouse')
 

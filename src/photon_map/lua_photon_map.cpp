@@ -1,7 +1,8 @@
 // Chapter 16's Lua: photon mapping for the renders requested after the call.
 //
 //   gr.photons{count = 20000, passes = 16, radius = 0.05, alpha = 2/3,
-//              method = 'progressive', k = 0, caustics = true, indirect = false, gather = 32}
+//              method = 'progressive', k = 0, caustics = true, indirect = false, gather = 32,
+//              at_least = 0}
 //       count:    photons emitted per pass, for each map
 //       passes:   passes; each traces new photons and gathers with a smaller radius
 //       radius:   the first pass's gather radius (default: from the pixel footprint)
@@ -12,6 +13,9 @@
 //       indirect: keep an indirect map (colour bleeding); it replaces the ambient term
 //       gather:   final gather rays for the indirect light at each visible point; 0 reads the
 //                 indirect map there directly (blotchy, but cheaper)
+//       at_least: where fewer photons than this lie within a gather's radius, the disk grows
+//                 to hold this many (up to 4 radii): sparse light comes out smooth, not
+//                 speckled (0, the default: every gather keeps its radius)
 //   gr.photons{} switches photon mapping on with every default.
 #include <cmath>
 #include <string>
@@ -30,17 +34,19 @@ constexpr const char* kNumberFields[][2] = {{"count", "photon_count"},
                                             {"passes", "photon_passes"},
                                             {"radius", "photon_radius"},
                                             {"k", "photon_nearest"},
+                                            {"at_least", "photon_at_least"},
                                             {"gather", "photon_gather"}};
 constexpr const char* kBoolFields[][2] = {{"caustics", "photon_caustics"},
                                           {"indirect", "photon_indirect"}};
 
 // [lua-photons]
-/// gr.photons{count=, passes=, radius=, alpha=, method=, k=, caustics=, indirect=, gather=}.
+/// gr.photons{count=, passes=, radius=, alpha=, method=, k=, caustics=, indirect=, gather=,
+/// at_least=}.
 int grPhotons(lua_State* L) {
     const char* usage =
         "gr.photons expects one table {count =, passes =, radius =, alpha =, method = "
         "'progressive' | 'classic', k =, caustics = true | false, indirect = true | false, "
-        "gather =}";
+        "gather =, at_least =}";
     if (lua_gettop(L) != 1 || lua_type(L, 1) != LUA_TTABLE) throw InputError(usage);
     // Only known fields: a typo would otherwise be ignored.
     lua_pushnil(L);
@@ -49,12 +55,12 @@ int grPhotons(lua_State* L) {
         const std::string key = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "?";
         const bool known = key == "alpha" || key == "method" || key == "count" || key == "passes" ||
                            key == "radius" || key == "k" || key == "caustics" ||
-                           key == "indirect" || key == "gather";
+                           key == "indirect" || key == "gather" || key == "at_least";
         if (!known) {
             lua_pop(L, 1);
             throw InputError("gr.photons: unknown field '" + key +
                              "' (known: count, passes, radius, alpha, method, k, caustics, "
-                             "indirect, gather)");
+                             "indirect, gather, at_least)");
         }
     }
     for (const auto& [field, option] : kNumberFields) {
@@ -111,6 +117,7 @@ void bindPhotonMap(LuaBindings& lua) {
     lua.option("photon_caustics", 16, 0, 1, true);
     lua.option("photon_indirect", 16, 0, 1, true);
     lua.option("photon_gather", 16, 0, 65536, true);
+    lua.option("photon_at_least", 16, 0, 1e6, true);
 }
 
 }  // namespace rb

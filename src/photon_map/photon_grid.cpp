@@ -91,27 +91,59 @@ void PhotonGrid::forEachNear(const Vec3& x, const Vec3& n, double radius, F&& f)
 // [gather-tests]
 
 // [gather]
-Colour PhotonGrid::gatherFlux(const Vec3& x, const Vec3& n, double radius) const {
+Colour PhotonGrid::gatherFlux(const Vec3& x, const Vec3& n, double radius, int* count) const {
     Colour flux(0.0);
-    forEachNear(x, n, std::min(radius, radius_),
-                [&](const Photon& p, double) { flux += unpackRgbe(p.power); });
+    int found = 0;
+    forEachNear(x, n, std::min(radius, radius_), [&](const Photon& p, double) {
+        flux += unpackRgbe(p.power);
+        ++found;
+    });
+    if (count) *count = found;
     return flux;
 }
 // [gather]
 
-Colour PhotonGrid::gatherNearest(const Vec3& x, const Vec3& n, int k, double& r2) const {
+
+std::vector<std::pair<double, const Photon*>> PhotonGrid::nearest(const Vec3& x, const Vec3& n,
+                                                                  int k, double& r2) const {
     std::vector<std::pair<double, const Photon*>> found;
     forEachNear(x, n, radius_, [&](const Photon& p, double d2) { found.push_back({d2, &p}); });
     r2 = radius_ * radius_;
     if (static_cast<int>(found.size()) > k) {
-        // The k nearest, ties broken by position in the grid, so the choice is deterministic.
+        // The k nearest, ties broken by position in the grid, so the choice is deterministic;
+        // the k-th ends up last.
         std::nth_element(found.begin(), found.begin() + (k - 1), found.end());
         r2 = found[k - 1].first;
         found.resize(k);
     }
+    return found;
+}
+
+/// Σ Φ of the photons in `found`.
+Colour PhotonGrid::fluxOf(const std::vector<std::pair<double, const Photon*>>& found) {
     Colour flux(0.0);
     for (const auto& [d2, p] : found) flux += unpackRgbe(p->power);
     return flux;
 }
+
+Colour PhotonGrid::gatherNearest(const Vec3& x, const Vec3& n, int k, double& r2) const {
+    return fluxOf(nearest(x, n, k, r2));
+}
+
+// [gather-nearer]
+Colour PhotonGrid::gatherNearer(const Vec3& x, const Vec3& n, int m, double& r2) const {
+    auto found = nearest(x, n, m, r2);
+    // The disk through the m-th nearest photon holds the m − 1 nearer ones: (m − 1) photons
+    // per π r_m² is unbiased for a uniform density (the m-th's disk covers a Beta(m, N − m + 1)
+    // share of N photons' area, and E[(m − 1)/U] = N).
+    if (static_cast<int>(found.size()) == m) {
+        // The m-th nearest is the farthest of the m (exactly m in reach leaves them unsorted).
+        const auto mth = std::max_element(found.begin(), found.end());
+        r2 = mth->first;
+        found.erase(mth);
+    }
+    return fluxOf(found);  // fewer than m: all of them, over the grid's whole disk
+}
+// [gather-nearer]
 
 }  // namespace rb

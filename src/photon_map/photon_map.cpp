@@ -49,6 +49,7 @@ PhotonSettings photonSettings(const RenderContext& context) {
     s.alpha = context.sceneOption("photon_alpha", s.alpha);
     s.classic = context.sceneOption("photon_classic", 0.0) != 0.0;
     s.nearest = static_cast<int>(context.sceneOption("photon_nearest", 0.0));
+    s.atLeast = static_cast<int>(context.sceneOption("photon_at_least", 0.0));
     s.caustics = context.sceneOption("photon_caustics", 1.0) != 0.0;
     s.indirect = context.sceneOption("photon_indirect", 0.0) != 0.0;
     s.gather = static_cast<int>(context.sceneOption("photon_gather", s.gather));
@@ -60,6 +61,8 @@ PhotonSettings photonSettings(const RenderContext& context) {
     s.radius = cliNumber(context, "photon-radius", 1e-12, 1e12, false, s.radius);
     s.alpha = cliNumber(context, "photon-alpha", 1e-6, 1.0 - 1e-6, false, s.alpha);
     s.gather = static_cast<int>(cliNumber(context, "photon-gather", 0, 65536, true, s.gather));
+    s.atLeast =
+        static_cast<int>(cliNumber(context, "photon-at-least", 0, 1e6, true, s.atLeast));
     return s;
 }
 // [photon-settings]
@@ -86,34 +89,34 @@ Colour irradianceEstimate(const Colour& flux, double radius) {
 }
 
 // [irradiance]
-Colour PhotonPasses::irradiance(const Vec3& x, const Vec3& n, int nearest) const {
-    if (grids.empty()) return Colour(0.0);
-    Colour sum(0.0);
-    for (std::size_t i = 0; i < grids.size(); ++i) {
-        if (nearest > 0) {
-            double r2 = 0.0;
-            const Colour flux = grids[i].gatherNearest(x, n, nearest, r2);
-            if (r2 > 0.0) sum += irradianceEstimate(flux, std::sqrt(r2));
-        } else {
-            sum += irradianceEstimate(grids[i].gatherFlux(x, n, radii[i]), radii[i]);
-        }
-    }
-    return sum / static_cast<double>(grids.size());
-}
-// [irradiance]
-
 Colour PhotonPasses::passIrradiance(const Vec3& x, const Vec3& n, int nearest,
                                     std::size_t pass) const {
     if (grids.empty()) return Colour(0.0);
     const PhotonGrid& grid = grids[pass % grids.size()];
+    const double r = radii[pass % grids.size()];
+    double r2 = 0.0;
     if (nearest > 0) {
-        double r2 = 0.0;
         const Colour flux = grid.gatherNearest(x, n, nearest, r2);
         return r2 > 0.0 ? irradianceEstimate(flux, std::sqrt(r2)) : Colour(0.0);
     }
-    const double r = radii[pass % grids.size()];
-    return irradianceEstimate(grid.gatherFlux(x, n, r), r);
+    int count = 0;
+    const Colour flux = grid.gatherFlux(x, n, r, &count);
+    if (count < atLeast && !wide.empty()) {
+        // Too few photons for a smooth estimate: the disk grows to hold atLeast of them, in
+        // the pass's wide grid (PhotonGrid::gatherNearer).
+        const Colour grown = wide[pass % wide.size()].gatherNearer(x, n, atLeast, r2);
+        return r2 > 0.0 ? irradianceEstimate(grown, std::sqrt(r2)) : Colour(0.0);
+    }
+    return irradianceEstimate(flux, r);
 }
+
+Colour PhotonPasses::irradiance(const Vec3& x, const Vec3& n, int nearest) const {
+    if (grids.empty()) return Colour(0.0);
+    Colour sum(0.0);
+    for (std::size_t i = 0; i < grids.size(); ++i) sum += passIrradiance(x, n, nearest, i);
+    return sum / static_cast<double>(grids.size());
+}
+// [irradiance]
 
 // [photon-term]
 Colour PhotonMapping::apply(const ShadeContext& ctx, const Ray& ray, const Hit& hit,
@@ -137,11 +140,12 @@ Colour PhotonMapping::apply(const ShadeContext& ctx, const Ray& ray, const Hit& 
 }
 // [photon-term]
 
-std::uint64_t photonPassBytes(std::uint64_t photons) {
+std::uint64_t photonPassBytes(std::uint64_t photons, bool wide) {
     // Per record: the pass's chunks, the merged list, the grid's sorted copy, its bucket of
-    // each photon and its table.
+    // each photon and its table; and the wide grid's copy and table when gathers grow.
+    const std::uint64_t grid = sizeof(Photon) + PhotonGrid::bytesPerPhoton();
     const std::uint64_t perRecord =
-        3 * sizeof(Photon) + sizeof(std::uint32_t) + PhotonGrid::bytesPerPhoton();
+        2 * sizeof(Photon) + sizeof(std::uint32_t) + (wide ? 2 : 1) * grid;
     return saturatingProduct(saturatingProduct(photons, kMaxStoredPerPhoton), perRecord);
 }
 
@@ -206,7 +210,7 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
             trace.cluster = ctx.cluster;
             passes.push_back(trace);
         }
-    const std::uint64_t each = photonPassBytes(settings_.photons);
+    const std::uint64_t each = photonPassBytes(settings_.photons, settings_.atLeast > 0);
     std::vector<std::vector<Photon>> traced;
     while (traced.size() < passes.size()) {
         const std::size_t first = traced.size();
@@ -232,6 +236,8 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
     for (std::size_t m = 0; m < maps.size(); ++m) {
         PhotonPasses& map = *maps[m].map;
         map.radii = passRadii(maps[m].r0, settings_.alpha, settings_.passes, settings_.classic);
+        map.atLeast = settings_.atLeast;
+        if (map.atLeast > 0) map.wide.resize(settings_.passes);
         map.grids.resize(settings_.passes);
         for (int pass = 0; pass < settings_.passes; ++pass) {
             map.stored += traced[m * settings_.passes + pass].size();
@@ -246,6 +252,10 @@ void PhotonMapping::run(const Scene& scene, const Pipeline& pipeline, const PreP
 #pragma omp parallel for schedule(dynamic, 1)
     for (std::int64_t i = 0; i < static_cast<std::int64_t>(order.size()); ++i) {
         const auto [map, pass] = grids[order[i]];
+        // A floor of photons per gather needs a second, wider grid of the same photons.
+        if (map->atLeast > 0)
+            map->wide[pass] =
+                PhotonGrid(traced[order[i]], PhotonGrid::kWidestGrowth * map->radii[pass]);
         map->grids[pass] = PhotonGrid(std::move(traced[order[i]]), map->radii[pass]);
     }
     seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -310,7 +320,11 @@ Feature photonMapFeature() {
              {"photon-gather", "N",
               "final gather rays for the indirect light at each visible point (0: read the "
               "indirect map there directly)",
-              "the scene's, else 32"}},
+              "the scene's, else 32"},
+             {"photon-at-least", "M",
+              "where fewer than M photons lie within a gather's radius, grow the disk to hold M "
+              "(up to 4 radii; 0: never)",
+              "the scene's, else 0"}},
             {},
             photonEmissionWarps};
 }

@@ -30,6 +30,9 @@ struct PhotonSettings {
     double alpha = 2.0 / 3.0;  ///< The radius shrinks as r²_{i+1} = r²_i (i + α)/(i + 1).
     bool classic = false;      ///< Jensen's classic method: one radius for every pass.
     int nearest = 0;           ///< k > 0: only the k nearest photons within each radius.
+    /// m > 0: where fewer than m photons lie within the radius, the disk grows to hold m
+    /// (PhotonGrid::gatherAtLeast), so sparse light is not drawn as speckle.
+    int atLeast = 0;
     bool caustics = true;      ///< Keep a caustic map (L S+ D).
     bool indirect = false;     ///< Keep an indirect map (L (S|D)* D D); drops the ambient term.
     /// Final gather rays at each visible diffuse point for the indirect light; 0: read the
@@ -54,6 +57,10 @@ struct PhotonPasses {
     std::vector<PhotonGrid> grids;
     std::vector<double> radii;
     std::uint64_t stored = 0;  ///< Photons in all passes.
+    int atLeast = 0;           ///< The gathers' floor of photons (PhotonSettings::atLeast).
+    /// With a floor: each pass's photons again, in a grid kWidestGrowth times as wide, where
+    /// a gather that found too few grows.
+    std::vector<PhotonGrid> wide;
     /// The irradiance at x on the side the unit normal n faces: the mean over the passes of
     /// each pass's estimate (k nearest: within the radius of the k-th).
     Colour irradiance(const Vec3& x, const Vec3& n, int nearest) const;
@@ -102,8 +109,8 @@ class PhotonMapping final : public ShadingTerm, public PrePass {
 
 /// The bytes one pass of `photons` emitted photons may take at its peak: every photon's
 /// stored records (at most kMaxStoredPerPhoton), their copies while the pass is merged and
-/// sorted into its grid, and the grid's tables.
-std::uint64_t photonPassBytes(std::uint64_t photons);
+/// sorted into its grid, and the grid's tables; `wide`: a wide grid's copy and tables too.
+std::uint64_t photonPassBytes(std::uint64_t photons, bool wide);
 
 /// Chapter 16's feature record.
 Feature photonMapFeature();
