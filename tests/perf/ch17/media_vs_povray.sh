@@ -150,28 +150,30 @@ for round in $(seq "$rounds"); do
   povray_series pl-pv "$tmp/pl-pv-ref.png" "$round"
   use "${shaft[@]}"
 done
+series() {  # renderer key-prefix qualities...: a "renderer quality seconds rmse" line each
+  local name=$1 key=$2 q; shift 2
+  for q in "$@"; do echo "$name $q ${best[$key$q]} ${rmses[$key$q]}"; done
+  echo; echo
+}
 dat=$out/povray.dat
+centre="# centre: quality = renders of 1 sample at the pixel centre, averaged (the default estimator)"
 {
   echo "# fog and a light shaft at $size, $threads thread(s): renderer quality seconds rmse"
   echo "# raybook: quality = samples per pixel (delta tracking, the default)"
-  for n in "${rbn[@]}"; do echo "raybook $n ${best[rb$n]} ${rmses[rb$n]}"; done
-  echo; echo
+  series raybook rb "${rbn[@]}"
   echo "# povray: quality = media samples (method 3)"
-  for n in "${pvn[@]}"; do echo "povray $n ${best[pv$n]} ${rmses[pv$n]}"; done
-  echo; echo
+  series povray pv "${pvn[@]}"
   echo "# march: quality = step (raybook --media=march, 1 sample per pixel)"
-  for s in "${steps[@]}"; do echo "march $s ${best[mr$s]} ${rmses[mr$s]}"; done
-  echo; echo
-  echo "# centre: quality = renders of 1 sample at the pixel centre, averaged (the default estimator)"
-  for n in "${rcn[@]}"; do echo "centre $n ${best[rc$n]} ${rmses[rc$n]}"; done
+  series march mr "${steps[@]}"
+  echo "$centre"
+  series centre rc "${rcn[@]}"
 } >"$dat"
 {
   echo "# the plume at ${plume[2]}, $threads thread(s): renderer quality seconds rmse"
   echo "# povray: quality = media samples (method 3)"
-  for n in "${pvn[@]}"; do echo "povray $n ${best[pl-pv$n]} ${rmses[pl-pv$n]}"; done
-  echo; echo
-  echo "# centre: quality = renders of 1 sample at the pixel centre, averaged (the default estimator)"
-  for n in "${rcn[@]}"; do echo "centre $n ${best[pl-rc$n]} ${rmses[pl-rc$n]}"; done
+  series povray pl-pv "${pvn[@]}"
+  echo "$centre"
+  series centre pl-rc "${rcn[@]}"
 } >"$out/plume.dat"
 
 python3 - "$dat" "$out/plume.dat" "$size" "${plume[2]}" "$threads" "$rounds" <<'PY'
