@@ -132,7 +132,7 @@ centre_series() {  # key-prefix reference.png round
 povray_series() {  # key-prefix reference.png round
   for n in "${pvn[@]}"; do
     keep "$1$n" "$(pv "$n" "$tmp/img.png" "$threads")"
-    [ "$3" = 1 ] && rmses[$1$n]=$("$rmse" rmse "$tmp/img.png" "$2")
+    if [ "$3" = 1 ]; then rmses[$1$n]=$("$rmse" rmse "$tmp/img.png" "$2"); fi
   done
 }
 # Each round runs every raybook point, then every POV-Ray point, so both renderers see the
