@@ -7,6 +7,7 @@
 #   MEDIA_THREADS=N   threads for both renderers' measured runs (default 1)
 #   MEDIA_ROUNDS=N    timed rounds, the fastest run of each point kept (default 3)
 #   PLUME_SIZE=WxH    the plume's image size (default 96x96, as tests/perf/ch17/charts.sh)
+#   PLUME_REFERENCE=N renders averaged for raybook's plume reference (default 2048)
 # Writes OUT_DIR/povray.dat and OUT_DIR/plume.dat (renderer, quality, seconds, RMSE) and prints
 # Markdown: the renderers' points, the ratio raybook/POV-Ray of render time at equal error;
 # last, the "target NAME RATIO" lines for make bench.
@@ -38,8 +39,11 @@
 # converged pictures agree (means within 0.5%). POV-Ray reads no VDB file, so ch17_vdb_df3
 # (tests/perf/ch17/vdb_df3.cpp; built when NanoVDB is found) first writes the density as raybook
 # reads it into a df3 file, on the same trilinear samples. Only series (1), like for like: N = 1
-# to 64 renders of one sample at the pixel centres, averaged, against 256 such renders at 64
-# lamp points; POV-Ray with samples N = 2 to 100 against samples 500 (on the plume POV-Ray's
+# to 256 renders of one sample at the pixel centres, averaged, against PLUME_REFERENCE (default
+# 2048) such renders at 64 lamp points (on the plume 64 points hardly lower a render's noise,
+# which is the camera rays' delta tracking: 256 renders left the reference an own error of
+# 0.0057, half the 64-render point's RMSE; 2048 take about 3 minutes, most of it starting
+# processes); POV-Ray with samples N = 2 to 100 against samples 500 (on the plume POV-Ray's
 # shadow rays sample the media too, so its time grows about as N^1.8: samples 500 took 86 s on
 # 2 threads, 2000 would take about 17 minutes). Printed as "target media_povray_plume RATIO".
 # Without NanoVDB (no ch17_vdb_df3) the plume is left out, with a note.
@@ -83,30 +87,38 @@ pv() {  # samples output.png threads ; prints the Trace Time
          END { if (t == "") exit 1; print t }'
 }
 
-centre_reference() {  # out.png: 256 renders of one sample each, with 64 lamp points per ray
-  for i in $(seq 256); do
+average=$root/tests/perf/ch17/average_png.py
+centre_reference() {  # out.png count: count renders of one sample each, 64 lamp points per ray,
+  # averaged. Prints the average's own error: its two halves' averages differ by twice that.
+  local i half=$(($2 / 2))
+  for i in $(seq "$2"); do
     rb "$tmp/ref-$i.png" "$(nproc)" --seed $((1000 + i)) --spp 1 --media-points=64 >/dev/null
   done
-  python3 "$root/tests/perf/ch17/average_png.py" "$1" "$tmp"/ref-*.png
-  rm -f "$tmp"/ref-*.png
+  python3 "$average" "$1" $(seq -f "$tmp/ref-%g.png" "$2")
+  python3 "$average" "$tmp/half-1.png" $(seq -f "$tmp/ref-%g.png" "$half")
+  python3 "$average" "$tmp/half-2.png" $(seq -f "$tmp/ref-%g.png" $((half + 1)) "$2")
+  "$rmse" rmse "$tmp/half-1.png" "$tmp/half-2.png" | awk '{ printf "%.5f\n", $1 / 2 }'
+  rm -f "$tmp"/ref-*.png "$tmp"/half-*.png
 }
 echo "media_vs_povray: references ($size, $(nproc) threads)" >&2
 rb "$tmp/rb-ref.png" "$(nproc)" --seed 7 --spp 4096 >/dev/null
 rb "$tmp/mr-ref.png" "$(nproc)" --seed 7 --spp 1 --media=march --media-step=0.003 >/dev/null
 pv 2000 "$tmp/pv-ref.png" "$(nproc)" >/dev/null
-centre_reference "$tmp/rc-ref.png"
+rc_error=$(centre_reference "$tmp/rc-ref.png" 256)
 # The plume's: its density for POV-Ray (plume.df3, placed by plume.inc, read by pv in $tmp).
 if [ -n "$plume_on" ]; then
   use "${plume[@]}"
   echo "media_vs_povray: the plume's references ($size, $(nproc) threads)" >&2
   (cd "$root" && "$df3" scenes/assets/plume.nvdb density "$tmp/plume.df3" "$tmp/plume.inc") >&2
   pv 500 "$tmp/pl-pv-ref.png" "$(nproc)" >/dev/null
-  centre_reference "$tmp/pl-rc-ref.png"
+  pl_renders=${PLUME_REFERENCE:-2048}
+  pl_error=$(centre_reference "$tmp/pl-rc-ref.png" "$pl_renders")
   use "${shaft[@]}"
 fi
 
 rbn=(1 4 16 64 256)
 rcn=(1 4 16 64)
+plume_rcn=(1 4 16 64 256)
 steps=(0.4 0.2 0.1 0.05 0.025 0.0125)
 pvn=(2 5 10 20 50 100)
 declare -A best rmses
@@ -114,18 +126,20 @@ keep() {  # key seconds: keep the fastest run
   [ -n "$2" ] || { echo "media_vs_povray: no time for $1 (a render failed)" >&2; exit 1; }
   if [ -z "${best[$1]:-}" ] || awk -v a="$2" -v b="${best[$1]}" 'BEGIN { exit !(a < b) }'; then best[$1]=$2; fi
 }
-centre_series() {  # key-prefix reference.png round
-  for n in "${rcn[@]}"; do
+centre_series() {  # key-prefix reference.png round counts...
+  local key=$1 ref=$2 round=$3 n i t total
+  shift 3
+  for n in "$@"; do
     # N renders of one sample at the pixel centre (as POV-Ray's -A), seeds 1..N, averaged.
     total=0
     for i in $(seq "$n"); do
       t=$(rb "$tmp/rc-$i.png" "$threads" --seed "$i" --spp 1)
       total=$(awk -v a="$total" -v b="$t" 'BEGIN { print a + b }')
     done
-    keep "$1$n" "$total"
-    if [ "$3" = 1 ]; then
-      python3 "$root/tests/perf/ch17/average_png.py" "$tmp/img.png" $(for i in $(seq "$n"); do echo "$tmp/rc-$i.png"; done)
-      rmses[$1$n]=$("$rmse" rmse "$tmp/img.png" "$2")
+    keep "$key$n" "$total"
+    if [ "$round" = 1 ]; then
+      python3 "$average" "$tmp/img.png" $(seq -f "$tmp/rc-%g.png" "$n")
+      rmses[$key$n]=$("$rmse" rmse "$tmp/img.png" "$ref")
     fi
   done
 }
@@ -143,7 +157,7 @@ for round in $(seq "$rounds"); do
     keep "rb$n" "$(rb "$tmp/img.png" "$threads" --seed 1 --spp "$n")"
     [ "$round" = 1 ] && rmses[rb$n]=$("$rmse" rmse "$tmp/img.png" "$tmp/rb-ref.png")
   done
-  centre_series rc "$tmp/rc-ref.png" "$round"
+  centre_series rc "$tmp/rc-ref.png" "$round" "${rcn[@]}"
   for s in "${steps[@]}"; do
     keep "mr$s" "$(rb "$tmp/img.png" "$threads" --seed 1 --spp 1 --media=march --media-step="$s")"
     [ "$round" = 1 ] && rmses[mr$s]=$("$rmse" rmse "$tmp/img.png" "$tmp/mr-ref.png")
@@ -151,7 +165,7 @@ for round in $(seq "$rounds"); do
   povray_series pv "$tmp/pv-ref.png" "$round"
   [ -n "$plume_on" ] || continue
   use "${plume[@]}"
-  centre_series pl-rc "$tmp/pl-rc-ref.png" "$round"
+  centre_series pl-rc "$tmp/pl-rc-ref.png" "$round" "${plume_rcn[@]}"
   povray_series pl-pv "$tmp/pl-pv-ref.png" "$round"
   use "${shaft[@]}"
 done
@@ -179,10 +193,11 @@ rm -f "$out/plume.dat"
   echo "# povray: quality = media samples (method 3)"
   series povray pl-pv "${pvn[@]}"
   echo "$centre"
-  series centre pl-rc "${rcn[@]}"
+  series centre pl-rc "${plume_rcn[@]}"
 } >"$out/plume.dat"
 
-python3 - "$dat" "$out/plume.dat" "$size" "${plume[2]}" "$threads" "$rounds" <<'PY'
+python3 - "$dat" "$out/plume.dat" "$size" "${plume[2]}" "$threads" "$rounds" "$rc_error" \
+        "${pl_renders:-0}" "${pl_error:-0}" <<'PY'
 import math, os, sys
 def load(path):
     rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
@@ -190,7 +205,7 @@ def load(path):
 points = load(sys.argv[1])
 plume = load(sys.argv[2]) if os.path.exists(sys.argv[2]) else None
 rb, pv, mr, rc = points("raybook"), points("povray"), points("march"), points("centre")
-size, plume_size, threads, rounds = sys.argv[3], sys.argv[4], sys.argv[5], sys.argv[6]
+size, plume_size, threads, rounds, rc_error, pl_renders, pl_error = sys.argv[3:10]
 def table(head, time, series):
     print()
     print(f"| {head} | {time} s | RMSE |")
@@ -199,7 +214,9 @@ def table(head, time, series):
         print(f"| {n} | {t:.3f} | {e:.5f} |")
 print(f"Fog and a light shaft (tests/perf/ch17/shaft.lua, single scattering) at {size}, {threads} "
       f"thread(s), against POV-Ray 3.7's media (tests/perf/povray/chapter17-media.pov); each "
-      f"renderer's RMSE against its own converged reference; fastest of {rounds} rounds.")
+      f"renderer's RMSE against its own converged reference; fastest of {rounds} rounds. raybook's "
+      f"pixel-centre reference (256 one-sample renders at 64 lamp points) has an error of its own "
+      f"of about {rc_error} (its two halves' averages differ by twice that).")
 table("POV-Ray media samples", "Trace Time", pv)
 table("raybook's default, renders of 1 sample at the pixel centre, averaged", "render", rc)
 table("raybook's default, samples per pixel (jittered over the pixel)", "render", rb)
@@ -270,8 +287,8 @@ if plume:
           f"sigma_a 3, g 0.2; single scattering) at {plume_size}, {threads} thread(s), against "
           f"tests/perf/povray/chapter17-plume.pov, the same density written for POV-Ray as a df3 "
           f"file (ch17_vdb_df3); each renderer's RMSE against its own converged reference "
-          f"(raybook: 256 one-sample renders at 64 lamp points; POV-Ray: samples 500); fastest of "
-          f"{rounds} rounds.")
+          f"(raybook: {pl_renders} one-sample renders at 64 lamp points, whose own error is about "
+          f"{pl_error}, from its two halves; POV-Ray: samples 500); fastest of {rounds} rounds.")
     table("POV-Ray media samples", "Trace Time", ppv)
     table("raybook's default, renders of 1 sample at the pixel centre, averaged", "render", prc)
     ratios.update(equal_error(ppv, [
