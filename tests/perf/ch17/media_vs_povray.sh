@@ -212,13 +212,16 @@ def table(head, time, series):
     print("|---:|---:|---:|")
     for e, t, n in series:
         print(f"| {n} | {t:.3f} | {e:.5f} |")
+def tables(pv, rc):
+    """POV-Ray's points, then raybook's default at the pixel centres."""
+    table("POV-Ray media samples", "Trace Time", pv)
+    table("raybook's default, renders of 1 sample at the pixel centre, averaged", "render", rc)
 print(f"Fog and a light shaft (tests/perf/ch17/shaft.lua, single scattering) at {size}, {threads} "
       f"thread(s), against POV-Ray 3.7's media (tests/perf/povray/chapter17-media.pov); each "
       f"renderer's RMSE against its own converged reference; fastest of {rounds} rounds. raybook's "
       f"pixel-centre reference (256 one-sample renders at 64 lamp points) has an error of its own "
       f"of about {rc_error} (its two halves' averages differ by twice that).")
-table("POV-Ray media samples", "Trace Time", pv)
-table("raybook's default, renders of 1 sample at the pixel centre, averaged", "render", rc)
+tables(pv, rc)
 table("raybook's default, samples per pixel (jittered over the pixel)", "render", rb)
 table("raybook, ray marching, step (1 sample per pixel)", "render", mr)
 def time_at(points, e):
@@ -289,8 +292,7 @@ if plume:
           f"file (ch17_vdb_df3); each renderer's RMSE against its own converged reference "
           f"(raybook: {pl_renders} one-sample renders at 64 lamp points, whose own error is about "
           f"{pl_error}, from its two halves; POV-Ray: samples 500); fastest of {rounds} rounds.")
-    table("POV-Ray media samples", "Trace Time", ppv)
-    table("raybook's default, renders of 1 sample at the pixel centre, averaged", "render", prc)
+    tables(ppv, prc)
     ratios.update(equal_error(ppv, [
         ("p", "raybook pixel centres", "the plume, raybook's default at the pixel centres", prc)]))
 print()
