@@ -298,6 +298,6 @@ if plume:
 print()
 for key, name in (("c", "media_povray"), ("d", "media_povray_aa"), ("m", "media_povray_march"),
                   ("p", "media_povray_plume")):
-    if ratios[key]:
+    if ratios.get(key):
         print(f"target {name} {median(ratios[key]):.2f}")
 PY
