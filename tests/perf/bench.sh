@@ -295,7 +295,9 @@ fi
 
 # ---- Media against POV-Ray's media, the 2-thread speedup and the majorant grid (chapter 17) --
 # A light shaft in homogeneous fog (tests/perf/ch17/shaft.lua) against
-# tests/perf/povray/chapter17-media.pov at equal error (it needs the ch08 RMSE tool), then the
+# tests/perf/povray/chapter17-media.pov, and the chapter's VDB plume (tests/perf/ch17/plume.lua)
+# against tests/perf/povray/chapter17-plume.pov, at equal error (it needs the ch08 RMSE tool and
+# ch17_vdb_df3, built with NanoVDB), then the
 # chapter scene's 2-thread speedup and ch17_majorant's null collisions per real collision. Each
 # output is also kept in BUILD_DIR/bench/ch17-povray.txt and ch17-speed.txt: the summary below
 # reads their "target NAME VALUE" lines.
@@ -472,6 +474,8 @@ record_row "fog shaft vs POV-Ray media, equal error (x)" "$(target_line media_po
            "(no target; raybook delta tracking / POV-Ray method 3, 1 thread)"
 record_row "  the same, raybook's ray marching (x)" "$(target_line media_povray_march "$ch17povray")" \
            "(no target; n/a where no error level is shared)"
+record_row "smoke plume vs POV-Ray media, equal error (x)" "$(target_line media_povray_plume "$ch17povray")" \
+           "(no target; the plume's density as a df3 file, pixel centres, 1 thread)"
 record_row "null per real collision, global majorant" "$(target_line null_per_real_global "$ch17speed")" "(no target; ch17_majorant, plume)"
 record_row "null per real collision, 16^3 majorant grid" "$(target_line null_per_real_16 "$ch17speed")" "(no target; the default --media-majorant)"
 say ""
