@@ -87,6 +87,10 @@ void save_block_stats(const std::filesystem::path& path, const BlockStats& s) {
 BlockStats load_block_stats(const std::filesystem::path& path) {
     std::ifstream in(path);
     if (!in) throw std::runtime_error("cannot read " + path.string());
+    return parse_block_stats(in, path.string());
+}
+
+BlockStats parse_block_stats(std::istream& in, const std::string& source) {
     BlockStats s;
     std::string line, key;
     char x = 0;
@@ -113,7 +117,7 @@ BlockStats load_block_stats(const std::filesystem::path& path) {
         const int g = BlockStats::kGroups[i];
         ok = s.mean[i].size() == 3 * static_cast<std::size_t>(s.groupsX(g) * s.groupsY(g));
     }
-    if (!ok) throw std::runtime_error(path.string() + ": not a block statistics file");
+    if (!ok) throw std::runtime_error(source + ": not a block statistics file");
     return s;
 }
 

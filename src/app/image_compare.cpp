@@ -63,14 +63,14 @@ Image Image::filled(int w, int h, float r, float g, float b) {
     return image;
 }
 
-Image load_png(const std::filesystem::path& path) {
-    // Let stb convert grey and RGBA to 8-bit RGB; renders are opaque, so alpha is dropped
-    int w = 0, h = 0, channels_in_file = 0;
-    std::unique_ptr<unsigned char, void (*)(void*)> data(
-        stbi_load(path.c_str(), &w, &h, &channels_in_file, 3), stbi_image_free);
+namespace {
+
+/// The float image of what stb decoded (8-bit RGB), or the error naming `source`.
+Image fromStb(unsigned char* decoded, int w, int h, const std::string& source) {
+    std::unique_ptr<unsigned char, void (*)(void*)> data(decoded, stbi_image_free);
     if (!data) {
         const char* why = stbi_failure_reason();
-        throw std::runtime_error("cannot read image " + path.string() + ": " +
+        throw std::runtime_error("cannot read image " + source + ": " +
                                  (why ? why : "unknown error"));
     }
 
@@ -80,6 +80,25 @@ Image load_png(const std::filesystem::path& path) {
     image.rgb.resize(count);
     for (std::size_t i = 0; i < count; ++i) image.rgb[i] = data.get()[i] / 255.0f;
     return image;
+}
+
+}  // namespace
+
+Image load_png(const std::filesystem::path& path) {
+    // Let stb convert grey and RGBA to 8-bit RGB; renders are opaque, so alpha is dropped
+    int w = 0, h = 0, channels_in_file = 0;
+    unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels_in_file, 3);
+    return fromStb(data, w, h, path.string());
+}
+
+Image decode_png(const std::string& bytes, const std::string& source) {
+    if (bytes.size() > std::size_t{std::numeric_limits<int>::max()})
+        throw std::runtime_error("cannot read image " + source + ": over 2 GiB");
+    int w = 0, h = 0, channels_in_file = 0;
+    unsigned char* data =
+        stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
+                              static_cast<int>(bytes.size()), &w, &h, &channels_in_file, 3);
+    return fromStb(data, w, h, source);
 }
 
 void save_png(const std::filesystem::path& path, const Image& image) {

@@ -34,6 +34,8 @@ struct Image {
 /// Loads a PNG (8-bit grey, RGB or RGBA; alpha is ignored) as float RGB in [0, 1]; throws
 /// std::runtime_error naming the file when it cannot be read.
 Image load_png(const std::filesystem::path& path);
+/// load_png on a PNG file's bytes, already read; `source` names them in the message.
+Image decode_png(const std::string& bytes, const std::string& source);
 
 /// Writes an image as 8-bit RGB PNG (channels clamped to [0, 1] and rounded); throws
 /// std::runtime_error on failure.

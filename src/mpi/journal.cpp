@@ -105,6 +105,11 @@ std::vector<JournalTile> readJournal(const std::string& path, const RenderIdenti
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError("--resume: cannot read the journal " + path);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return readJournalBytes(bytes, path, identity);
+}
+
+std::vector<JournalTile> readJournalBytes(const std::string& bytes, const std::string& path,
+                                          const RenderIdentity& identity) {
     // Step 1: the header must be a journal's, written for this render.
     const std::string expected = headerOf(identity);
     if (bytes.rfind(kJournalMagic, 0) != 0)
