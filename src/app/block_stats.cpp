@@ -112,6 +112,12 @@ BlockStats parse_block_stats(std::istream& in, const std::string& source) {
             s.sigma[section].push_back(sigma);
         }
     }
+    // Sides within the golden renders' limit also keep the block and group counts from
+    // overflowing.
+    if (s.w > kMaxSide || s.h > kMaxSide || s.block > kMaxSide)
+        throw std::runtime_error(source + ": size " + std::to_string(s.w) + "x" +
+                                 std::to_string(s.h) + " or block " + std::to_string(s.block) +
+                                 " beyond " + std::to_string(kMaxSide) + " pixels");
     bool ok = s.w > 0 && s.h > 0 && s.block > 0 && s.renders >= 2 && section == 3;
     for (int i = 0; ok && i < 4; ++i) {
         const int g = BlockStats::kGroups[i];

@@ -24,9 +24,6 @@ namespace rb::golden {
 
 namespace {
 
-/// Largest accepted render side; anything bigger is certainly a typo in a golden test.
-constexpr int kMaxSide = 16384;
-
 /// s without leading and trailing blanks.
 std::string_view trim(std::string_view s) {
     const auto first = s.find_first_not_of(" \t\r\n");

@@ -41,6 +41,10 @@ Image decode_png(const std::string& bytes, const std::string& source);
 /// std::runtime_error on failure.
 void save_png(const std::filesystem::path& path, const Image& image);
 
+/// Largest render side a thresholds or statistics file may state; anything bigger is certainly
+/// a typo in a golden test.
+inline constexpr int kMaxSide = 16384;
+
 /// How one golden image is rendered and how far a render may stray from it (NAME.txt).
 struct Thresholds {
     double rmse = 0.004;          ///< Largest allowed RMSE over all channels of all pixels.
