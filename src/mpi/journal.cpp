@@ -143,7 +143,9 @@ std::vector<JournalTile> readJournalBytes(const std::string& bytes, const std::s
         const std::size_t size = 12 + std::size_t{count} * sizeof(float) + 8;
         if (bytes.size() - at < size) break;
         JournalTile tile{position, std::vector<float>(count)};
-        std::memcpy(tile.pixels.data(), bytes.data() + at + 12, count * sizeof(float));
+        // An empty vector's data() may be null, which memcpy must not get even for 0 bytes.
+        if (count > 0)
+            std::memcpy(tile.pixels.data(), bytes.data() + at + 12, count * sizeof(float));
         std::uint64_t sum = 0;
         std::memcpy(&sum, bytes.data() + at + size - 8, 8);
         if (sum != recordChecksum(position, count, tile.pixels.data())) break;
