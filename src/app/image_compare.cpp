@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <set>
@@ -62,13 +63,47 @@ Image Image::filled(int w, int h, float r, float g, float b) {
 
 namespace {
 
-/// The float image of what stb decoded (8-bit RGB), or the error naming `source`.
-Image fromStb(unsigned char* decoded, int w, int h, const std::string& source) {
-    std::unique_ptr<unsigned char, void (*)(void*)> data(decoded, stbi_image_free);
+/// Most pixels rt --compare reads from an image (8192 × 8192; the float copy takes 768 MiB).
+/// A file of a few bytes can declare a far larger one, which stb would allocate before
+/// reading a pixel.
+constexpr long long kMaxComparePixels = 1LL << 26;
+
+/// The 8 bytes every PNG file starts with.
+constexpr char kPngSignature[] = "\x89PNG\r\n\x1a\n";
+
+}  // namespace
+
+Image load_png(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read image " + path.string() + ": cannot open it");
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return decode_png(bytes, path.string());
+}
+
+Image decode_png(const std::string& bytes, const std::string& source) {
+    const auto fail = [&](const std::string& why) {
+        throw std::runtime_error("cannot read image " + source + ": " + why);
+    };
+    // stb also reads GIF, BMP, PSD, PNM and more; only PNG reaches it, which keeps those readers'
+    // bugs out of reach (stb 2.27's PNM header overflows an int, found by fuzz_compare)
+    if (bytes.compare(0, 8, kPngSignature, 8) != 0) fail("not a PNG file");
+    if (bytes.size() > std::size_t{std::numeric_limits<int>::max()}) fail("over 2 GiB");
+    const auto* begin = reinterpret_cast<const unsigned char*>(bytes.data());
+    const int size = static_cast<int>(bytes.size());
+    int w = 0, h = 0, channels_in_file = 0;
+    if (stbi_info_from_memory(begin, size, &w, &h, &channels_in_file) &&
+        (w > kMaxSide || h > kMaxSide || static_cast<long long>(w) * h > kMaxComparePixels)) {
+        fail("its header declares " + std::to_string(w) + "x" + std::to_string(h) +
+             " pixels, more than rt --compare reads (" + std::to_string(kMaxSide) + " a side, " +
+             std::to_string(kMaxComparePixels) + " in all)");
+    }
+
+    // Let stb convert grey and RGBA to 8-bit RGB; renders are opaque, so alpha is dropped
+    std::unique_ptr<unsigned char, void (*)(void*)> data(
+        stbi_load_from_memory(begin, size, &w, &h, &channels_in_file, 3), stbi_image_free);
     if (!data) {
         const char* why = stbi_failure_reason();
-        throw std::runtime_error("cannot read image " + source + ": " +
-                                 (why ? why : "unknown error"));
+        fail(why ? why : "unknown error");
     }
 
     // Convert to float in [0, 1]
@@ -77,25 +112,6 @@ Image fromStb(unsigned char* decoded, int w, int h, const std::string& source) {
     image.rgb.resize(count);
     for (std::size_t i = 0; i < count; ++i) image.rgb[i] = data.get()[i] / 255.0f;
     return image;
-}
-
-}  // namespace
-
-Image load_png(const std::filesystem::path& path) {
-    // Let stb convert grey and RGBA to 8-bit RGB; renders are opaque, so alpha is dropped
-    int w = 0, h = 0, channels_in_file = 0;
-    unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels_in_file, 3);
-    return fromStb(data, w, h, path.string());
-}
-
-Image decode_png(const std::string& bytes, const std::string& source) {
-    if (bytes.size() > std::size_t{std::numeric_limits<int>::max()})
-        throw std::runtime_error("cannot read image " + source + ": over 2 GiB");
-    int w = 0, h = 0, channels_in_file = 0;
-    unsigned char* data =
-        stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
-                              static_cast<int>(bytes.size()), &w, &h, &channels_in_file, 3);
-    return fromStb(data, w, h, source);
 }
 
 void save_png(const std::filesystem::path& path, const Image& image) {

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "app/compare.h"
 #include "app/image_compare.h"
@@ -206,6 +207,28 @@ SCENARIO("a PNG round trip keeps every 8-bit value", "[golden]") {
         THEN("loading throws, naming the file") {
             REQUIRE_THROWS_WITH(load_png("/nonexistent/golden.png"),
                                 Contains("/nonexistent/golden.png"));
+        }
+    }
+}
+
+SCENARIO("--compare reads PNG files of a size it can hold, and refuses others before decoding",
+         "[golden]") {
+    GIVEN(
+        "the 33-byte start of a PNG whose header declares 2050 x 65534 pixels (the size of a "
+        "41-byte GIF for which stb allocated 1.4 GB under fuzz_compare)") {
+        const std::string png(
+            "\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\x08\x02\0\0\xff\xfe"
+            "\x08\x02\0\0\0\0\0\0\0",
+            33);
+        THEN("it is refused, naming the source and the declared size") {
+            REQUIRE_THROWS_WITH(decode_png(png, "big.png"),
+                                Contains("big.png: its header declares 2050x65534 pixels"));
+        }
+    }
+    GIVEN("an image in another format stb reads (the GIF's header)") {
+        const std::string gif("GIF89a\x02\x08\xfe\xff\0\0\0", 13);
+        THEN("it is refused as not a PNG file, so stb's other readers never see it") {
+            REQUIRE_THROWS_WITH(decode_png(gif, "big.gif"), Contains("big.gif: not a PNG file"));
         }
     }
 }
