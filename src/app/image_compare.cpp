@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -88,6 +89,16 @@ Image decode_png(const std::string& bytes, const std::string& source) {
     // bugs out of reach (stb 2.27's PNM header overflows an int, found by fuzz_compare)
     if (bytes.compare(0, 8, kPngSignature, 8) != 0) fail("not a PNG file");
     if (bytes.size() > std::size_t{std::numeric_limits<int>::max()}) fail("over 2 GiB");
+    // Each chunk up to IEND (length, type, data, CRC) must fit in the file: stb grows its buffer
+    // to a chunk's declared length before it reads the data (2 GiB for an 82-byte file, found
+    // by fuzz_compare)
+    for (std::size_t at = 8; bytes.size() - at >= 8 && bytes.compare(at + 4, 4, "IEND") != 0;) {
+        const auto byte = [&](std::size_t i) { return std::uint32_t(std::uint8_t(bytes[at + i])); };
+        const std::uint32_t length = byte(0) << 24 | byte(1) << 16 | byte(2) << 8 | byte(3);
+        if (std::size_t{length} + 12 > bytes.size() - at)
+            fail("a chunk declares " + std::to_string(length) + " bytes, more than the file has");
+        at += 12 + std::size_t{length};
+    }
     const auto* begin = reinterpret_cast<const unsigned char*>(bytes.data());
     const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels_in_file = 0;

@@ -225,6 +225,18 @@ SCENARIO("--compare reads PNG files of a size it can hold, and refuses others be
                                 Contains("big.png: its header declares 2050x65534 pixels"));
         }
     }
+    GIVEN(
+        "a PNG whose second chunk declares 273 MB in a file of 44 bytes (fuzz_compare: stb "
+        "grew a buffer to 2 GiB for it before reading)") {
+        const std::string png(
+            "\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x04\0\0\0\x03"
+            "\x08\x02\0\0\0\0\0\0\0\x10\x49\x44\x41IDATxyz",
+            44);
+        THEN("it is refused, naming the chunk's length") {
+            REQUIRE_THROWS_WITH(decode_png(png, "cut.png"),
+                                Contains("cut.png: a chunk declares 273237057 bytes"));
+        }
+    }
     GIVEN("an image in another format stb reads (the GIF's header)") {
         const std::string gif("GIF89a\x02\x08\xfe\xff\0\0\0", 13);
         THEN("it is refused as not a PNG file, so stb's other readers never see it") {
