@@ -16,7 +16,7 @@ MPI_DEBS   := openmpi-bin libopenmpi-dev
 FUZZ_DEBS    := clang libclang-rt-14-dev libomp-14-dev
 FUZZ_BUILD   ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS := obj lua_scene options
+FUZZ_TARGETS := obj lua_scene options journal stats compare vdb
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: deps bench-deps mpi-deps mpi configure rt test test-exercises test-assignments assignment grade \
@@ -238,7 +238,8 @@ charts: bench-deps configure
 	cmake --build $(BUILD) -j $(JOBS)
 	bash tests/perf/charts.sh $(BUILD)
 
-# Fuzz the OBJ reader, the Lua scene loader and the command line, FUZZ_SECONDS each (60 by
+# Fuzz each reader of untrusted bytes (OBJ, scene scripts, the command line, --resume's
+# journal, .stats files, --compare's images, NanoVDB grids), FUZZ_SECONDS each (60 by
 # default; make fuzz FUZZ_SECONDS=600 for longer), built with clang, libFuzzer, ASan and UBSan
 # in their own folder. Never part of make test, which replays the corpus instead.
 fuzz:

@@ -685,7 +685,7 @@ void checkSurface(const Crossing& c, double t, bool entering, const rb::Material
 
 // [ch14-tie-test]
 SCENARIO(
-    "where A's and B's faces coincide the result reports A's; B's only where B alone bounds it",
+    "where A's and B's faces coincide the result reports A's, and B's only where B alone bounds it",
     "[ch14][ex14.1][ex14.3][ex14.4]") {
     static const rb::Box box;
     // A is the unit cube [0,1]³. Each B is a cube stretched to 2 in y and z, so that on the

@@ -87,6 +87,10 @@ void save_block_stats(const std::filesystem::path& path, const BlockStats& s) {
 BlockStats load_block_stats(const std::filesystem::path& path) {
     std::ifstream in(path);
     if (!in) throw std::runtime_error("cannot read " + path.string());
+    return parse_block_stats(in, path.string());
+}
+
+BlockStats parse_block_stats(std::istream& in, const std::string& source) {
     BlockStats s;
     std::string line, key;
     char x = 0;
@@ -108,12 +112,18 @@ BlockStats load_block_stats(const std::filesystem::path& path) {
             s.sigma[section].push_back(sigma);
         }
     }
+    // Sides within the golden renders' limit also keep the block and group counts from
+    // overflowing.
+    if (s.w > kMaxSide || s.h > kMaxSide || s.block > kMaxSide)
+        throw std::runtime_error(source + ": size " + std::to_string(s.w) + "x" +
+                                 std::to_string(s.h) + " or block " + std::to_string(s.block) +
+                                 " beyond " + std::to_string(kMaxSide) + " pixels");
     bool ok = s.w > 0 && s.h > 0 && s.block > 0 && s.renders >= 2 && section == 3;
     for (int i = 0; ok && i < 4; ++i) {
         const int g = BlockStats::kGroups[i];
         ok = s.mean[i].size() == 3 * static_cast<std::size_t>(s.groupsX(g) * s.groupsY(g));
     }
-    if (!ok) throw std::runtime_error(path.string() + ": not a block statistics file");
+    if (!ok) throw std::runtime_error(source + ": not a block statistics file");
     return s;
 }
 

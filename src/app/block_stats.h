@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ BlockStats block_stats(const std::vector<Image>& renders, int block = 8);
 /// line and "mean sigma" × 3 per group).
 void save_block_stats(const std::filesystem::path& path, const BlockStats& stats);
 BlockStats load_block_stats(const std::filesystem::path& path);
+/// Reads a statistics file's text from `in`; `source` names it in the message of the
+/// std::runtime_error thrown for text that is not one.
+BlockStats parse_block_stats(std::istream& in, const std::string& source);
 
 /// How the statistical check decides.
 struct StatisticalLimits {

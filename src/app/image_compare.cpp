@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <set>
@@ -23,9 +25,6 @@
 namespace rb::golden {
 
 namespace {
-
-/// Largest accepted render side; anything bigger is certainly a typo in a golden test.
-constexpr int kMaxSide = 16384;
 
 /// s without leading and trailing blanks.
 std::string_view trim(std::string_view s) {
@@ -63,15 +62,59 @@ Image Image::filled(int w, int h, float r, float g, float b) {
     return image;
 }
 
+namespace {
+
+/// Most pixels rt --compare reads from an image (8192 × 8192; the float copy takes 768 MiB).
+/// A file of a few bytes can declare a far larger one, which stb would allocate before
+/// reading a pixel.
+constexpr long long kMaxComparePixels = 1LL << 26;
+
+/// The 8 bytes every PNG file starts with.
+constexpr char kPngSignature[] = "\x89PNG\r\n\x1a\n";
+
+}  // namespace
+
 Image load_png(const std::filesystem::path& path) {
-    // Let stb convert grey and RGBA to 8-bit RGB; renders are opaque, so alpha is dropped
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read image " + path.string() + ": cannot open it");
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return decode_png(bytes, path.string());
+}
+
+Image decode_png(const std::string& bytes, const std::string& source) {
+    const auto fail = [&](const std::string& why) {
+        throw std::runtime_error("cannot read image " + source + ": " + why);
+    };
+    // stb also reads GIF, BMP, PSD, PNM and more; only PNG reaches it, which keeps those readers'
+    // bugs out of reach (stb 2.27's PNM header overflows an int, found by fuzz_compare)
+    if (bytes.compare(0, 8, kPngSignature, 8) != 0) fail("not a PNG file");
+    if (bytes.size() > std::size_t{std::numeric_limits<int>::max()}) fail("over 2 GiB");
+    // Each chunk up to IEND (length, type, data, CRC) must fit in the file: stb grows its buffer
+    // to a chunk's declared length before it reads the data (2 GiB for an 82-byte file, found
+    // by fuzz_compare)
+    for (std::size_t at = 8; bytes.size() - at >= 8 && bytes.compare(at + 4, 4, "IEND") != 0;) {
+        const auto byte = [&](std::size_t i) { return std::uint32_t(std::uint8_t(bytes[at + i])); };
+        const std::uint32_t length = byte(0) << 24 | byte(1) << 16 | byte(2) << 8 | byte(3);
+        if (std::size_t{length} + 12 > bytes.size() - at)
+            fail("a chunk declares " + std::to_string(length) + " bytes, more than the file has");
+        at += 12 + std::size_t{length};
+    }
+    const auto* begin = reinterpret_cast<const unsigned char*>(bytes.data());
+    const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels_in_file = 0;
+    if (stbi_info_from_memory(begin, size, &w, &h, &channels_in_file) &&
+        (w > kMaxSide || h > kMaxSide || static_cast<long long>(w) * h > kMaxComparePixels)) {
+        fail("its header declares " + std::to_string(w) + "x" + std::to_string(h) +
+             " pixels, more than rt --compare reads (" + std::to_string(kMaxSide) + " a side, " +
+             std::to_string(kMaxComparePixels) + " in all)");
+    }
+
+    // Let stb convert grey and RGBA to 8-bit RGB; renders are opaque, so alpha is dropped
     std::unique_ptr<unsigned char, void (*)(void*)> data(
-        stbi_load(path.c_str(), &w, &h, &channels_in_file, 3), stbi_image_free);
+        stbi_load_from_memory(begin, size, &w, &h, &channels_in_file, 3), stbi_image_free);
     if (!data) {
         const char* why = stbi_failure_reason();
-        throw std::runtime_error("cannot read image " + path.string() + ": " +
-                                 (why ? why : "unknown error"));
+        fail(why ? why : "unknown error");
     }
 
     // Convert to float in [0, 1]

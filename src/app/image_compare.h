@@ -34,10 +34,16 @@ struct Image {
 /// Loads a PNG (8-bit grey, RGB or RGBA; alpha is ignored) as float RGB in [0, 1]; throws
 /// std::runtime_error naming the file when it cannot be read.
 Image load_png(const std::filesystem::path& path);
+/// load_png on a PNG file's bytes, already read; `source` names them in the message.
+Image decode_png(const std::string& bytes, const std::string& source);
 
 /// Writes an image as 8-bit RGB PNG (channels clamped to [0, 1] and rounded); throws
 /// std::runtime_error on failure.
 void save_png(const std::filesystem::path& path, const Image& image);
+
+/// Largest render side a thresholds or statistics file may state; anything bigger is certainly
+/// a typo in a golden test.
+inline constexpr int kMaxSide = 16384;
 
 /// How one golden image is rendered and how far a render may stray from it (NAME.txt).
 struct Thresholds {

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <vector>
 
 namespace rb {
@@ -48,7 +49,7 @@ struct GridEntry {
 }
 
 /// Read `bytes` bytes at the current position of `in`; the caller has checked they exist.
-void readBytes(std::ifstream& in, void* out, std::uint64_t bytes, const std::string& path) {
+void readBytes(std::istream& in, void* out, std::uint64_t bytes, const std::string& path) {
     in.read(static_cast<char*>(out), static_cast<std::streamsize>(bytes));
     if (!in) corrupt(path, "reading it failed");
 }
@@ -80,7 +81,7 @@ InputError notNanoVdb(const std::string& path, std::uint64_t magic) {
 /// Every grid of the open file `in` (`fileSize` bytes). A file is a list of segments: a header,
 /// one description and name per grid, then the grids' bytes. Every size the file declares is
 /// checked against the bytes that really follow before it is trusted.
-std::vector<GridEntry> readDirectory(std::ifstream& in, std::uint64_t fileSize,
+std::vector<GridEntry> readDirectory(std::istream& in, std::uint64_t fileSize,
                                      const std::string& path) {
     std::vector<GridEntry> grids;
     std::uint64_t offset = 0;
@@ -360,20 +361,11 @@ class VdbDensity final : public DensityField {
     AABB bounds_;
 };
 
-}  // namespace
-
-std::shared_ptr<const DensityField> loadVdbDensity(const std::string& path,
+/// Load grid `gridName` of the NanoVDB file in `in`, `fileSize` bytes, named `path` in messages.
+std::shared_ptr<const DensityField> loadFromStream(std::istream& in, std::uint64_t fileSize,
+                                                   const std::string& path,
                                                    const std::string& gridName,
                                                    const MemoryBudget* memory) {
-    // The file and its real size
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (!std::filesystem::exists(status)) throw InputError(path + ": no such file");
-    if (!std::filesystem::is_regular_file(status)) throw InputError(path + ": not a file");
-    const std::uint64_t fileSize = std::filesystem::file_size(path, error);
-    if (error) throw InputError(path + ": cannot read its size (" + error.message() + ")");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open it for reading");
     if (fileSize == 0) throw InputError(path + ": empty file, not a NanoVDB file");
 
     // The grid asked for
@@ -428,6 +420,31 @@ std::shared_ptr<const DensityField> loadVdbDensity(const std::string& path,
                                         grid, empty);
 }
 
+}  // namespace
+
+std::shared_ptr<const DensityField> loadVdbDensity(const std::string& path,
+                                                   const std::string& gridName,
+                                                   const MemoryBudget* memory) {
+    // The file and its real size
+    std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    if (!std::filesystem::exists(status)) throw InputError(path + ": no such file");
+    if (!std::filesystem::is_regular_file(status)) throw InputError(path + ": not a file");
+    const std::uint64_t fileSize = std::filesystem::file_size(path, error);
+    if (error) throw InputError(path + ": cannot read its size (" + error.message() + ")");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot open it for reading");
+    return loadFromStream(in, fileSize, path, gridName, memory);
+}
+
+std::shared_ptr<const DensityField> loadVdbDensityBytes(const std::string& bytes,
+                                                        const std::string& name,
+                                                        const std::string& gridName,
+                                                        const MemoryBudget* memory) {
+    std::istringstream in(bytes);
+    return loadFromStream(in, bytes.size(), name, gridName, memory);
+}
+
 bool vdbSupported() {
     return true;
 }
@@ -444,6 +461,12 @@ std::shared_ptr<const DensityField> loadVdbDensity(const std::string& path, cons
                      ": this build of raybook cannot read VDB files (NanoVDB's headers "
                      "were missing when it was configured): run make deps, which "
                      "installs libnanovdb-dev, then configure and build again");
+}
+
+std::shared_ptr<const DensityField> loadVdbDensityBytes(const std::string&, const std::string& name,
+                                                        const std::string& gridName,
+                                                        const MemoryBudget* memory) {
+    return loadVdbDensity(name, gridName, memory);
 }
 
 bool vdbSupported() {

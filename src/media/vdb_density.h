@@ -25,6 +25,12 @@ std::shared_ptr<const DensityField> loadVdbDensity(const std::string& path,
                                                    const std::string& gridName,
                                                    const MemoryBudget* memory);
 
+/// loadVdbDensity on a NanoVDB file's bytes, already read; `name` names them in messages.
+std::shared_ptr<const DensityField> loadVdbDensityBytes(const std::string& bytes,
+                                                        const std::string& name,
+                                                        const std::string& gridName,
+                                                        const MemoryBudget* memory);
+
 /// True when this build can read VDB files (NanoVDB headers found).
 bool vdbSupported();
 

@@ -105,6 +105,11 @@ std::vector<JournalTile> readJournal(const std::string& path, const RenderIdenti
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError("--resume: cannot read the journal " + path);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return readJournalBytes(bytes, path, identity);
+}
+
+std::vector<JournalTile> readJournalBytes(const std::string& bytes, const std::string& path,
+                                          const RenderIdentity& identity) {
     // Step 1: the header must be a journal's, written for this render.
     const std::string expected = headerOf(identity);
     if (bytes.rfind(kJournalMagic, 0) != 0)
@@ -138,7 +143,9 @@ std::vector<JournalTile> readJournal(const std::string& path, const RenderIdenti
         const std::size_t size = 12 + std::size_t{count} * sizeof(float) + 8;
         if (bytes.size() - at < size) break;
         JournalTile tile{position, std::vector<float>(count)};
-        std::memcpy(tile.pixels.data(), bytes.data() + at + 12, count * sizeof(float));
+        // An empty vector's data() may be null, which memcpy must not get even for 0 bytes.
+        if (count > 0)
+            std::memcpy(tile.pixels.data(), bytes.data() + at + 12, count * sizeof(float));
         std::uint64_t sum = 0;
         std::memcpy(&sum, bytes.data() + at + size - 8, 8);
         if (sum != recordChecksum(position, count, tile.pixels.data())) break;

@@ -54,4 +54,8 @@ class JournalWriter {
 /// no journal, or one written for another render (naming what differs).
 std::vector<JournalTile> readJournal(const std::string& path, const RenderIdentity& identity);
 
+/// readJournal on the journal's bytes, already read; `path` names it in messages.
+std::vector<JournalTile> readJournalBytes(const std::string& bytes, const std::string& path,
+                                          const RenderIdentity& identity);
+
 }  // namespace rb

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+#include <sstream>
 
 using rb::golden::BlockStats;
 using rb::golden::Image;
@@ -149,6 +150,20 @@ SCENARIO("the statistics file keeps what was measured", "[golden][stats]") {
             }
         }
         std::filesystem::remove(path);
+    }
+}
+
+SCENARIO("a statistics file must state a size a golden render can have", "[golden][stats]") {
+    GIVEN("a file whose width is 2^31 - 1 (found by fuzz_stats: the block count overflowed)") {
+        std::istringstream in(
+            "size 2147483647x12\nblock 8\nrenders 4\ngroups 1\ngroups 2\n"
+            "groups 4\ngroups 8\n");
+        THEN("it is refused, naming the file, the size and the limit") {
+            REQUIRE_THROWS_WITH(
+                rb::golden::parse_block_stats(in, "golden/x.stats"),
+                Catch::Matchers::Contains("golden/x.stats: size 2147483647x12 or block 8") &&
+                    Catch::Matchers::Contains("beyond 16384 pixels"));
+        }
     }
 }
 

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "app/compare.h"
 #include "app/image_compare.h"
@@ -206,6 +207,40 @@ SCENARIO("a PNG round trip keeps every 8-bit value", "[golden]") {
         THEN("loading throws, naming the file") {
             REQUIRE_THROWS_WITH(load_png("/nonexistent/golden.png"),
                                 Contains("/nonexistent/golden.png"));
+        }
+    }
+}
+
+SCENARIO("--compare reads PNG files of a size it can hold, and refuses others before decoding",
+         "[golden]") {
+    // Inputs that fuzz_compare found (tests/fuzz/README.md, findings 10 and 13), reduced, and
+    // what the refusal must say.
+    struct Case {
+        const char* given;
+        std::string bytes;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"the 33-byte start of a PNG whose header declares 2050 x 65534 pixels (the size of a "
+         "41-byte GIF for which stb allocated 1.4 GB)",
+         std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\x08\x02\0\0\xff\xfe"
+                     "\x08\x02\0\0\0\0\0\0\0",
+                     33),
+         "x.png: its header declares 2050x65534 pixels"},
+        {"a PNG whose second chunk declares 273 MB in a file of 44 bytes (stb grew a buffer to "
+         "2 GiB for it before reading)",
+         std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x04\0\0\0\x03"
+                     "\x08\x02\0\0\0\0\0\0\0\x10\x49\x44\x41IDATxyz",
+                     44),
+         "x.png: a chunk declares 273237057 bytes"},
+        {"an image in another format stb reads (the GIF's header), whose readers stb never runs",
+         std::string("GIF89a\x02\x08\xfe\xff\0\0\0", 13), "x.png: not a PNG file"},
+    };
+    for (const Case& c : cases) {
+        GIVEN(c.given) {
+            THEN("it is refused, saying why and naming the file") {
+                REQUIRE_THROWS_WITH(decode_png(c.bytes, "x.png"), Contains(c.message));
+            }
         }
     }
 }
