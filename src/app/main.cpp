@@ -81,6 +81,37 @@ void printFeatures(const FeatureSet& set) {
                     f.title, f.switchable ? "" : " (core)");
 }
 
+/// The target error of render `job`: the command line's --target-error, --min-spp and
+/// --max-spp, else the scene's target_error, min_spp and max_spp, else off. Throws InputError
+/// for a target that cannot work.
+TargetError targetErrorFor(const CommandLine& cl, const RenderJob& job) {
+    TargetError target;
+    const auto scene = [&](const char* name, double fallback) {
+        const auto it = job.options.find(name);
+        return it == job.options.end() ? fallback : it->second;
+    };
+    target.error = cl.targetError > 0 ? cl.targetError : scene("target_error", 0.0);
+    target.minSamples =
+        cl.minSpp > 0 ? cl.minSpp : static_cast<int>(scene("min_spp", target.minSamples));
+    target.maxSamples =
+        cl.maxSpp > 0 ? cl.maxSpp : static_cast<int>(scene("max_spp", target.maxSamples));
+    if (!target.on()) {
+        if (cl.minSpp > 0 || cl.maxSpp > 0)
+            throw InputError(
+                "--min-spp and --max-spp bound --target-error, which is not given "
+                "(on the command line or as the scene's target_error)");
+        return target;
+    }
+    checkTargetError(target, cl.targetError > 0 ? std::string("--target-error") : job.where);
+    return target;
+}
+
+/// Where --aov sample-count puts the heat map: "out.png" becomes "out.samples.png".
+std::string sampleMapPath(const std::string& output) {
+    std::filesystem::path path(output);
+    return path.replace_extension(".samples.png").string();
+}
+
 /// What makes render `job` of the command line `cl` the same render: rt's version, the scene
 /// file's bytes, the size, the seed and the sampling options. A journal (--resume) written under
 /// other values is refused, and so are ranks that disagree.
@@ -88,10 +119,13 @@ RenderIdentity renderIdentity(const CommandLine& cl, const RenderJob& job,
                               const std::string& output) {
     std::ifstream in(cl.scene, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::string sampling = "features " + cl.features + ", spp " +
-                           std::to_string(cl.samplesPerPixel) + ", max-depth " +
-                           std::to_string(cl.maxDepth) + (cl.legacy ? ", legacy" : "") +
-                           (cl.modern ? ", modern" : "") + (cl.lenient ? ", lenient" : "");
+    std::string sampling =
+        "features " + cl.features + ", spp " + std::to_string(cl.samplesPerPixel) + ", max-depth " +
+        std::to_string(cl.maxDepth) + (cl.legacy ? ", legacy" : "") +
+        (cl.modern ? ", modern" : "") + (cl.lenient ? ", lenient" : "") +
+        (cl.targetError > 0 ? ", target-error " + std::to_string(cl.targetError) : "") +
+        (cl.minSpp > 0 ? ", min-spp " + std::to_string(cl.minSpp) : "") +
+        (cl.maxSpp > 0 ? ", max-spp " + std::to_string(cl.maxSpp) : "");
     for (const auto& [name, value] : cl.featureOptions) sampling += ", " + name + " " + value;
     for (const std::string& dialect : cl.dialects) sampling += ", dialect " + dialect;
     return {output,
@@ -262,6 +296,22 @@ int run(int argc, char** argv, Cluster& cluster) {
         const RenderIdentity identity = renderIdentity(cl, world->source.job, output);
         settings.identity = &identity;
         settings.resume = cl.resume;
+        settings.target = targetErrorFor(cl, world->source.job);
+        if (cl.aovSampleCount && !settings.target.on())
+            throw InputError(
+                "--aov sample-count maps the samples of a --target-error render; "
+                "give --target-error E (or the scene's target_error)");
+        // The samples each pixel took are known where it was rendered: on one process.
+        std::optional<SampleMap> sampleMap;
+        if (settings.target.on() && !cluster.distributed()) {
+            sampleMap.emplace(world->source.job.width, world->source.job.height,
+                              settings.target.minSamples);
+            settings.sampleMap = &*sampleMap;
+        }
+        if (cl.aovSampleCount && !sampleMap)
+            throw InputError(
+                "--aov sample-count: under MPI the ranks bring back only colours; "
+                "render on one process for the heat map");
         PartialImage partial;
         if (cl.partial) settings.partial = &partial;
         RayCounters counters;
@@ -305,6 +355,11 @@ int run(int argc, char** argv, Cluster& cluster) {
             throw InputError(world->source.job.where + ": " + e.what());
         }
         const double writeSeconds = since(t0);
+        if (cl.aovSampleCount) {
+            const std::string path = sampleMapPath(output);
+            writePng(sampleHeatMap(*sampleMap), path);
+            if (!cl.quiet) std::fprintf(stderr, "wrote %s (samples per pixel)\n", path.c_str());
+        }
         cluster.imageWritten();
         if (!cl.quiet)
             std::fprintf(stderr, "wrote %s (%dx%d)\n", output.c_str(), world->source.job.width,
@@ -334,6 +389,18 @@ int run(int argc, char** argv, Cluster& cluster) {
             for (const auto& pass : pipeline.prePasses)
                 if (const std::string line = pass->statistics(); !line.empty())
                     std::fprintf(stderr, "  %s\n", line.c_str());
+            if (settings.target.on()) {
+                std::fprintf(stderr,
+                             "  target     error %.4g; %d pilot samples, then %d to %d per pixel\n",
+                             settings.target.error, settings.target.minSamples,
+                             settings.target.minSamples, settings.target.maxSamples);
+                if (sampleMap)
+                    std::fprintf(stderr,
+                                 "  samples    mean %.1f, max %u per pixel; estimated RMS error "
+                                 "%.4g\n",
+                                 sampleMap->meanSamples(), sampleMap->maxSamples(),
+                                 sampleMap->rmsError());
+            }
             std::fprintf(stderr, "  speed      %.2f Mrays/s\n",
                          counters.total() / std::max(renderSeconds, 1e-9) / 1e6);
             std::fprintf(stderr, "  instances  %zu\n", scene.instances.size());

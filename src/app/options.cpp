@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 
 #include "core/error.h"
 #include "core/from_chars.h"
 #include "core/image.h"
+#include "core/target_error.h"
 
 namespace rb {
 
@@ -20,6 +22,16 @@ long long parseInteger(const std::string& option, const std::string& text, long 
     if (ec != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
         throw InputError(option + ": expected a whole number from " + std::to_string(lo) + " to " +
                          std::to_string(hi) + ", got '" + text + "'");
+    return v;
+}
+
+/// A positive finite number (--target-error).
+double parsePositive(const std::string& option, const std::string& text) {
+    double v = 0;
+    const auto [end, ec] = rb::fromChars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v) || v <= 0)
+        throw InputError(option + ": expected a number above 0 (for example 0.02), got '" + text +
+                         "'");
     return v;
 }
 
@@ -122,6 +134,22 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             if (cl.mpiLease != "dynamic" && cl.mpiLease != "static")
                 throw InputError("--mpi-lease: expected dynamic or static, got '" + cl.mpiLease +
                                  "'");
+        } else if (name == "--target-error")
+            cl.targetError = parsePositive(name, next());
+        else if (name == "--min-spp")
+            cl.minSpp =
+                static_cast<int>(parseInteger(name, next(), kTargetMinSamples, kTargetMaxSamples));
+        else if (name == "--max-spp")
+            cl.maxSpp =
+                static_cast<int>(parseInteger(name, next(), kTargetMinSamples, kTargetMaxSamples));
+        else if (name == "--aov") {
+            const std::string what = next();
+            if (what != "sample-count")
+                throw InputError(
+                    "--aov: expected sample-count (a heat map of the samples each "
+                    "pixel took, under --target-error), got '" +
+                    what + "'");
+            cl.aovSampleCount = true;
         } else if (name == "--unsafe-lua")
             cl.unsafeLua = true;
         else if (findFeatureOption(built, name))
@@ -177,6 +205,16 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
                                                                 default: 0
   --spp N            samples per pixel                          default: 1, one ray
                                                                 through each pixel centre
+  --target-error E   render to an RMS error of E (linear units, 1 = white; e.g.
+                     0.02): a pilot of --min-spp samples a pixel measures its
+                     spread, then each pixel takes fresh samples in proportion to
+                     it; replaces --spp and the scene's antialiasing
+                                   default: the scene's target_error, else off
+  --min-spp N        pilot samples, and the fewest fresh ones a pixel takes
+                                                                default: 8
+  --max-spp N        the most fresh samples a pixel takes       default: 4096
+  --aov sample-count write NAME.samples.png beside the image: a heat map of the
+                     samples each pixel took (black none, white the most)
   --max-depth N      recursion limit for secondary rays         default: the scene's
                                                                 max_depth, else 5
   --size WxH         override the image size                    default: gr.render's

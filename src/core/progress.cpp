@@ -135,11 +135,18 @@ std::string formatProgressLine(const ProgressReport& report) {
         std::snprintf(rays, sizeof rays, "%.1f Mrays/s", report.raysPerSecond / 1e6);
     else
         std::snprintf(rays, sizeof rays, "%.1f krays/s", report.raysPerSecond / 1e3);
-    char line[160];
+    char line[200];
     std::snprintf(line, sizeof line, "[%s] %3d%%  elapsed %s  ETA %s  %s", bar.c_str(),
                   static_cast<int>(100 * fraction), formatDuration(report.elapsedSeconds).c_str(),
                   eta.c_str(), rays);
-    return line;
+    std::string text = line;
+    // Under a target error, the error so far against the target: "error 0.018/0.02".
+    if (report.error) {
+        char error[64];
+        std::snprintf(error, sizeof error, "  error %.3g/%.3g", *report.error, report.targetError);
+        text += error;
+    }
+    return text;
 }
 
 }  // namespace rb

@@ -107,6 +107,8 @@ struct ProgressReport {
     double elapsedSeconds = 0.0;       ///< Wall-clock seconds since the render started.
     std::optional<double> etaSeconds;  ///< Estimated seconds left; empty while unknown.
     double raysPerSecond = 0.0;        ///< Rays traced per wall-clock second.
+    std::optional<double> error;       ///< Under --target-error: the finished pixels' RMS error.
+    double targetError = 0.0;          ///< ... and the target.
 };
 
 /// A duration for people: "3.4 s" below a minute, "2 min 05 s" below an hour, else "1 h 02 min".

@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <mutex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -63,8 +66,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 class ProgressBar {
   public:
     /// A bar for the units of `tiles`; draws nothing unless `enabled`.
-    ProgressBar(bool enabled, const std::vector<ImageTile>& tiles)
-        : enabled_(enabled), estimator_(workUnits(tiles)) {}
+    ProgressBar(bool enabled, const std::vector<ImageTile>& tiles, const TargetError& target,
+                std::vector<WorkUnit> units)
+        : enabled_(enabled), estimator_(std::move(units)), tiles_(tiles), target_(target) {}
 
     /// Record that a thread starts tile `index`.
     void tileStarted(int index) {
@@ -73,13 +77,16 @@ class ProgressBar {
         estimator_.start(index, secondsSince(start_));
     }
 
-    /// Record that tile `index` is finished, having traced `rays` rays.
-    void tileDone(int index, std::uint64_t rays) {
+    /// Record that tile `index` is finished, having traced `rays` rays; under a target error,
+    /// the sum of its pixels' variances of the mean is `varianceSum`.
+    void tileDone(int index, std::uint64_t rays, double varianceSum = 0.0) {
         if (!enabled_) return;
         const std::lock_guard<std::mutex> lock(mutex_);
         const double elapsed = secondsSince(start_);
         estimator_.finish(index, elapsed);
         rays_ += rays;
+        varianceSum_ += varianceSum;
+        pixelsDone_ += tiles_[index].pixels();
         if (throttle_.due(elapsed) && elapsed > 0.0) draw(elapsed);
     }
 
@@ -99,6 +106,11 @@ class ProgressBar {
         // Until every band of the image has been measured, an ETA would be a guess.
         if (estimator_.representative()) report.etaSeconds = estimator_.secondsLeft(elapsed);
         report.raysPerSecond = static_cast<double>(rays_) / elapsed;
+        // Under a target error: the RMS error of the pixels finished so far, against it.
+        if (target_.on() && pixelsDone_ > 0) {
+            report.error = std::sqrt(varianceSum_ / static_cast<double>(pixelsDone_));
+            report.targetError = target_.error;
+        }
         const std::string line = formatProgressLine(report);
         // Pad with spaces to cover a longer previous line.
         const int length = static_cast<int>(line.size());
@@ -111,7 +123,11 @@ class ProgressBar {
     std::mutex mutex_;
     WorkEstimator estimator_;       // guarded by mutex_
     RedrawThrottle throttle_{0.1};  // guarded by mutex_: at most 10 redraws a second
+    const std::vector<ImageTile>& tiles_;
+    TargetError target_;
     std::uint64_t rays_ = 0;        // guarded by mutex_
+    double varianceSum_ = 0.0;      // guarded by mutex_: finished pixels' variances of the mean
+    std::uint64_t pixelsDone_ = 0;  // guarded by mutex_
     int width_ = 0;                 // guarded by mutex_: widest line drawn
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
@@ -142,17 +158,152 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
         }
 }
 
+// [target-error-tile]
+/// Take samples first, first + 1, ... of pixel (x, y), `count` of them, and return their
+/// moments. Each is independent: a uniformly jittered film position and, through a lens
+/// (chapter 13), a uniform lens point. (Strata shared between a pixel's samples would make
+/// their spread overstate the error of their mean.) Sample s draws what an --spp render's
+/// sample s draws.
+RunningMoments samplePixel(int x, int y, int first, int count, const Integrator& integrator,
+                           const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
+                           std::uint64_t seed, RayCounters& rays) {
+    const std::uint64_t pixelIndex = static_cast<std::uint64_t>(y) * width + x;
+    RunningMoments moments;
+    for (int s = first; s < first + count; ++s) {
+        Sampler sampler(seed, pixelIndex, s);
+        const Vec2 offset = sampler.next2D();
+        const Vec2 film(x + offset.x, y + offset.y);
+        const Ray ray = lens ? lens->generate(camera, film, {seed, pixelIndex, 0, 1}, sampler)
+                             : camera.generateRay(film.x, film.y);
+        rays.add(RayKind::Camera);
+        moments.add(integrator.trace(ray, sampler, rays, 0));
+    }
+    return moments;
+}
+
+/// Stage 1 for one tile: each pixel's pilot samples (0 ... floor − 1), and their channel
+/// variance into `pilot` (row-major, the image's width).
+void pilotTile(const ImageTile& tile, const Integrator& integrator, const PinholeCamera& camera,
+               const CameraRayGenerator* lens, int width, std::uint64_t seed,
+               const TargetError& target, std::vector<float>& pilot, RayCounters& rays) {
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x)
+            pilot[static_cast<std::size_t>(y) * width + x] = static_cast<float>(
+                samplePixel(x, y, 0, target.minSamples, integrator, camera, lens, width, seed, rays)
+                    .channelVariance());
+}
+
+/// Stage 3 for one tile: each pixel's planned fresh samples, after the pilot's; the pixel is
+/// their mean. Returns the sum over the tile's pixels of s²/n (for the progress line).
+double renderTileToError(const ImageTile& tile, const Integrator& integrator,
+                         const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
+                         std::uint64_t seed, const TargetError& target,
+                         const std::vector<std::uint32_t>& plan, Image& image, SampleMap* map,
+                         RayCounters& rays) {
+    double varianceSum = 0.0;
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            const auto count = static_cast<int>(plan[static_cast<std::size_t>(y) * width + x]);
+            const RunningMoments moments = samplePixel(x, y, target.minSamples, count, integrator,
+                                                       camera, lens, width, seed, rays);
+            image.set(x, y, moments.mean());
+            if (map) map->record(x, y, moments);
+            varianceSum += moments.channelVariance() / count;
+        }
+    return varianceSum;
+}
+// [target-error-tile]
+
 /// Render one tile with the pipeline's pixel sampler (chapter 8) when one is installed, else
-/// with the core's loop, so a scene without antialiasing pays one test per tile.
-void renderImageTile(const ImageTile& tile, const Pipeline& pipeline, const Integrator& integrator,
-                     const PinholeCamera& camera, int width, int height, int spp,
-                     std::uint64_t seed, Image& image, RayCounters& rays) {
+/// with the core's loop, so a scene without antialiasing pays one test per tile. Under a target
+/// error the core's adaptive loop renders it (returning its variance sum; 0 otherwise).
+double renderImageTile(const ImageTile& tile, const Pipeline& pipeline,
+                       const Integrator& integrator, const PinholeCamera& camera, int width,
+                       int height, const RenderSettings& settings,
+                       const std::vector<std::uint32_t>& plan, SampleMap* map, Image& image,
+                       RayCounters& rays) {
+    const int spp = std::max(1, settings.samplesPerPixel);
+    const std::uint64_t seed = settings.seed;
+    if (settings.target.on())
+        return renderTileToError(tile, integrator, camera, pipeline.cameraRays.get(), width, seed,
+                                 settings.target, plan, image, map, rays);
     if (pipeline.pixelSampler)
         pipeline.pixelSampler->renderTile(tile, integrator, camera, width, height, seed, image,
                                           rays);
     else
         renderTile(tile, integrator, camera, pipeline.cameraRays.get(), width, spp, seed, image,
                    rays);
+    return 0.0;
+}
+
+/// The progress estimator's view of a target-error render: each tile's work is the fresh
+/// samples planned for its pixels.
+std::vector<WorkUnit> plannedWork(const std::vector<ImageTile>& tiles,
+                                  const std::vector<std::uint32_t>& plan, int width) {
+    std::vector<WorkUnit> units;
+    units.reserve(tiles.size());
+    for (const ImageTile& t : tiles) {
+        double samples = 0.0;
+        for (int y = t.y0; y < t.y1; ++y)
+            for (int x = t.x0; x < t.x1; ++x)
+                samples += plan[static_cast<std::size_t>(y) * width + x];
+        units.push_back({samples, t.stratum});
+    }
+    return units;
+}
+
+/// Stage 1 of a target-error render: every pixel's pilot variance (row-major). On one
+/// process the tiles go to threads; under a cluster, process r takes tiles r, r + size, ...
+/// and every process receives every tile's values. Throws RenderStopped when asked to stop,
+/// and a tile's exception after the others finish.
+std::vector<float> pilotVariances(const std::vector<ImageTile>& tiles, const Integrator& integrator,
+                                  const PinholeCamera& camera, const CameraRayGenerator* lens,
+                                  int width, int height, const RenderSettings& settings,
+                                  int threads, std::vector<RayCounters>& perThread) {
+    std::vector<float> pilot(static_cast<std::size_t>(width) * height, 0.0f);
+    Cluster* cluster =
+        settings.cluster && settings.cluster->distributed() ? settings.cluster : nullptr;
+    const int rank = cluster ? cluster->rank() : 0, size = cluster ? cluster->size() : 1;
+    const int count = static_cast<int>(tiles.size());
+    std::atomic<bool> stopped{false}, failed{false};
+    std::exception_ptr failure;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (int k = rank; k < count; k += size) {
+        if (stopped.load(std::memory_order_relaxed) || failed.load(std::memory_order_relaxed))
+            continue;
+        if (settings.shouldStop && settings.shouldStop()) {
+            stopped = true;
+            continue;
+        }
+        try {
+            pilotTile(tiles[k], integrator, camera, lens, width, settings.seed, settings.target,
+                      pilot, perThread[omp_get_thread_num()]);
+        } catch (...) {
+#pragma omp critical(rb_render_failure)
+            if (!failure) failure = std::current_exception();
+            failed = true;
+        }
+    }
+    if (failure) std::rethrow_exception(failure);
+    if (stopped) throw RenderStopped("the render was stopped before it finished", 1);
+    if (!cluster) return pilot;
+    // Under a cluster: this process's tiles' values, in tile order, to every process.
+    std::vector<float> mine;
+    for (int k = rank; k < count; k += size)
+        for (int y = tiles[k].y0; y < tiles[k].y1; ++y)
+            for (int x = tiles[k].x0; x < tiles[k].x1; ++x)
+                mine.push_back(pilot[static_cast<std::size_t>(y) * width + x]);
+    const std::vector<std::byte> all = cluster->joinInOrder(std::as_bytes(std::span(mine)));
+    std::size_t at = 0;
+    for (int r = 0; r < size; ++r)
+        for (int k = r; k < count; k += size)
+            for (int y = tiles[k].y0; y < tiles[k].y1; ++y)
+                for (int x = tiles[k].x0; x < tiles[k].x1; ++x) {
+                    std::memcpy(&pilot[static_cast<std::size_t>(y) * width + x], all.data() + at,
+                                sizeof(float));
+                    at += sizeof(float);
+                }
+    return pilot;
 }
 
 }  // namespace
@@ -180,13 +331,21 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     std::vector<RayCounters> perThread(threads);
     const std::vector<ImageTile> tiles = tilesInRenderOrder(width, height);
     if (settings.tileThreads) settings.tileThreads->assign(tiles.size(), -1);
-    ProgressBar progress(settings.progress, tiles);
-    const int spp = std::max(1, settings.samplesPerPixel);
+    // Under a target error (--target-error): the pilot, and each pixel's plan of fresh samples.
+    std::vector<std::uint32_t> plan;
+    if (settings.target.on()) {
+        const std::vector<float> pilot =
+            pilotVariances(tiles, integrator, camera, pipeline.cameraRays.get(), width, height,
+                           settings, threads, perThread);
+        plan = planSamples(pilot, width, height, settings.target);
+    }
+    ProgressBar progress(settings.progress, tiles, settings.target,
+                         plan.empty() ? workUnits(tiles) : plannedWork(tiles, plan, width));
     // Many processes (MPI): the cluster deals out the tiles and brings them back.
     if (settings.cluster && settings.cluster->distributed()) {
         const auto renderOne = [&](int k, Image& film, RayCounters& rays) {
-            renderImageTile(tiles[k], pipeline, integrator, camera, width, height, spp,
-                            settings.seed, film, rays);
+            renderImageTile(tiles[k], pipeline, integrator, camera, width, height, settings, plan,
+                            nullptr, film, rays);
         };
         const auto started = [&](int k) { progress.tileStarted(k); };
         const auto finished = [&](int k, std::uint64_t rays) { progress.tileDone(k, rays); };
@@ -226,16 +385,17 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         const std::uint64_t raysBefore = rays.total();
         progress.tileStarted(k);
         if (settings.tileThreads) (*settings.tileThreads)[k] = omp_get_thread_num();
+        double varianceSum = 0.0;
         try {
-            renderImageTile(tiles[k], pipeline, integrator, camera, width, height, spp,
-                            settings.seed, image, rays);
+            varianceSum = renderImageTile(tiles[k], pipeline, integrator, camera, width, height,
+                                          settings, plan, settings.sampleMap, image, rays);
         } catch (...) {
 #pragma omp critical(rb_render_failure)
             if (!failure) failure = std::current_exception();
             failed = true;
             continue;
         }
-        progress.tileDone(k, rays.total() - raysBefore);
+        progress.tileDone(k, rays.total() - raysBefore, varianceSum);
         ++tilesDone;
     }
     progress.finish();

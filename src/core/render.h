@@ -12,6 +12,7 @@
 #include "core/image.h"
 #include "core/integrator.h"
 #include "core/progress.h"
+#include "core/target_error.h"
 
 namespace rb {
 
@@ -46,6 +47,12 @@ struct RenderSettings {
     /// that every rank renders the same image.
     const RenderIdentity* identity = nullptr;
     bool resume = false;  ///< --resume: start from the journal beside the output.
+    /// --target-error: each pixel samples until its error is at most target.error (between a
+    /// floor and a ceiling), in place of samplesPerPixel and of any pixel sampler (chapter 8).
+    TargetError target;
+    /// Under a target, on one process: receives each pixel's sample count and spread (the
+    /// cluster brings back only colours). Null: not kept.
+    SampleMap* sampleMap = nullptr;
 };
 
 /// Side of the square tiles the render loop hands to threads, in pixels.

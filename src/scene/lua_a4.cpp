@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/image.h"
+#include "core/target_error.h"
 #include "scene/lua_scene.h"
 
 namespace rb {
@@ -456,6 +457,10 @@ void bindA4(LuaBindings& lua) {
     lua.function("option", luaGuard<grOption>);
     lua.option("max_depth", 4, 0, 1000, true);
     lua.option("min_weight", 4, 0, 1, false);
+    // Rendering to an error (--target-error): the target, its floor and its ceiling.
+    lua.option("target_error", 1, 1e-9, 1e9, false);
+    lua.option("min_spp", 1, kTargetMinSamples, kTargetMaxSamples, true);
+    lua.option("max_spp", 1, kTargetMinSamples, kTargetMaxSamples, true);
     lua.nodeMethod("add_child", luaGuard<nodeAddChild>);
     lua.nodeMethod("set_material", luaGuard<nodeSetMaterial>);
     lua.nodeMethod("scale", luaGuard<nodeScale>);

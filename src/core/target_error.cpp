@@ -1,0 +1,158 @@
+#include "core/target_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace rb {
+
+void checkTargetError(const TargetError& target, const std::string& where) {
+    const auto range = [](int lo, int hi) {
+        return "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
+    };
+    if (!(target.error > 0.0) || !std::isfinite(target.error))
+        throw InputError(where +
+                         ": the target error must be a number above 0 (for example "
+                         "0.02, a fiftieth of white), got " +
+                         std::to_string(target.error));
+    if (target.minSamples < kTargetMinSamples || target.minSamples > kTargetMaxSamples)
+        throw InputError(where + ": the floor (--min-spp) must be " +
+                         range(kTargetMinSamples, kTargetMaxSamples) + ", got " +
+                         std::to_string(target.minSamples));
+    if (target.maxSamples < kTargetMinSamples || target.maxSamples > kTargetMaxSamples)
+        throw InputError(where + ": the ceiling (--max-spp) must be " +
+                         range(kTargetMinSamples, kTargetMaxSamples) + ", got " +
+                         std::to_string(target.maxSamples));
+    if (target.maxSamples < target.minSamples)
+        throw InputError(where + ": the ceiling (--max-spp " + std::to_string(target.maxSamples) +
+                         ") is below the floor (--min-spp " + std::to_string(target.minSamples) +
+                         "); it must be at least the floor");
+}
+
+void RunningMoments::add(const Colour& x) {
+    // Welford: move the mean by the new sample's share, and add the product of its deviations
+    // from the old and the new mean to the sum of squares.
+    ++n_;
+    const Colour delta = x - mean_;
+    mean_ += delta / static_cast<double>(n_);
+    m2_ += delta * (x - mean_);
+}
+
+Colour RunningMoments::variance() const {
+    return n_ < 2 ? Colour(0.0) : m2_ / static_cast<double>(n_ - 1);
+}
+
+double RunningMoments::channelVariance() const {
+    const Colour v = variance();
+    return (v.r + v.g + v.b) / 3.0;
+}
+
+namespace {
+
+/// The count k·s clamped to [lo, hi], for a planning variance v (s = √v).
+double plannedCount(double v, double k, int lo, int hi) {
+    return std::clamp(std::ceil(k * std::sqrt(v)), static_cast<double>(lo),
+                      static_cast<double>(hi));
+}
+
+/// The predicted mean squared error of counts k·s for planning variances `v`: the mean of v/n.
+double predictedMse(const std::vector<double>& v, double k, int lo, int hi) {
+    double sum = 0.0;
+    for (double vi : v) sum += vi / plannedCount(vi, k, lo, hi);
+    return sum / static_cast<double>(v.size());
+}
+
+}  // namespace
+
+// [plan-samples]
+std::vector<std::uint32_t> planSamples(const std::vector<float>& pilotVariance, int width,
+                                       int height, const TargetError& target) {
+    const int lo = target.minSamples, hi = target.maxSamples;
+    // Step 1: each pixel's planning variance, the larger of its own and its 3 × 3 mean.
+    std::vector<double> v(pilotVariance.size(), 0.0);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            double sum = 0.0;
+            int count = 0;
+            for (int qy = std::max(0, y - 1); qy <= std::min(height - 1, y + 1); ++qy)
+                for (int qx = std::max(0, x - 1); qx <= std::min(width - 1, x + 1); ++qx) {
+                    sum += pilotVariance[static_cast<std::size_t>(qy) * width + qx];
+                    ++count;
+                }
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
+            v[i] = std::max(static_cast<double>(pilotVariance[i]), sum / count);
+        }
+    // Step 2: the smallest k whose predicted error is at most E. The error falls as k grows,
+    // until every pixel with any spread sits at the ceiling; find a k that is enough (or
+    // that reaches the ceiling everywhere), then bisect.
+    const double target2 = target.error * target.error;
+    double kLow = 0.0, kHigh = 1.0;
+    const double vMin = [&] {
+        double m = 0.0;
+        for (double vi : v)
+            if (vi > 0.0 && (m == 0.0 || vi < m)) m = vi;
+        return m;
+    }();
+    // k·√vMin ≥ the ceiling puts every pixel with a spread at the ceiling.
+    const double kCeiling = vMin > 0.0 ? hi / std::sqrt(vMin) : 1.0;
+    while (kHigh < kCeiling && predictedMse(v, kHigh, lo, hi) > target2) {
+        kLow = kHigh;
+        kHigh *= 2.0;
+    }
+    for (int i = 0; i < 64; ++i) {
+        const double mid = 0.5 * (kLow + kHigh);
+        (predictedMse(v, mid, lo, hi) > target2 ? kLow : kHigh) = mid;
+    }
+    // Step 3: the counts.
+    std::vector<std::uint32_t> counts(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+        counts[i] = static_cast<std::uint32_t>(plannedCount(v[i], kHigh, lo, hi));
+    return counts;
+}
+// [plan-samples]
+
+void SampleMap::record(int x, int y, const RunningMoments& moments) {
+    const std::size_t i = static_cast<std::size_t>(y) * width + x;
+    samples[i] = static_cast<std::uint32_t>(moments.count());
+    sampleVariance[i] = static_cast<float>(moments.channelVariance());
+}
+
+double SampleMap::meanSamples() const {
+    double sum = 0.0;
+    for (std::uint32_t n : samples) sum += n;
+    return samples.empty() ? 0.0 : pilot + sum / static_cast<double>(samples.size());
+}
+
+std::uint32_t SampleMap::maxSamples() const {
+    return samples.empty() ? 0 : pilot + *std::max_element(samples.begin(), samples.end());
+}
+
+double SampleMap::rmsError() const {
+    if (samples.empty()) return 0.0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        if (samples[i] > 0) sum += sampleVariance[i] / samples[i];
+    return std::sqrt(sum / static_cast<double>(samples.size()));
+}
+
+Image sampleHeatMap(const SampleMap& map) {
+    // A ramp of five stops, in linear RGB.
+    static const Colour kStops[] = {
+        {0.0, 0.0, 0.0}, {0.05, 0.1, 0.6}, {0.8, 0.1, 0.1}, {1.0, 0.85, 0.1}, {1.0, 1.0, 1.0}};
+    constexpr int kSegments = 4;
+    Image image(map.width, map.height);
+    const double top = std::sqrt(static_cast<double>(std::max<std::uint32_t>(1, map.maxSamples())));
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x) {
+            const std::uint32_t n =
+                map.pilot + map.samples[static_cast<std::size_t>(y) * map.width + x];
+            const double t = std::clamp(std::sqrt(static_cast<double>(n)) / top, 0.0, 1.0);
+            const int k = std::min(kSegments - 1, static_cast<int>(t * kSegments));
+            const double f = t * kSegments - k;
+            image.set(x, y, kStops[k] * (1.0 - f) + kStops[k + 1] * f);
+        }
+    return image;
+}
+
+}  // namespace rb
