@@ -1,0 +1,432 @@
+/// \file
+/// Chapter 1 tests: rendering to an error, not a sample count (--target-error).
+///
+/// The claims: the running moments are Welford's closed forms; the plan gives each pixel
+/// fresh samples in proportion to its pilot's spread, as few as reach the target; the error
+/// --stats reports is the error the image has against a converged one; the image is unbiased,
+/// where stopping each pixel when it looks converged is not (the same test finds that bias);
+/// a small, bright, rarely hit feature keeps its brightness at any target; the image is the
+/// same on 1 and 2 threads; and a target that cannot work is refused with the allowed range.
+/// The scenes are chapter 1's: spheres on black, whose edges are the only noise (a pixel's
+/// samples hit or miss).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "app/options.h"
+#include "core/error.h"
+#include "core/render.h"
+#include "core/target_error.h"
+#include "test_helpers.h"
+
+using rb::Vec3;
+
+namespace {
+
+constexpr int kWidth = 32, kHeight = 24;
+
+/// Spheres on black, lit from the camera. With `tiny`, a grid of spheres each covering about
+/// a twentieth of one pixel (a feature most samples miss); else three balls whose edges cross
+/// many pixels.
+struct Spheres {
+    rbtest::TestWorld world;
+    explicit Spheres(bool tiny) {
+        const rb::Material* white =
+            world.material(rb::Material{rb::Colour(0.9), rb::Colour(0.0), 1.0, {}, {}});
+        if (tiny) {
+            // The camera below sees 2·6·tan(22.5°) = 4.97 units over 24 rows: 0.207 a pixel.
+            // A sphere of radius 0.026 covers π·0.026² / 0.207² ≈ 5% of its pixel.
+            const double pixel = 2.0 * 6.0 * std::tan(22.5 * M_PI / 180.0) / kHeight;
+            for (int j = 1; j < kHeight; j += 2)
+                for (int i = 1; i < kWidth; i += 2) {
+                    const Vec3 centre((i + 0.5 - kWidth / 2.0) * pixel,
+                                      (kHeight / 2.0 - j - 0.5) * pixel, 0.0);
+                    world.addSphere(glm::scale(glm::translate(rb::Mat4(1.0), centre), Vec3(0.026)),
+                                    white, "speck");
+                }
+        } else {
+            for (int i = 0; i < 3; ++i)
+                world.addSphere(
+                    glm::scale(glm::translate(rb::Mat4(1.0), Vec3(-1.6 + 1.6 * i, 0, 0)),
+                               Vec3(0.7)),
+                    white, "ball");
+        }
+        rb::PointLight light;
+        light.position = Vec3(0, 0, 6);
+        light.colour = rb::Colour(1.0);
+        light.falloff = Vec3(1, 0, 0);
+        world.scene.lights.push_back(light);
+        world.scene.ambient = rb::Colour(0.2);
+        world.build(rbtest::coreFeatures());
+    }
+
+    rb::PinholeCamera camera() const {
+        return rb::PinholeCamera(rb::CameraSpec{Vec3(0, 0, 6), Vec3(0, 0, -1), Vec3(0, 1, 0), 45.0},
+                                 kWidth, kHeight);
+    }
+
+    /// Render to `target` with `seed` on `threads` threads; `map` receives the samples.
+    rb::Image render(const rb::TargetError& target, std::uint64_t seed, rb::SampleMap& map,
+                     int threads = 1, std::function<bool()> shouldStop = {}) const {
+        rb::RenderSettings settings;
+        settings.threads = threads;
+        settings.seed = seed;
+        settings.target = target;
+        settings.shouldStop = std::move(shouldStop);
+        map = rb::SampleMap(kWidth, kHeight, target.minSamples);
+        settings.sampleMap = &map;
+        rb::RayCounters counters;
+        return rb::render(world.scene, world.pipeline, camera(), kWidth, kHeight, settings,
+                          counters);
+    }
+};
+
+/// A target with error E, floor `floor`, ceiling `ceiling`.
+rb::TargetError target(double error, int floor = 8, int ceiling = 4096) {
+    rb::TargetError t;
+    t.error = error;
+    t.minSamples = floor;
+    t.maxSamples = ceiling;
+    return t;
+}
+
+/// A converged image of a scene, with its own estimated error.
+struct Reference {
+    rb::Image image{1, 1};
+    rb::SampleMap map;
+};
+
+/// The specks' or the balls' reference, made once: every pixel takes the same 1024 fresh
+/// samples (floor = ceiling), seed 1000.
+const Reference& referenceOf(const Spheres& scene, bool tiny) {
+    static const auto make = [](const Spheres& s) {
+        Reference r;
+        r.image = s.render(target(1.0, 1024, 1024), 1000, r.map);
+        return r;
+    };
+    if (tiny) {
+        static const Reference specks = make(scene);
+        return specks;
+    }
+    static const Reference balls = make(scene);
+    return balls;
+}
+
+/// The mean over all channels of all pixels of (a − b)².
+double meanSquaredDifference(const rb::Image& a, const rb::Image& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.data().size(); ++i) {
+        const double d = double(a.data()[i]) - double(b.data()[i]);
+        sum += d * d;
+    }
+    return sum / static_cast<double>(a.data().size());
+}
+
+/// The mean over all channels of all pixels.
+double imageMean(const rb::Image& image) {
+    double sum = 0.0;
+    for (float c : image.data()) sum += c;
+    return sum / static_cast<double>(image.data().size());
+}
+
+/// The variance of imageMean of an image sampled as `map` says: at most the sum over pixels
+/// of s²/n over the pixel count squared (the channels' mean varies by at most their mean
+/// variance; here they are equal, white light on white spheres).
+double imageMeanVariance(const rb::SampleMap& map) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < map.samples.size(); ++i)
+        if (map.samples[i] > 0) sum += map.sampleVariance[i] / map.samples[i];
+    const double pixels = static_cast<double>(map.samples.size());
+    return sum / (pixels * pixels);
+}
+
+/// The pixel estimate of the naive rule this chapter does not use: take samples until the
+/// pixel has `floor` and s²/n ≤ E², and return their mean (all of them, its decisions
+/// included). Its first samples are those the render's pilot draws.
+rb::Image stopWhenConverged(const Spheres& scene, double error, int floor, std::uint64_t seed) {
+    const rb::Integrator integrator(scene.world.scene, scene.world.pipeline);
+    const rb::PinholeCamera camera = scene.camera();
+    rb::Image image(kWidth, kHeight);
+    rb::RayCounters rays;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            rb::RunningMoments m;
+            for (int s = 0; m.count() < 4096 &&
+                            (m.count() < floor || m.channelVariance() / m.count() > error * error);
+                 ++s) {
+                rb::Sampler sampler(seed, static_cast<std::uint64_t>(y) * kWidth + x, s);
+                const rb::Vec2 u = sampler.next2D();
+                m.add(integrator.trace(camera.generateRay(x + u.x, y + u.y), sampler, rays, 0));
+            }
+            image.set(x, y, m.mean());
+        }
+    return image;
+}
+
+}  // namespace
+
+// ---- The running moments and the plan --------------------------------------------------------
+
+SCENARIO("Welford's running moments give the mean and the unbiased variance of their samples",
+         "[ch01][target-error]") {
+    GIVEN("the samples 1, 2, 3, 4 in every channel, and the same a billion higher") {
+        rb::RunningMoments small, large;
+        for (double x : {1.0, 2.0, 3.0, 4.0}) {
+            small.add(rb::Colour(x));
+            large.add(rb::Colour(1e9 + x));
+        }
+        THEN("the mean is 2.5 and s² = Σ(x − 2.5)²/(n − 1) = 5/3, however large the mean") {
+            // Source: (1.5² + 0.5² + 0.5² + 1.5²)/3 = 5/3.
+            CHECK(small.count() == 4);
+            CHECK(small.mean().r == Approx(2.5));
+            CHECK(small.channelVariance() == Approx(5.0 / 3.0));
+            CHECK(large.mean().g == Approx(1e9 + 2.5));
+            CHECK(large.channelVariance() == Approx(5.0 / 3.0).epsilon(1e-6));
+        }
+    }
+    GIVEN("a single sample") {
+        rb::RunningMoments one;
+        one.add(rb::Colour(0.7));
+        THEN("there is no spread yet: s² is 0") {
+            CHECK(one.channelVariance() == 0.0);
+        }
+    }
+}
+
+SCENARIO("the plan gives pixels fresh samples in proportion to their spread, as few as reach E",
+         "[ch01][target-error]") {
+    const int w = 8, h = 8;
+    GIVEN("a pilot in which every pixel has the same variance v = 0.09") {
+        const std::vector<float> pilot(w * h, 0.09f);
+        for (double e : {0.1, 0.03, 0.01}) {
+            WHEN("the target is E = " + std::to_string(e)) {
+                const auto plan = rb::planSamples(pilot, w, h, target(e));
+                THEN("every pixel takes the fewest n with v/n ≤ E², n = ⌈v/E²⌉") {
+                    // Source: the predicted error of equal counts is v/n; the smallest whole n.
+                    const auto expected = static_cast<std::uint32_t>(
+                        std::max(8.0, std::ceil(double(0.09f) / (e * e) - 1e-9)));
+                    for (std::uint32_t n : plan) REQUIRE(n == expected);
+                }
+            }
+        }
+    }
+    GIVEN("a pilot whose left half has variance v and right half 16v") {
+        std::vector<float> pilot(w * h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) pilot[y * w + x] = x < w / 2 ? 0.01f : 0.16f;
+        WHEN("the target needs many samples (E = 0.01)") {
+            const auto plan = rb::planSamples(pilot, w, h, target(0.01));
+            THEN("away from the border between them, the right takes 4 times the left: n ∝ s") {
+                // Source: Neyman: n ∝ s minimises Σ s²/n for a given Σ n; s = √v, √16 = 4.
+                const double left = plan[3 * w + 1], right = plan[3 * w + 6];
+                CAPTURE(left, right);
+                CHECK(right / left == Approx(4.0).epsilon(0.01));
+            }
+            THEN("the predicted error, the root of the mean of v/n, is at most E") {
+                double sum = 0.0;
+                for (int i = 0; i < w * h; ++i) sum += pilot[i] / plan[i];
+                CHECK(std::sqrt(sum / (w * h)) <= 0.01 * (1 + 1e-9));
+            }
+        }
+    }
+    GIVEN("a pilot without spread anywhere, and one with a single noisy pixel") {
+        const std::vector<float> flat(w * h, 0.0f);
+        std::vector<float> one(w * h, 0.0f);
+        one[4 * w + 4] = 0.9f;
+        THEN("without spread every pixel takes the floor") {
+            for (std::uint32_t n : rb::planSamples(flat, w, h, target(0.01))) REQUIRE(n == 8u);
+        }
+        THEN(
+            "the noisy pixel's neighbours take more than the floor (a pilot misses rare paths; "
+            "its neighbours may not), pixels two away the floor") {
+            const auto plan = rb::planSamples(one, w, h, target(0.01));
+            CHECK(plan[4 * w + 4] > plan[3 * w + 3]);
+            CHECK(plan[3 * w + 3] > 8u);
+            CHECK(plan[2 * w + 2] == 8u);
+        }
+        THEN("a target beyond reach gives the noisy pixel the ceiling, no more") {
+            const auto plan = rb::planSamples(one, w, h, target(1e-6, 8, 500));
+            CHECK(plan[4 * w + 4] == 500u);
+        }
+    }
+}
+
+// ---- Rendering to an error ------------------------------------------------------------------
+
+SCENARIO("the error --stats reports is the error the image has against a converged one",
+         "[ch01][target-error]") {
+    GIVEN("three white balls on black, 32 × 24 pixels, and a reference of 1024 samples a pixel") {
+        const Spheres scene(false);
+        const rb::Image& ref = referenceOf(scene, false).image;
+        const double refError2 = std::pow(referenceOf(scene, false).map.rmsError(), 2);
+        for (double e : {0.04, 0.02, 0.01}) {
+            WHEN("it is rendered to E = " + std::to_string(e) + " with seeds 1 to 4") {
+                double measured2 = 0.0, reported2 = 0.0;
+                for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+                    rb::SampleMap map;
+                    const rb::Image image = scene.render(target(e), seed, map);
+                    // The measured error holds the reference's own; take it out in quadrature.
+                    measured2 += meanSquaredDifference(image, ref) - refError2;
+                    reported2 += std::pow(map.rmsError(), 2);
+                }
+                const double ratio = std::sqrt(measured2 / reported2);
+                THEN("the measured RMS error is within ±25% of the reported one") {
+                    CAPTURE(std::sqrt(measured2 / 4), std::sqrt(reported2 / 4), ratio,
+                            std::sqrt(refError2));
+                    CHECK(ratio > 0.75);
+                    CHECK(ratio < 1.25);
+                }
+                THEN("the reported error is near the target: between E/2 and E (planned at E)") {
+                    CHECK(std::sqrt(reported2 / 4) <= e * 1.1);
+                    CHECK(std::sqrt(reported2 / 4) >= e * 0.5);
+                }
+            }
+        }
+    }
+}
+
+SCENARIO("sampling to an error adds no bias, where stopping a pixel when it looks converged does",
+         "[ch01][target-error]") {
+    GIVEN("specks on black, each covering a twentieth of a pixel, and a converged reference") {
+        const Spheres scene(true);
+        const Reference& ref = referenceOf(scene, true);
+        const double refMean = imageMean(ref.image), refVar = imageMeanVariance(ref.map);
+        const double z999 = rbtest::zCritical(0.001);
+        WHEN("it is rendered to E = 0.01 with 8 seeds, and the image means averaged") {
+            double mean = 0.0, var = 0.0;
+            std::uint32_t most = 0;
+            for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+                rb::SampleMap map;
+                mean += imageMean(scene.render(target(0.01), seed, map)) / 8;
+                var += imageMeanVariance(map) / 64;
+                most = std::max(most, map.maxSamples());
+            }
+            THEN("the plan was adaptive: some pixel took more than the floor and the pilot") {
+                CHECK(most > 16u);
+            }
+            THEN("the mean agrees with the reference's: |z| < 3.29 (two-sided, α = 0.001)") {
+                const double z = (mean - refMean) / std::sqrt(var + refVar);
+                CAPTURE(mean, refMean, z);
+                CHECK(std::abs(z) < z999);
+            }
+        }
+        WHEN(
+            "each pixel instead takes samples until it has 8 and its own s²/n ≤ 0.05², all of "
+            "them kept") {
+            double mean = 0.0;
+            for (std::uint64_t seed = 1; seed <= 8; ++seed)
+                mean += imageMean(stopWhenConverged(scene, 0.05, 8, seed)) / 8;
+            // Its spread is below that of a two-stage render with the floor everywhere (every
+            // pixel at least as many samples); use that one's, E = 10.
+            rb::SampleMap map;
+            scene.render(target(10.0), 1, map);
+            const double var = imageMeanVariance(map) / 8;
+            THEN(
+                "the specks come out darker than they are, by far more than the noise: "
+                "z < −3.29") {
+                // Source: a pixel whose first 8 samples all miss (0.95⁸ = 66%) stops at 0; one
+                // that hits goes on, and its first 8 samples weigh less in a longer mean.
+                const double z = (mean - refMean) / std::sqrt(var + refVar);
+                CAPTURE(mean, refMean, z);
+                CHECK(z < -z999);
+            }
+        }
+    }
+}
+
+SCENARIO("a small, bright, rarely hit feature keeps its brightness at any target",
+         "[ch01][target-error]") {
+    GIVEN("the specks, and their converged reference") {
+        const Spheres scene(true);
+        const Reference& ref = referenceOf(scene, true);
+        const double refMean = imageMean(ref.image), refVar = imageMeanVariance(ref.map);
+        for (double e : {10.0, 0.02, 0.005}) {
+            WHEN("they are rendered to E = " + std::to_string(e) + " with 4 seeds") {
+                double mean = 0.0, var = 0.0;
+                std::uint32_t fewest = 1u << 30, most = 0;
+                for (std::uint64_t seed = 11; seed <= 14; ++seed) {
+                    rb::SampleMap map;
+                    mean += imageMean(scene.render(target(e), seed, map)) / 4;
+                    var += imageMeanVariance(map) / 16;
+                    for (std::uint32_t n : map.samples) fewest = std::min(fewest, n);
+                    most = std::max(most, map.maxSamples());
+                }
+                THEN("every pixel took at least the floor of fresh samples after its pilot") {
+                    CHECK(fewest >= 8u);
+                    CAPTURE(most);
+                }
+                THEN("their mean brightness is the reference's: |z| < 3.29") {
+                    const double z = (mean - refMean) / std::sqrt(var + refVar);
+                    CAPTURE(mean, refMean, z);
+                    CHECK(std::abs(z) < rbtest::zCritical(0.001));
+                }
+            }
+        }
+    }
+}
+
+SCENARIO("an image rendered to an error is bit-identical for 1 and 2 threads",
+         "[ch01][target-error]") {
+    GIVEN("the three balls, rendered to E = 0.02") {
+        const Spheres scene(false);
+        rb::SampleMap one, two;
+        const rb::Image a = scene.render(target(0.02), 5, one, 1);
+        const rb::Image b = scene.render(target(0.02), 5, two, 2, rbtest::bothThreadsTakeTiles());
+        THEN("the images and the sample counts are the same") {
+            CHECK(rbtest::bitIdentical(a, b));
+            CHECK(one.samples == two.samples);
+        }
+    }
+}
+
+// ---- Bad input ------------------------------------------------------------------------------
+
+SCENARIO("a target that cannot work is refused with the allowed range", "[ch01][target-error]") {
+    const auto refusal = [](const rb::TargetError& t) -> std::string {
+        try {
+            rb::checkTargetError(t, "scene.lua:3");
+        } catch (const rb::InputError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    GIVEN("targets of 0, −1, NaN and infinity") {
+        for (double e : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+                         std::numeric_limits<double>::infinity()})
+            THEN("E = " + std::to_string(e) + " is refused: a number above 0") {
+                CHECK_THAT(refusal(target(e)),
+                           Catch::Contains("scene.lua:3") && Catch::Contains("above 0"));
+            }
+    }
+    GIVEN("a floor of 1 and a ceiling below the floor") {
+        THEN("the floor is refused with its range, 2 to 1048576") {
+            CHECK_THAT(refusal(target(0.02, 1, 100)), Catch::Contains("from 2 to 1048576"));
+        }
+        THEN("the ceiling is refused for being below the floor, naming both") {
+            CHECK_THAT(refusal(target(0.02, 64, 32)),
+                       Catch::Contains("--max-spp 32") && Catch::Contains("--min-spp 64"));
+        }
+    }
+    GIVEN("the command line") {
+        const auto parse = [](std::vector<const char*> args) -> std::string {
+            args.insert(args.begin(), "rt");
+            args.push_back("scene.lua");
+            try {
+                rb::parseCommandLine(static_cast<int>(args.size()), args.data());
+            } catch (const rb::InputError& e) {
+                return e.what();
+            }
+            return "";
+        };
+        THEN("--target-error nan, 0 and -0.1 are refused, 0.02 is taken") {
+            for (const char* bad : {"nan", "0", "-0.1", "inf", "x"})
+                CHECK_THAT(parse({"--target-error", bad}), Catch::Contains("above 0"));
+            CHECK(parse({"--target-error", "0.02"}).empty());
+        }
+        THEN("--min-spp 1 is refused with the range; --aov asks for sample-count") {
+            CHECK_THAT(parse({"--min-spp", "1"}), Catch::Contains("from 2 to 1048576"));
+            CHECK_THAT(parse({"--aov", "depth"}), Catch::Contains("sample-count"));
+        }
+    }
+}
