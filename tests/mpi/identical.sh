@@ -2,7 +2,7 @@
 # Rendering on many processes gives the bytes one process gives: the showcase (every chapter,
 # cheap settings, see common.sh) on ranks {1, 2, 3, 4} x threads {1, 2}, compared byte for byte
 # with rt run alone; then other seeds and samplers (adaptive antialiasing, chapter 8's pixel
-# sampler, and --seed) on 2 and 3 ranks, and a static split.
+# sampler, and --seed) on 2 and 3 ranks, a static split, and a render to a target error.
 # Usage: bash tests/mpi/identical.sh RT_BINARY OUT_DIR
 set -u
 source "$(dirname "$0")/../check_helpers.sh"
@@ -36,4 +36,8 @@ compare showcase "1x1 1x2 2x1 2x2 3x1 3x2 4x1 4x2" "${SHOWCASE_OPTIONS[@]}" --si
 compare adaptive-seed7 "2x2 3x1" --quiet --size 96x64 --aa=adaptive --light-samples=1 \
     --glossy-samples=1 --dof-samples=1 --photon-passes=1 --photons=20000 --seed 7
 compare static "3x1" "${SHOWCASE_OPTIONS[@]}" --size 96x64 --mpi-lease static
+# Rendering to an error: the ranks share the pilot (each takes every size-th tile), then every
+# pixel's planned samples; the same bytes as one process.
+compare target-error "1x2 3x1" --quiet --size 48x32 --target-error 0.05 --light-samples=1 \
+    --glossy-samples=1 --photon-passes=1 --photons=20000
 finish
