@@ -14,7 +14,7 @@
 //       gather:   final gather rays for the indirect light at each visible point; 0 reads the
 //                 indirect map there directly (blotchy, but cheaper)
 //       at_least: where fewer photons than this lie within a gather's radius, the disk grows
-//                 to hold this many (up to 4 radii): sparse light comes out smooth, not
+//                 to hold this many (up to 3 radii): sparse light comes out smooth, not
 //                 speckled (0, the default: every gather keeps its radius)
 //   gr.photons{} switches photon mapping on with every default.
 #include <cmath>

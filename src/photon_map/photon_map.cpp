@@ -323,7 +323,7 @@ Feature photonMapFeature() {
               "the scene's, else 32"},
              {"photon-at-least", "M",
               "where fewer than M photons lie within a gather's radius, grow the disk to hold M "
-              "(up to 4 radii; 0: never)",
+              "(up to 3 radii; 0: never)",
               "the scene's, else 0"}},
             {},
             photonEmissionWarps};
