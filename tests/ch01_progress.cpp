@@ -343,6 +343,21 @@ SCENARIO("the progress line shows percent, elapsed time, ETA and rays per second
                 CHECK_THAT(rb::formatProgressLine(report), Catch::Contains("ETA ...  "));
             }
         }
+        WHEN("the render is to a target error of 0.02, and the finished pixels' error is 0.018") {
+            report.error = 0.018;
+            report.targetError = 0.02;
+            THEN("the error against the target takes the speed's place, the bar 14 columns") {
+                // Source: 14 · 0.48 = 6.72, truncated to 6 filled columns.
+                CHECK(rb::formatProgressLine(report) ==
+                      "[######        ]  48%  elapsed 3.1 s  ETA 3.4 s  error 0.018/0.02");
+            }
+            THEN("it fits 80 columns after 99 hours") {
+                report.elapsedSeconds = report.etaSeconds.value() = 99 * 3600.0;
+                report.error = 0.123456;
+                report.targetError = 0.0123456;
+                CHECK(rb::formatProgressLine(report).size() < 80u);
+            }
+        }
     }
     GIVEN("long durations") {
         THEN("they read in minutes and hours") {

@@ -125,28 +125,25 @@ std::string formatDuration(double seconds) {
 }
 
 std::string formatProgressLine(const ProgressReport& report) {
-    constexpr int kBarWidth = 20;
+    // Under a target error the bar is shorter, to leave room for the error.
+    const int barWidth = report.error ? 14 : 20;
     const double fraction = std::clamp(report.fraction, 0.0, 1.0);
-    const int filled = static_cast<int>(kBarWidth * fraction);
-    const std::string bar = std::string(filled, '#') + std::string(kBarWidth - filled, ' ');
+    const int filled = static_cast<int>(barWidth * fraction);
+    const std::string bar = std::string(filled, '#') + std::string(barWidth - filled, ' ');
     const std::string eta = report.etaSeconds ? formatDuration(*report.etaSeconds) : "...";
-    char rays[32];
-    if (report.raysPerSecond >= 1e6)
-        std::snprintf(rays, sizeof rays, "%.1f Mrays/s", report.raysPerSecond / 1e6);
+    // The speed, or under a target error the finished pixels' error against the target.
+    char last[48];
+    if (report.error)
+        std::snprintf(last, sizeof last, "error %.3g/%.3g", *report.error, report.targetError);
+    else if (report.raysPerSecond >= 1e6)
+        std::snprintf(last, sizeof last, "%.1f Mrays/s", report.raysPerSecond / 1e6);
     else
-        std::snprintf(rays, sizeof rays, "%.1f krays/s", report.raysPerSecond / 1e3);
-    char line[200];
+        std::snprintf(last, sizeof last, "%.1f krays/s", report.raysPerSecond / 1e3);
+    char line[160];
     std::snprintf(line, sizeof line, "[%s] %3d%%  elapsed %s  ETA %s  %s", bar.c_str(),
                   static_cast<int>(100 * fraction), formatDuration(report.elapsedSeconds).c_str(),
-                  eta.c_str(), rays);
-    std::string text = line;
-    // Under a target error, the error so far against the target: "error 0.018/0.02".
-    if (report.error) {
-        char error[64];
-        std::snprintf(error, sizeof error, "  error %.3g/%.3g", *report.error, report.targetError);
-        text += error;
-    }
-    return text;
+                  eta.c_str(), last);
+    return line;
 }
 
 }  // namespace rb

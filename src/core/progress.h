@@ -115,7 +115,8 @@ struct ProgressReport {
 std::string formatDuration(double seconds);
 
 /// The progress line, e.g. "[#########           ]  48%  elapsed 3.1 s  ETA 3.4 s  12.3
-/// Mrays/s". "ETA ..." while the ETA is unknown. Under 80 columns for any render under 100 h.
+/// Mrays/s"; under a target error "... error 0.018/0.02" in place of the speed. "ETA ..."
+/// while the ETA is unknown. Under 80 columns for any render under 100 h.
 std::string formatProgressLine(const ProgressReport& report);
 
 }  // namespace rb
