@@ -322,6 +322,19 @@ if [ -x "$build/rt_ch18" ]; then
   BENCH_ROUNDS=$runs bash "$root/tests/perf/ch18/cycles_bench.sh" "$build" | tee -a "$report"
 fi
 
+# ---- Rendering to a target error (issue 38) -------------------------------------------------
+# Nine scenes (chapters 6, 7, 13, 16, 17, 18 and seeds 000-002), each rendered uniformly
+# (--spp) and to a target error (--target-error) against its own reference: the reported error
+# against the measured one, and the time against uniform sampling's at equal error (about 8
+# minutes). The table and charts go to BUILD_DIR/bench/target-error/; make charts redraws the
+# ones in docs/charts/.
+if [ -x "$build/rt_ch18" ]; then
+  progress "rendering to a target error"
+  say ""
+  say "Rendering to a target error against uniform sampling (tests/perf/target_error/bench.sh):"
+  bash "$root/tests/perf/target_error/bench.sh" "$build" "$out/target-error" | tee -a "$report"
+fi
+
 # ---- make grade at class scale (issue 21) ---------------------------------------------------
 # A class of GRADE_STUDENTS (default 100) chapter-13 projects graded from a cold start; kept in
 # BUILD_DIR/bench/grade.txt for the summary.

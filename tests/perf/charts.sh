@@ -3,7 +3,8 @@
 #
 # usage: charts.sh BUILD_DIR
 # Chapter 3's BVH scaling chart is drawn here (docs/charts/ch03-bvh-scaling.gp); chapters with
-# their own chart programs keep a tests/perf/chNN/charts.sh, which this script runs in order.
+# their own chart programs keep a tests/perf/chNN/charts.sh, which this script runs in order;
+# then issue 38's target-error charts and table (tests/perf/target_error/bench.sh, SVG only).
 set -euo pipefail
 build=$(cd "${1:?usage: charts.sh BUILD_DIR}" && pwd)
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -65,3 +66,8 @@ for script in "$root"/tests/perf/ch[0-9][0-9]/charts.sh; do
   echo "charts: $script"
   bash "$script" "$build"
 done
+
+# Rendering to a target error (issue 38): RMSE against render time, uniform against adaptive,
+# one chart per scene (docs/charts/target-error-<scene>.svg), and docs/charts/target-error.md.
+echo "charts: tests/perf/target_error/bench.sh"
+bash "$root/tests/perf/target_error/bench.sh" "$build" "$charts"
