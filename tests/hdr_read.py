@@ -1,7 +1,11 @@
 """Read a Radiance .hdr file (RGBE, what rt --output x.hdr writes with chapter 12) in pure
-Python: read_hdr(path) returns (width, height, floats), the floats row-major RGB in linear
-units. Handles flat scanlines and the run-length encoding of Greg Ward's format (each scanline
-split into its four channels, each a sequence of runs and literal spans).
+Python: read_hdr(path) returns an HdrImage, its `pixels` row-major RGB floats in linear units.
+A pixel is a mantissa byte per channel and a shared exponent E: the channel is
+(mantissa + 0.5)·2^(E − 136), the middle of the bin a writer that truncates leaves it in, or 0
+when E is 0; `steps` holds each pixel's bin width 2^(E − 136), its quantisation step. Handles
+flat scanlines and the run-length encoding (a scanline split into its four components, each a
+sequence of runs and literal spans). Used by the target_error_scenes test and the target-error
+benchmark (tests/perf/target_error/).
 Source: G. Ward, "Real Pixels", Graphics Gems II (1991), and the Radiance file format notes.
 """
 
@@ -47,14 +51,26 @@ def _scanline(data, at, width):
     return bytes(pixels), at
 
 
+class HdrImage:
+    """A decoded image: width × height pixels, `pixels` 3 floats each, `steps` one each."""
+
+    def __init__(self, width, height, pixels, steps):
+        self.width, self.height, self.pixels, self.steps = width, height, pixels, steps
+
+
 def read_hdr(path):
+    """The HdrImage in the .hdr file at `path`. Raises ValueError for what it cannot read."""
     data = open(path, "rb").read()
     width, height, at = _header(data)
-    floats = []
+    pixels, steps = [], []
     for _ in range(height):
-        line, at = _scanline(data, at, width)
+        try:
+            line, at = _scanline(data, at, width)
+        except IndexError:
+            raise ValueError("pixel data cut short")
         for i in range(0, 4 * width, 4):
             r, g, b, e = line[i:i + 4]
-            scale = math.ldexp(1.0, e - 136) if e else 0.0  # 2^(e − 128) / 256
-            floats += (r * scale, g * scale, b * scale)
-    return width, height, floats
+            step = math.ldexp(1.0, e - 136) if e else 0.0
+            pixels += ((r + 0.5) * step, (g + 0.5) * step, (b + 0.5) * step)
+            steps.append(step)
+    return HdrImage(width, height, pixels, steps)

@@ -62,14 +62,14 @@ def main():
         ref_path = out / f"{name}-reference.hdr"
         ref_error = render(rt, scene, size, ref_path, *options, "--target-error", "1",
                            "--min-spp", str(samples), "--max-spp", str(samples), "--seed", "1000")
-        ref = read_hdr(ref_path)[2]
+        ref = read_hdr(ref_path).pixels
         for target in targets:
             measured = reported = 0.0
             for seed in (1, 2):
                 path = out / f"{name}-{target}-{seed}.hdr"
                 error = render(rt, scene, size, path, *options, "--target-error", str(target),
                                "--seed", str(seed))
-                measured += mean_squared_difference(read_hdr(path)[2], ref) - ref_error ** 2
+                measured += mean_squared_difference(read_hdr(path).pixels, ref) - ref_error ** 2
                 reported += error ** 2
             ratio = math.sqrt(max(measured, 0.0) / reported)
             ok = 0.75 <= ratio <= 1.25

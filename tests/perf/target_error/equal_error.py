@@ -22,7 +22,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from rgbe import read_hdr  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from hdr_read import read_hdr  # noqa: E402  (tests/hdr_read.py)
 from svg_chart import COLOURS, Series, loglog_chart  # noqa: E402
 
 
