@@ -135,10 +135,23 @@ double imageMean(const rb::Image& image) {
 /// variance; here they are equal, white light on white spheres).
 double imageMeanVariance(const rb::SampleMap& map) {
     double sum = 0.0;
-    for (std::size_t i = 0; i < map.samples.size(); ++i)
-        if (map.samples[i] > 0) sum += map.sampleVariance[i] / map.samples[i];
+    for (std::size_t i = 0; i < map.samples.size(); ++i) sum += map.meanVariance[i];
     const double pixels = static_cast<double>(map.samples.size());
     return sum / (pixels * pixels);
+}
+
+/// The variance of imageMean of a render of `scene` to `t`, estimated from 4 renders of seeds
+/// no test compares (901 to 904). A z-test on rare, bright specks must not divide by the same
+/// renders' own spread: a draw that found fewer specks has both a lower mean and a lower spread,
+/// which would push z down.
+double independentMeanVariance(const Spheres& scene, const rb::TargetError& t) {
+    double var = 0.0;
+    for (std::uint64_t seed = 901; seed <= 904; ++seed) {
+        rb::SampleMap map;
+        scene.render(t, seed, map);
+        var += imageMeanVariance(map) / 4;
+    }
+    return var;
 }
 
 /// The pixel estimate of the naive rule this chapter does not use: take samples until the
@@ -202,10 +215,12 @@ SCENARIO("the plan gives pixels fresh samples in proportion to their spread, as 
         for (double e : {0.1, 0.03, 0.01}) {
             WHEN("the target is E = " + std::to_string(e)) {
                 const auto plan = rb::planSamples(pilot, w, h, target(e));
-                THEN("every pixel takes the fewest n with v/n ≤ E², n = ⌈v/E²⌉") {
-                    // Source: the predicted error of equal counts is v/n; the smallest whole n.
-                    const auto expected = static_cast<std::uint32_t>(
+                THEN("every pixel takes the fewest n with v/n ≤ E², n = ⌈v/E²⌉, made even") {
+                    // Source: the predicted error of equal counts is v/n; the smallest whole n,
+                    // then the next even one (a pixel's samples come in two equal groups).
+                    auto expected = static_cast<std::uint32_t>(
                         std::max(8.0, std::ceil(double(0.09f) / (e * e) - 1e-9)));
+                    expected += expected % 2;
                     for (std::uint32_t n : plan) REQUIRE(n == expected);
                 }
             }
@@ -277,9 +292,11 @@ SCENARIO("the error --stats reports is the error the image has against a converg
                     CHECK(ratio > 0.75);
                     CHECK(ratio < 1.25);
                 }
-                THEN("the reported error is near the target: between E/2 and E (planned at E)") {
+                THEN("the reported error is at most the target (within 10%: the plan "
+                     "predicts it from the pilot)") {
+                    // The plan predicts the error of independent samples; the groups' strata
+                    // lower it further on these edges, so it is often well below E.
                     CHECK(std::sqrt(reported2 / 4) <= e * 1.1);
-                    CHECK(std::sqrt(reported2 / 4) >= e * 0.5);
                 }
             }
         }
@@ -294,14 +311,14 @@ SCENARIO("sampling to an error adds no bias, where stopping a pixel when it look
         const double refMean = imageMean(ref.image), refVar = imageMeanVariance(ref.map);
         const double z999 = rbtest::zCritical(0.001);
         WHEN("it is rendered to E = 0.01 with 8 seeds, and the image means averaged") {
-            double mean = 0.0, var = 0.0;
+            double mean = 0.0;
             std::uint32_t most = 0;
             for (std::uint64_t seed = 1; seed <= 8; ++seed) {
                 rb::SampleMap map;
                 mean += imageMean(scene.render(target(0.01), seed, map)) / 8;
-                var += imageMeanVariance(map) / 64;
                 most = std::max(most, map.maxSamples());
             }
+            const double var = independentMeanVariance(scene, target(0.01)) / 8;
             THEN("the plan was adaptive: some pixel took more than the floor and the pilot") {
                 CHECK(most > 16u);
             }
@@ -319,9 +336,7 @@ SCENARIO("sampling to an error adds no bias, where stopping a pixel when it look
                 mean += imageMean(stopWhenConverged(scene, 0.05, 8, seed)) / 8;
             // Its spread is below that of a two-stage render with the floor everywhere (every
             // pixel at least as many samples); use that one's, E = 10.
-            rb::SampleMap map;
-            scene.render(target(10.0), 1, map);
-            const double var = imageMeanVariance(map) / 8;
+            const double var = independentMeanVariance(scene, target(10.0)) / 8;
             THEN(
                 "the specks come out darker than they are, by far more than the noise: "
                 "z < −3.29") {
@@ -343,12 +358,12 @@ SCENARIO("a small, bright, rarely hit feature keeps its brightness at any target
         const double refMean = imageMean(ref.image), refVar = imageMeanVariance(ref.map);
         for (double e : {10.0, 0.02, 0.005}) {
             WHEN("they are rendered to E = " + std::to_string(e) + " with 4 seeds") {
-                double mean = 0.0, var = 0.0;
+                double mean = 0.0;
+                const double var = independentMeanVariance(scene, target(e)) / 4;
                 std::uint32_t fewest = 1u << 30, most = 0;
                 for (std::uint64_t seed = 11; seed <= 14; ++seed) {
                     rb::SampleMap map;
                     mean += imageMean(scene.render(target(e), seed, map)) / 4;
-                    var += imageMeanVariance(map) / 16;
                     for (std::uint32_t n : map.samples) fewest = std::min(fewest, n);
                     most = std::max(most, map.maxSamples());
                 }

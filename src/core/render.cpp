@@ -160,10 +160,9 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
 
 // [target-error-tile]
 /// Take samples first, first + 1, ... of pixel (x, y), `count` of them, and return their
-/// moments. Each is independent: a uniformly jittered film position and, through a lens
-/// (chapter 13), a uniform lens point. (Strata shared between a pixel's samples would make
-/// their spread overstate the error of their mean.) Sample s draws what an --spp render's
-/// sample s draws.
+/// moments: the pilot. Each is independent (a uniformly jittered film position and, through a
+/// lens, a uniform lens point), so that their spread measures the pixel's noise. Sample s draws
+/// what an --spp render's sample s draws.
 RunningMoments samplePixel(int x, int y, int first, int count, const Integrator& integrator,
                            const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
                            std::uint64_t seed, RayCounters& rays) {
@@ -193,8 +192,71 @@ void pilotTile(const ImageTile& tile, const Integrator& integrator, const Pinhol
                     .channelVariance());
 }
 
+/// Stage 3's result for one pixel: the mean of its fresh samples and the estimated variance of
+/// that mean, averaged over the channels.
+struct PixelEstimate {
+    Colour mean{0.0};
+    double varianceOfMean = 0.0;
+};
+
+/// A permutation of 0 … m − 1, drawn from `sampler` (Fisher and Yates's shuffle).
+std::vector<std::uint32_t> shuffled(int m, Sampler& sampler) {
+    std::vector<std::uint32_t> order(static_cast<std::size_t>(m));
+    for (int i = 0; i < m; ++i) order[i] = static_cast<std::uint32_t>(i);
+    for (int i = m - 1; i > 0; --i) {
+        const int j = std::min(i, static_cast<int>(sampler.next1D() * (i + 1)));
+        std::swap(order[i], order[j]);
+    }
+    return order;
+}
+
+/// Streams of rb::Sampler far beyond any sample's: the shuffles of a pixel's two groups.
+constexpr std::uint64_t kShuffleStream = std::uint64_t{1} << 40;
+
+/// The mean of one group of m fresh samples of pixel (x, y), sample streams first … first +
+/// m − 1: a Latin hypercube over the pixel, its x and its y each cut into m strata that the
+/// group's samples take one each, in an order shuffled per group; through a lens (chapter 13)
+/// its own m strata are paired with the samples the same way (RaySlot index i of m).
+Colour sampleGroup(int x, int y, int group, int first, int m, const Integrator& integrator,
+                   const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
+                   std::uint64_t seed, RayCounters& rays) {
+    const std::uint64_t pixelIndex = static_cast<std::uint64_t>(y) * width + x;
+    Sampler shuffle(seed, pixelIndex, kShuffleStream + group);
+    const std::vector<std::uint32_t> columns = shuffled(m, shuffle), rows = shuffled(m, shuffle);
+    // The lens's pairing key: the pixel's and the group's.
+    const std::uint64_t lensKey = pixelIndex ^ (static_cast<std::uint64_t>(group + 1) << 48);
+    Colour sum(0.0);
+    for (int i = 0; i < m; ++i) {
+        Sampler sampler(seed, pixelIndex, first + i);
+        const Vec2 u = sampler.next2D();
+        const Vec2 film(x + (columns[i] + u.x) / m, y + (rows[i] + u.y) / m);
+        const Ray ray = lens ? lens->generate(camera, film, {seed, lensKey, i, m}, sampler)
+                             : camera.generateRay(film.x, film.y);
+        rays.add(RayKind::Camera);
+        sum += integrator.trace(ray, sampler, rays, 0);
+    }
+    return sum / static_cast<double>(m);
+}
+
+/// Stage 3 for one pixel: `count` (even) fresh samples after the pilot's, in two independent
+/// groups of count/2. Strata lower the noise of each group's mean, and since the groups are
+/// independent, the squared difference of their means over 4 is an unbiased estimate of the
+/// variance of the pixel's mean, strata or not (one degree of freedom a pixel; the image's sum
+/// of them has many).
+PixelEstimate sampleFresh(int x, int y, int first, int count, const Integrator& integrator,
+                          const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
+                          std::uint64_t seed, RayCounters& rays) {
+    const int m = count / 2;
+    const Colour a = sampleGroup(x, y, 0, first, m, integrator, camera, lens, width, seed, rays);
+    const Colour b =
+        sampleGroup(x, y, 1, first + m, m, integrator, camera, lens, width, seed, rays);
+    const Colour d = a - b;
+    return {0.5 * (a + b), (d.r * d.r + d.g * d.g + d.b * d.b) / 12.0};
+}
+
 /// Stage 3 for one tile: each pixel's planned fresh samples, after the pilot's; the pixel is
-/// their mean. Returns the sum over the tile's pixels of s²/n (for the progress line).
+/// their mean. Returns the sum over the tile's pixels of their estimated variance of the mean
+/// (for the progress line).
 double renderTileToError(const ImageTile& tile, const Integrator& integrator,
                          const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
                          std::uint64_t seed, const TargetError& target,
@@ -204,11 +266,11 @@ double renderTileToError(const ImageTile& tile, const Integrator& integrator,
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
             const auto count = static_cast<int>(plan[static_cast<std::size_t>(y) * width + x]);
-            const RunningMoments moments = samplePixel(x, y, target.minSamples, count, integrator,
-                                                       camera, lens, width, seed, rays);
-            image.set(x, y, moments.mean());
-            if (map) map->record(x, y, moments);
-            varianceSum += moments.channelVariance() / count;
+            const PixelEstimate e = sampleFresh(x, y, target.minSamples, count, integrator, camera,
+                                                lens, width, seed, rays);
+            image.set(x, y, e.mean);
+            if (map) map->record(x, y, count, e.varianceOfMean);
+            varianceSum += e.varianceOfMean;
         }
     return varianceSum;
 }

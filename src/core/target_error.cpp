@@ -104,18 +104,22 @@ std::vector<std::uint32_t> planSamples(const std::vector<float>& pilotVariance, 
         const double mid = 0.5 * (kLow + kHigh);
         (predictedMse(v, mid, lo, hi) > target2 ? kLow : kHigh) = mid;
     }
-    // Step 3: the counts.
+    // Step 3: the counts, made even (a pixel's samples come in two equal groups) without
+    // passing the ceiling.
+    const auto evenCeiling = static_cast<std::uint32_t>(std::max(2, hi - hi % 2));
     std::vector<std::uint32_t> counts(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i)
-        counts[i] = static_cast<std::uint32_t>(plannedCount(v[i], kHigh, lo, hi));
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const auto n = static_cast<std::uint32_t>(plannedCount(v[i], kHigh, lo, hi));
+        counts[i] = std::min(n + n % 2, evenCeiling);
+    }
     return counts;
 }
 // [plan-samples]
 
-void SampleMap::record(int x, int y, const RunningMoments& moments) {
+void SampleMap::record(int x, int y, int count, double varianceOfMean) {
     const std::size_t i = static_cast<std::size_t>(y) * width + x;
-    samples[i] = static_cast<std::uint32_t>(moments.count());
-    sampleVariance[i] = static_cast<float>(moments.channelVariance());
+    samples[i] = static_cast<std::uint32_t>(count);
+    meanVariance[i] = static_cast<float>(varianceOfMean);
 }
 
 double SampleMap::meanSamples() const {
@@ -131,8 +135,7 @@ std::uint32_t SampleMap::maxSamples() const {
 double SampleMap::rmsError() const {
     if (samples.empty()) return 0.0;
     double sum = 0.0;
-    for (std::size_t i = 0; i < samples.size(); ++i)
-        if (samples[i] > 0) sum += sampleVariance[i] / samples[i];
+    for (float v : meanVariance) sum += v;
     return std::sqrt(sum / static_cast<double>(samples.size()));
 }
 

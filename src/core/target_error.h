@@ -78,7 +78,8 @@ struct SampleMap {
     int width = 0, height = 0;
     int pilot = 0;                       ///< Pilot samples every pixel took first.
     std::vector<std::uint32_t> samples;  ///< Fresh samples: the pixel's estimate.
-    std::vector<float> sampleVariance;   ///< Their s², averaged over channels.
+    std::vector<float> meanVariance;     ///< The estimated variance of the pixel's mean,
+                                         ///< averaged over channels.
 
     SampleMap() = default;
     SampleMap(int w, int h, int pilotSamples)
@@ -86,15 +87,16 @@ struct SampleMap {
           height(h),
           pilot(pilotSamples),
           samples(static_cast<std::size_t>(w) * h, 0),
-          sampleVariance(static_cast<std::size_t>(w) * h, 0.0f) {}
-    /// Record pixel (x, y)'s fresh samples.
-    void record(int x, int y, const RunningMoments& moments);
+          meanVariance(static_cast<std::size_t>(w) * h, 0.0f) {}
+    /// Record that pixel (x, y) took `count` fresh samples, with `varianceOfMean`.
+    void record(int x, int y, int count, double varianceOfMean);
     /// Mean samples per pixel, pilot included.
     double meanSamples() const;
     /// The most samples any pixel took, pilot included.
     std::uint32_t maxSamples() const;
     /// The image's estimated RMS error: the root of the mean, over pixels, of each pixel's
-    /// s²/n. Unbiased for the mean squared error, since n was fixed before the samples.
+    /// estimated variance of its mean. Unbiased for the mean squared error, since each count
+    /// was fixed before its samples were drawn.
     double rmsError() const;
 };
 
