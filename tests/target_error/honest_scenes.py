@@ -4,7 +4,7 @@ chapter's scene (CTest: target_error_scenes).
 For each chapter scene that draws random numbers (6, 7, 13, 16, 17, 18) at a small size:
 a reference in which every pixel takes the same R fresh samples (--min-spp R --max-spp R, so
 that no sample count depends on the samples), with its own reported error; then the scene
-rendered to two targets with two seeds each. The measured squared error of each render is its
+rendered to two targets with four seeds each. The measured squared error of each render is its
 mean squared difference from the reference (linear radiance from .hdr files, every channel of
 every pixel) less the reference's own reported squared error; over a scene's four renders, the
 root of the summed measured over the summed reported must lie within ±25%.
@@ -65,7 +65,7 @@ def main():
         ref = read_hdr(ref_path).pixels
         for target in targets:
             measured = reported = 0.0
-            for seed in (1, 2):
+            for seed in (1, 2, 3, 4):
                 path = out / f"{name}-{target}-{seed}.hdr"
                 error = render(rt, scene, size, path, *options, "--target-error", str(target),
                                "--seed", str(seed))
@@ -75,7 +75,7 @@ def main():
             ok = 0.75 <= ratio <= 1.25
             passed, failed = passed + ok, failed + (not ok)
             print(f"{'ok  ' if ok else 'FAIL'} {name} E = {target}: measured "
-                  f"{math.sqrt(max(measured, 0) / 2):.4g}, reported {math.sqrt(reported / 2):.4g}"
+                  f"{math.sqrt(max(measured, 0) / 4):.4g}, reported {math.sqrt(reported / 4):.4g}"
                   f" (ratio {ratio:.2f}, allowed 0.75 to 1.25; reference's own error "
                   f"{ref_error:.3g})", flush=True)
     print(f"{passed} passed, {failed} failed")
