@@ -248,6 +248,15 @@ std::vector<std::string> childOptions(const CommandLine& cl) {
     if (cl.samplesPerPixel > 0) args.push_back("--spp=" + std::to_string(cl.samplesPerPixel));
     if (cl.seed != 0) args.push_back("--seed=" + std::to_string(cl.seed));
     if (cl.maxDepth >= 0) args.push_back("--max-depth=" + std::to_string(cl.maxDepth));
+    if (cl.targetError > 0) {
+        char error[32];
+        // 15 digits give back any target typed with 15 or fewer, and read as typed.
+        std::snprintf(error, sizeof error, "%.15g", cl.targetError);
+        args.push_back(std::string("--target-error=") + error);
+    }
+    if (cl.minSpp > 0) args.push_back("--min-spp=" + std::to_string(cl.minSpp));
+    if (cl.maxSpp > 0) args.push_back("--max-spp=" + std::to_string(cl.maxSpp));
+    if (cl.aovSampleCount) args.push_back("--aov=sample-count");
     // Each scene gets the memory limit asked for; by default each takes the machine's share.
     if (cl.memory.origin.rfind("--max-memory", 0) == 0)
         args.push_back("--max-memory=" + std::to_string(cl.memory.limit));

@@ -223,4 +223,17 @@ rm -f "$OUT/own-report/raybook-report.html"
     ok "a second batch over the same folder replaces its own report" ||
     fail "second batch" "the batch refused its own report folder"
 
+# A class rendered to a target error: every scene gets --target-error and --aov, and writes its
+# heat map beside its image.
+mkdir -p "$OUT/target/s1"
+cp "$ROOT/scenes/chapter01-raycast.lua" "$OUT/target/s1/scene.lua"
+if "$RT" --batch "$OUT/target" --size 24x16 --target-error 0.05 --aov sample-count \
+        >/dev/null 2>&1 &&
+    grep -q -- "--target-error=0.05 --aov=sample-count" "$OUT/target/raybook-report.html" &&
+    [ -n "$(find "$OUT/target/raybook-report" -name '*.samples.png')" ]; then
+    ok "--target-error and --aov reach every scene of a batch"
+else
+    fail "target error" "a batch did not pass --target-error and --aov to its scenes"
+fi
+
 finish
