@@ -214,7 +214,8 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
                                                                 default: 8
   --max-spp N        the most fresh samples a pixel takes       default: 4096
   --aov sample-count write NAME.samples.png beside the image: a heat map of the
-                     samples each pixel took (black none, white the most)
+                     samples each pixel took (black none, white the most, or
+                     8 times --min-spp if no pixel took that many)
   --max-depth N      recursion limit for secondary rays         default: the scene's
                                                                 max_depth, else 5
   --size WxH         override the image size                    default: gr.render's

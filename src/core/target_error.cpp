@@ -145,7 +145,11 @@ Image sampleHeatMap(const SampleMap& map) {
         {0.0, 0.0, 0.0}, {0.05, 0.1, 0.6}, {0.8, 0.1, 0.1}, {1.0, 0.85, 0.1}, {1.0, 1.0, 1.0}};
     constexpr int kSegments = 4;
     Image image(map.width, map.height);
-    const double top = std::sqrt(static_cast<double>(std::max<std::uint32_t>(1, map.maxSamples())));
+    // White is the most any pixel took, but at least 8 pilots' worth (4 times the fewest a
+    // pixel can take), so that a picture at the floor everywhere is mid-scale, not white.
+    const auto least = 8 * static_cast<std::uint32_t>(map.pilot);
+    const double top =
+        std::sqrt(static_cast<double>(std::max<std::uint32_t>({1, map.maxSamples(), least})));
     for (int y = 0; y < map.height; ++y)
         for (int x = 0; x < map.width; ++x) {
             const std::uint32_t n =

@@ -101,7 +101,8 @@ struct SampleMap {
 };
 
 /// The samples each pixel of `map` took (pilot included) as a heat map: black at 0, through
-/// blue, red and yellow to white at the most any pixel took, on a square-root scale.
+/// blue, red and yellow to white at the most any pixel took (or 8 pilots, if more), on a
+/// square-root scale.
 Image sampleHeatMap(const SampleMap& map);
 
 }  // namespace rb
