@@ -396,6 +396,12 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     // Under a target error (--target-error): the pilot, and each pixel's plan of fresh samples.
     std::vector<std::uint32_t> plan;
     if (settings.target.on()) {
+        // The pilot runs before the bar can price the work: say what is happening meanwhile.
+        if (settings.progress)
+            std::fprintf(stderr,
+                         "rt: target error %.3g: a pilot of %d samples a pixel measures the "
+                         "noise, then the bar follows the planned samples\n",
+                         settings.target.error, settings.target.minSamples);
         const std::vector<float> pilot =
             pilotVariances(tiles, integrator, camera, pipeline.cameraRays.get(), width, height,
                            settings, threads, perThread);
