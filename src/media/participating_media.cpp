@@ -50,18 +50,29 @@ struct PiecePoints {
     EquiangularSegment seg;  ///< The piece in world distances along the ray, and the light.
     double sigma;            ///< The piece's extinction majorant, per unit length.
     bool equiangular;
+    double reach;  ///< The chance that a flight from the piece's start meets a particle in it.
 
-    EquiangularSample sample(double u) const {
-        if (equiangular) return sampleEquiangular(seg, u);
-        const double s = seg.a - std::log1p(-u * reach()) / sigma;
-        return {std::min(s, seg.b), pdf(s)};
+    /// One point on the piece: its distance s, its density there, and `fall`, the majorant's
+    /// transmittance e^{−σ̄(s − a)} from the piece's start to it (which the flight's density and,
+    /// in a grey medium, the light's way back to the ray's origin both need).
+    struct Point {
+        double s, pdf, fall;
+    };
+    Point sample(double u) const {
+        if (equiangular) {
+            const EquiangularSample e = sampleEquiangular(seg, u);
+            return {e.s, e.pdf, std::exp(-sigma * (e.s - seg.a))};
+        }
+        // The truncated exponential's inverse: e^{−σ̄(s − a)} = 1 − u·reach, no exp needed.
+        const double fall = 1.0 - u * reach;
+        const double s = seg.a - std::log1p(-u * reach) / sigma;
+        return {std::min(s, seg.b), sigma * fall / reach, fall};
     }
-    double pdf(double s) const {
-        return equiangular ? equiangularPdf(seg, s)
-                           : sigma * std::exp(-sigma * (s - seg.a)) / reach();
+    /// The point at distance s, as sample would have drawn it.
+    Point at(double s) const {
+        const double fall = std::exp(-sigma * (s - seg.a));
+        return {s, equiangular ? equiangularPdf(seg, s) : sigma * fall / reach, fall};
     }
-    /// The chance that a flight from the piece's start meets a particle in it.
-    double reach() const { return -std::expm1(-sigma * (seg.b - seg.a)); }
 };
 
 /// How the points of `light` are placed on `piece` of `ray`.
@@ -80,14 +91,25 @@ PiecePoints piecePoints(const Ray& ray, const ParticipatingMedia::Piece& piece,
     const Vec3 c = light.falloff;
     const double sigma = piece.medium->medium.sigmaTMax();
     const bool equiangular = c.z * h * h >= c.x + c.y * h || !(sigma * (b - a) > 1e-9);
-    return {{a, b, delta, h}, sigma, equiangular};
+    return {{a, b, delta, h}, sigma, equiangular, -std::expm1(-sigma * (b - a))};
 }
 
-/// The density, per unit world length, with which a free flight that reached a homogeneous
-/// piece scatters at distance d into it: σs e^{−σ̄ d}, with the largest channels (the tracking
-/// majorant σ̄ and σs) standing for all three. Only the MIS weights use it.
-double flightPdf(const Medium& m, double d) {
-    return maxChannel(m.sigmaS) * std::exp(-m.sigmaTMax() * d);
+/// The lamp points' share of single scattering at `point`, when they are `points` to the free
+/// flight's one (the balance heuristic: each technique's density times its number of samples,
+/// over their sum). The flight's density, per unit world length, is σs e^{−σ̄ d} at distance d
+/// into the piece, with the largest channels (the tracking majorant σ̄ and σs) standing for all
+/// three; only the weights use it.
+double balanceShare(const Medium& m, const PiecePoints::Point& point, double points) {
+    const double own = points * point.pdf;
+    return own / (own + maxChannel(m.sigmaS) * point.fall);
+}
+
+/// The transmittance e^{−σt d} of a homogeneous medium over the distance whose majorant
+/// transmittance is `fall`: `fall` itself when the medium is grey (σt = σ̄ in every channel).
+Colour transmittanceFrom(const Medium& m, double d, double fall) {
+    const Colour sigmaT = m.sigmaT();
+    if (sigmaT.r == sigmaT.g && sigmaT.g == sigmaT.b) return Colour(fall);
+    return beerLambert(sigmaT, d);
 }
 
 }  // namespace
@@ -358,13 +380,8 @@ double ParticipatingMedia::pointsShare(const Ray& ray, const Piece& piece, doubl
                                        const PointLight& light, double points) const {
     if (!pointsOn(piece, points)) return 0.0;
     if (settings_.direct == MediaDirect::LightPoints) return 1.0;
-    // The balance heuristic: each technique's density times its number of samples, over their
-    // sum, at the same point.
     const PiecePoints place = piecePoints(ray, piece, light);
-    const double s = t * glm::length(ray.d);
-    const double own = points * place.pdf(s);
-    const double flight = flightPdf(piece.medium->medium, s - place.seg.a);
-    return own / (own + flight);
+    return balanceShare(piece.medium->medium, place.at(t * glm::length(ray.d)), points);
 }
 
 Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& ray,
@@ -393,13 +410,15 @@ Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& r
                     // Step 2: a point on the piece, where this light's single scattering is
                     // (the points stratified: one in each equal share of the distribution).
                     const double u = (k + ctx.sampler.next1D()) / n;
-                    const EquiangularSample e = place.sample(u);
+                    const PiecePoints::Point e = place.sample(u);
                     const double t = e.s / glm::length(ray.d);
-                    const double share = pointsShare(ray, piece, t, source, points);
+                    const double share = settings_.direct == MediaDirect::LightPoints
+                                             ? 1.0
+                                             : balanceShare(m, e, points);
                     if (!(e.pdf > 0.0) || !(share > 0.0)) continue;
                     // Step 3: the light it scatters towards the ray's origin, seen through the
                     // media before it (closed form in this piece), over the point's density.
-                    const Colour seen = tr * beerLambert(m.sigmaT(), e.s - place.seg.a);
+                    const Colour seen = tr * transmittanceFrom(m, e.s - place.seg.a, e.fall);
                     light += seen * m.sigmaS * (share / (points * e.pdf)) *
                              lightFrom(ctx, source, ray.o + t * ray.d, travel, m);
                 }

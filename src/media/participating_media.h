@@ -29,7 +29,7 @@ struct MediaSettings {
     int bounces = 256;
     MediaDirect direct = MediaDirect::Mis;  ///< Where single scattering is sampled.
     /// Lamp points per lamp per pixel, shared among the pixel's samples (--media-points).
-    int points = 4;
+    int points = 64;
     /// Lamp points per lamp along a path's first ray: points / samples per pixel, a whole
     /// number where that is 1 or more, else the chance of one point (its later rays take none).
     double pointsPerRay = 4.0;

@@ -35,6 +35,8 @@ TrackedMedium::TrackedMedium(const Medium& medium_, const Mat4& worldToMedium_,
           majorantResolution) {}
 
 Colour beerLambert(const Colour& sigmaT, double d) {
+    // A grey medium (the usual fog) needs one exponential, not three.
+    if (sigmaT.r == sigmaT.g && sigmaT.g == sigmaT.b) return Colour(std::exp(-sigmaT.r * d));
     return {std::exp(-sigmaT.r * d), std::exp(-sigmaT.g * d), std::exp(-sigmaT.b * d)};
 }
 

@@ -243,6 +243,8 @@ plot '$data/povray/povray.dat' index 1 using 3:4 with linespoints pt 5 lc rgb '#
      '' index 1 using 3:4:2 with labels offset char 0,1 font ',8' tc rgb '#1f4e8c' notitle, \\
      '' index 3 using 3:4 with linespoints pt 7 lw 2 lc rgb '#dd3333' title 'raybook default, N renders at the pixel centres', \\
      '' index 3 using 3:4:2 with labels offset char 0,-1 font ',8' tc rgb '#dd3333' notitle, \\
+     '' index 4 using 3:4 with linespoints pt 9 lw 2 lc rgb '#2a9d4a' title 'raybook default, one render, N lamp points per ray', \\
+     '' index 4 using 3:4:2 with labels offset char 0,1 font ',8' tc rgb '#2a9d4a' notitle, \\
      '' index 0 using 3:4 with linespoints pt 4 lw 1 dt 2 lc rgb '#aa5555' title 'raybook default, N spp jittered (antialiased)', \\
      '' index 2 using 3:4 with linespoints pt 6 lw 2 lc rgb '#e8a33d' title 'raybook ray marching, step S, 1 spp', \\
      '' index 2 using 3:4:2 with labels offset char 0,-1 font ',8' tc rgb '#e8a33d' notitle

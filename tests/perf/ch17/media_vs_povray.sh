@@ -8,6 +8,9 @@
 #   MEDIA_ROUNDS=N    timed rounds, the fastest run of each point kept (default 3)
 #   PLUME_SIZE=WxH    the plume's image size (default 96x96, as tests/perf/ch17/charts.sh)
 #   PLUME_REFERENCE=N renders averaged for raybook's plume reference (default 2048)
+#   MEDIA_PLUME=no    leave the plume out (the shaft alone)
+#   MEDIA_RB_ARGS=... options for raybook's measured runs, not its references (to compare
+#                     settings, e.g. --media-points=4)
 # Writes OUT_DIR/povray.dat and OUT_DIR/plume.dat (renderer, quality, seconds, RMSE) and prints
 # Markdown: the renderers' points, the ratio raybook/POV-Ray of render time at equal error;
 # last, the "target NAME RATIO" lines for make bench.
@@ -70,6 +73,12 @@ command -v povray >/dev/null || { echo "media_vs_povray: povray is not installed
 [ -x "$rmse" ] || { echo "media_vs_povray: $rmse not built"; exit 1; }
 plume_on=yes
 [ -x "$df3" ] || { plume_on=; echo "media_vs_povray: $df3 not built (no NanoVDB: make deps); no plume" >&2; }
+[ "${MEDIA_PLUME:-yes}" != no ] || plume_on=
+read -r -a rb_args <<<"${MEDIA_RB_ARGS:-}"
+measured() {  # rb's arguments with MEDIA_RB_ARGS before the run's own
+  local png=$1 n=$2; shift 2
+  rb "$png" "$n" ${rb_args[@]+"${rb_args[@]}"} "$@"
+}
 tmp=$(mktemp -d /tmp/raybook-media.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -118,6 +127,7 @@ fi
 
 rbn=(1 4 16 64 256)
 rcn=(1 4 16 64)
+rpn=(4 16 64 256 1024)
 plume_rcn=(1 4 16 64 256)
 steps=(0.4 0.2 0.1 0.05 0.025 0.0125)
 pvn=(2 5 10 20 50 100)
@@ -133,7 +143,7 @@ centre_series() {  # key-prefix reference.png round counts...
     # N renders of one sample at the pixel centre (as POV-Ray's -A), seeds 1..N, averaged.
     total=0
     for i in $(seq "$n"); do
-      t=$(rb "$tmp/rc-$i.png" "$threads" --seed "$i" --spp 1)
+      t=$(measured "$tmp/rc-$i.png" "$threads" --seed "$i" --spp 1)
       total=$(awk -v a="$total" -v b="$t" 'BEGIN { print a + b }')
     done
     keep "$key$n" "$total"
@@ -154,10 +164,15 @@ povray_series() {  # key-prefix reference.png round
 for round in $(seq "$rounds"); do
   echo "media_vs_povray: round $round of $rounds" >&2
   for n in "${rbn[@]}"; do
-    keep "rb$n" "$(rb "$tmp/img.png" "$threads" --seed 1 --spp "$n")"
+    keep "rb$n" "$(measured "$tmp/img.png" "$threads" --seed 1 --spp "$n")"
     [ "$round" = 1 ] && rmses[rb$n]=$("$rmse" rmse "$tmp/img.png" "$tmp/rb-ref.png")
   done
   centre_series rc "$tmp/rc-ref.png" "$round" "${rcn[@]}"
+  for n in "${rpn[@]}"; do
+    # One render at the pixel centres with N lamp points per ray: POV-Ray's samples per ray.
+    keep "rp$n" "$(measured "$tmp/img.png" "$threads" --seed 1 --spp 1 --media-points="$n")"
+    [ "$round" = 1 ] && rmses[rp$n]=$("$rmse" rmse "$tmp/img.png" "$tmp/rc-ref.png")
+  done
   for s in "${steps[@]}"; do
     keep "mr$s" "$(rb "$tmp/img.png" "$threads" --seed 1 --spp 1 --media=march --media-step="$s")"
     [ "$round" = 1 ] && rmses[mr$s]=$("$rmse" rmse "$tmp/img.png" "$tmp/mr-ref.png")
@@ -186,6 +201,8 @@ centre="# centre: quality = renders of 1 sample at the pixel centre, averaged (t
   series march mr "${steps[@]}"
   echo "$centre"
   series centre rc "${rcn[@]}"
+  echo "# points: quality = lamp points per ray, one render at the pixel centres"
+  series points rp "${rpn[@]}"
 } >"$dat"
 rm -f "$out/plume.dat"
 [ -z "$plume_on" ] || {
@@ -205,6 +222,7 @@ def load(path):
 points = load(sys.argv[1])
 plume = load(sys.argv[2]) if os.path.exists(sys.argv[2]) else None
 rb, pv, mr, rc = points("raybook"), points("povray"), points("march"), points("centre")
+rp = points("points")
 size, plume_size, threads, rounds, rc_error, pl_renders, pl_error = sys.argv[3:10]
 def table(head, time, series):
     print()
@@ -222,6 +240,7 @@ print(f"Fog and a light shaft (tests/perf/ch17/shaft.lua, single scattering) at 
       f"pixel-centre reference (256 one-sample renders at 64 lamp points) has an error of its own "
       f"of about {rc_error} (its two halves' averages differ by twice that).")
 tables(pv, rc)
+table("raybook's default, one render at the pixel centres, lamp points per ray", "render", rp)
 table("raybook's default, samples per pixel (jittered over the pixel)", "render", rb)
 table("raybook, ray marching, step (1 sample per pixel)", "render", mr)
 def time_at(points, e):
@@ -268,13 +287,14 @@ def equal_error(pv, columns):
     return ratios
 ratios = equal_error(pv, [
     ("c", "raybook pixel centres", "raybook's default at the pixel centres (as POV-Ray's -A)", rc),
+    ("n", "raybook points", "raybook's default at the pixel centres, N lamp points per ray (as POV-Ray's N samples)", rp),
     ("d", "raybook jittered", "raybook's default, N samples jittered over the pixel (antialiased)", rb),
     ("m", "raybook marching", "raybook's ray marching (POV-Ray's kind of method)", mr)])
 print()
 print("What differs: POV-Ray's method 3 places its samples along each camera ray's stretch of fog "
       "(jittered, adaptively refined where neighbouring samples differ) and lights every one, as "
-      "raybook's ray marching does at a fixed step. raybook's default draws, per sample, 4 "
-      "stratified lamp points along the ray and one forced free flight, weighted by MIS; the "
+      "raybook's ray marching does at a fixed step. raybook's default draws, per pixel, "
+      "--media-points (64) stratified lamp points along its rays and one forced free flight, weighted by MIS; the "
       "floor behind the fog is seen through the closed-form transmittance. POV-Ray's -A traces one "
       "ray through each pixel centre: the pixel-centre series does the same (N one-sample renders "
       "with their own seeds, averaged, against 256 such renders at 64 lamp points), while the "
@@ -296,8 +316,8 @@ if plume:
     ratios.update(equal_error(ppv, [
         ("p", "raybook pixel centres", "the plume, raybook's default at the pixel centres", prc)]))
 print()
-for key, name in (("c", "media_povray"), ("d", "media_povray_aa"), ("m", "media_povray_march"),
-                  ("p", "media_povray_plume")):
+for key, name in (("c", "media_povray"), ("n", "media_povray_points"), ("d", "media_povray_aa"),
+                  ("m", "media_povray_march"), ("p", "media_povray_plume")):
     if ratios.get(key):
         print(f"target {name} {median(ratios[key]):.2f}")
 PY
