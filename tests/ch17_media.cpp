@@ -658,7 +658,8 @@ SCENARIO("The image does not depend on the majorant", "[ch17][ex17.2][ex17.3]") 
     }
 }
 
-SCENARIO("Media renders are the same bits on one thread and two", "[ch17]") {
+SCENARIO("Media renders are the same bits on one thread and two",
+         "[ch17][ex17.1][ex17.2][ex17.3]") {
     GIVEN("a box of noise smoke in front of a lit wall") {
         const std::string lua = mediumScene("{sigma_s = 2, density = {noise = 1.5, bias = 0.3}}");
         THEN("one thread and two give identical images") {
@@ -761,7 +762,7 @@ SCENARIO("Media sit where the scene graph puts them", "[ch17]") {
     }
 }
 
-SCENARIO("A dense medium renders without black or NaN pixels", "[ch17]") {
+SCENARIO("A dense medium renders without black or NaN pixels", "[ch17][ex17.1][ex17.2]") {
     GIVEN("a white box of smoke with σs = 1000, no absorption, lit from the front-right") {
         const std::string lua = mediumScene("{sigma_s = 1000}");
         WHEN("it is rendered") {
@@ -789,7 +790,7 @@ SCENARIO("A dense medium renders without black or NaN pixels", "[ch17]") {
 SCENARIO(
     "An ambient furnace: a dense white medium lit by ambient light alone returns no more "
     "than the ambient term",
-    "[ch17]") {
+    "[ch17][ex17.1][ex17.2]") {
     // Source: A4's ambient term stands for all the indirect light, so a path counts it once, at
     // its first scattering, as a diffuse surface does (DESIGN §6: the ambient term is counted once
     // per camera path). With no lights and a black sky, every path that scatters returns exactly
