@@ -22,7 +22,7 @@ also gives the render phase's wall seconds from --stats, for reference. Prints a
 line "target milk_time_to_E SECONDS" for make bench.
 Source of the interpolation: between the two points that bracket the target, log RMSE is taken
 as linear in log time (RMSE ~ t^-1/2 for an unbiased estimator); beyond the last point, the
-last two points' slope.
+last two points' slope (with one point, the slope -1/2).
 """
 import argparse
 import math
@@ -78,6 +78,8 @@ def time_to(points, target):
     """The time at which the RMSE reaches `target`, on log-log axes through `points`
     ((time, rmse) in order of time)."""
     logs = [(math.log(t), math.log(e)) for t, e in points]
+    if len(logs) == 1:  # one point: RMSE ~ t^-1/2
+        return math.exp(logs[0][0] + 2.0 * (logs[0][1] - math.log(target)))
     for (t0, e0), (t1, e1) in zip(logs, logs[1:]):
         if e0 >= math.log(target) >= e1 and e0 != e1:
             return math.exp(t0 + (math.log(target) - e0) * (t1 - t0) / (e1 - e0))
