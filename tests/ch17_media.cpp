@@ -429,6 +429,52 @@ SCENARIO("Equiangular points are spread as the angle under which the light sees 
         }
 }
 
+SCENARIO("A walk's shadow rays played for by Russian roulette keep their light's mean", "[ch17]") {
+    // Source: a particle at depth 0.6 of a slab ℓ = 1 (σs = 10, σa = 0.1, g = 0) sees the lamp
+    // at x = 10 through the last 0.4 of the slab, T = e^(−10.1 · 0.4) = e^(−4.04), so it
+    // scatters π p(1) T I = π (1 / 4π) e^(−4.04) = e^(−4.04) / 4 back along the axis (A4's
+    // units, hence π). Russian roulette traces the shadow ray with a chance q and divides its
+    // light by q: E = q · (L / q) = L, whatever q.
+    const double sa = 0.1, ss = 10.0, length = 1.0;
+    const double expected = 0.25 * std::exp(-(sa + ss) * 0.4);
+    const rb::Medium m = medium(sa, ss, std::make_shared<rb::ConstantDensity>());
+    const Slab slab(m, length, {});
+    const auto* media =
+        dynamic_cast<const rb::ParticipatingMedia*>(slab.world.pipeline.media.get());
+    REQUIRE(media != nullptr);
+    const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+    const Vec3 x(0.6, 0.0, 0.0), travel(-1.0, 0.0, 0.0);
+    const double z = rbtest::zCritical(sidak(0.001, 2));
+    // Both roulettes play here: T = 0.018 is below kShadowRouletteBelow, and the walk's guess
+    // of 1e-4 sets the chance of tracing at all to kLeastShadowChance.
+    REQUIRE(std::exp(-(sa + ss) * 0.4) < rb::kShadowRouletteBelow);
+    REQUIRE(1e-4 / rb::kShadowRouletteBelow < rb::kLeastShadowChance);
+    for (const double guess : {1.0, 1e-4})
+        GIVEN("a particle at depth 0.6 of a slab σs = 10, σa = 0.1, ℓ = 1, the walk guessing " +
+              std::to_string(guess) + " for its transmittance to the lamp") {
+            WHEN("its light is estimated 400000 times") {
+                double traced = 0.0;
+                const auto [mean, error] = meanAndError(400000, [&](int i) {
+                    rb::RayCounters counters;
+                    rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 21);
+                    const rb::ShadeContext ctx{slab.world.scene, integrator, sampler, counters, 0,
+                                               rb::kNoMedia,     1.0,        false};
+                    double g = guess;
+                    const double light = media->walkLight(ctx, x, x, travel, m, g).r;
+                    if (light > 0.0) traced += 1.0;
+                    return light;
+                });
+                THEN("the mean passes a z-test against e^(−4.04) / 4, though few rays are traced") {
+                    INFO("mean " << mean << " ± " << error << " against " << expected << ", "
+                                 << traced / 4000.0 << "% of the shadow rays traced");
+                    CHECK(std::abs(mean - expected) < z * error);
+                    // The chance is T / kShadowRouletteBelow = 0.35, times 0.02 for the guess.
+                    CHECK(traced < 0.5 * 400000);
+                }
+            }
+        }
+}
+
 SCENARIO("A lamp inside fog: free flights, light points and both under MIS agree",
          "[ch17][ex17.1][ex17.2][ex17.4]") {
     // Source: single scattering along the ray p(x) = (x, 0, 0) through a slab x in [0, ℓ] with

@@ -11,6 +11,7 @@ class Box final : public Shape {
   public:
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     AABB bounds() const override { return AABB{Vec3(0.0), Vec3(1.0)}; }
+    bool convex() const override { return true; }
 };
 
 }  // namespace rb

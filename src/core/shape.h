@@ -32,6 +32,9 @@ class Shape {
         (void)out;
         return -1;
     }
+    /// True when no line crosses the surface more than twice (a sphere, a box): chapter 17
+    /// stops looking for a medium boundary's crossings once a ray has left it.
+    virtual bool convex() const { return false; }
     /// The shape's own surface coordinates at object-space point p on part `primitive` (the
     /// uv its hits carry), with the derivatives dp/du and dp/dv; false when it has none of its
     /// own. Chapter 10's 'surface' mapping reads them for shapes it does not know (chapter 15's

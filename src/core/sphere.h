@@ -9,7 +9,8 @@ namespace rb {
 /// Roots of a·t² + 2·h·t + c = 0 in increasing order; false when there are none.
 /// Uses the cancellation-free form, so it stays accurate when the ray starts far away.
 // [stable-quadratic]
-inline bool solveQuadraticHalfB(double a, double h, double c, const Vec3& f, double& t0, double& t1) {
+inline bool solveQuadraticHalfB(double a, double h, double c, const Vec3& f, double& t0,
+                                double& t1) {
     // The discriminant h² − a·c loses all its digits when the ray starts far away, because
     // both terms grow like |o|². The equal quantity a·(1 − |f|²), with f the vector from the
     // centre to the ray's closest point, does not. Source: Haines et al., "Precision
@@ -35,6 +36,7 @@ class Sphere final : public Shape {
   public:
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     AABB bounds() const override { return AABB{Vec3(-1.0), Vec3(1.0)}; }
+    bool convex() const override { return true; }
 };
 
 }  // namespace rb

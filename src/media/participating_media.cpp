@@ -28,6 +28,7 @@ int crossings(const Instance& boundary, const Ray& ray, double* ts) {
     double lo = 0.0, hi = kInfinity;
     if (!clipToBox(ray, boundary.worldBounds, lo, hi)) return 0;
     int count = 0;
+    const bool convex = boundary.shape->convex();
     Ray r = ray;
     double base = 0.0;
     ObjectHit hit;
@@ -37,6 +38,9 @@ int crossings(const Instance& boundary, const Ray& ray, double* ts) {
         // Go on from just beyond the surface, on the side the ray goes to.
         const Vec3 p = r.o + hit.t * r.d;
         const Vec3 n = boundary.normalToWorld * hit.n;
+        // A convex shape, once left, is left for good: no need to look again (a walk through
+        // a ball of milk asks this twice a scattering).
+        if (convex && glm::dot(n, r.d) > 0.0) break;
         r.o = offsetRayOrigin(p, n, r.d);
     }
     return count;
@@ -140,23 +144,37 @@ ParticipatingMedia::ParticipatingMedia(std::vector<Instance> boundaries, const M
 }
 
 // [media-pieces]
-void ParticipatingMedia::pieces(const Ray& ray, double tEnd, std::vector<Piece>& out) const {
-    out.clear();
+template <class Visit>
+void ParticipatingMedia::forEachPiece(const Ray& ray, double tEnd, Visit&& visit) const {
     // Step 1: every boundary's crossings. An odd count to infinity means the ray starts
-    // inside (the camera in the fog box, a ray leaving a surface in the smoke).
+    // inside (the camera in the fog box, a ray leaving a surface in the smoke). They are kept
+    // on the stack while they fit: a walk through a dense cloud asks this twice a scattering.
     struct Crossing {
         double t;
         int region;
     };
-    std::vector<Crossing> events;
+    constexpr int kOnStack = 16;
+    Crossing onStack[kOnStack];
+    std::vector<Crossing> onHeap;
+    int count = 0;
+    auto add = [&](const Crossing& c) {
+        if (count < kOnStack) {
+            onStack[count++] = c;
+            return;
+        }
+        if (onHeap.empty()) onHeap.assign(onStack, onStack + kOnStack);
+        onHeap.push_back(c);
+        ++count;
+    };
     std::uint64_t inside = 0;
     double ts[kMaxCrossings];
     for (size_t r = 0; r < boundaries_.size(); ++r) {
         const int n = crossings(boundaries_[r], ray, ts);
         if (n % 2 == 1) inside |= std::uint64_t{1} << r;
-        for (int k = 0; k < n && ts[k] < tEnd; ++k) events.push_back({ts[k], static_cast<int>(r)});
+        for (int k = 0; k < n && ts[k] < tEnd; ++k) add({ts[k], static_cast<int>(r)});
     }
-    std::sort(events.begin(), events.end(),
+    Crossing* events = count <= kOnStack ? onStack : onHeap.data();
+    std::sort(events, events + count,
               [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
     // Step 2: between crossings, the medium of the latest node that holds the point (a node
     // nested in another comes later in the scene graph, so it wins inside); none: the fog.
@@ -165,20 +183,29 @@ void ParticipatingMedia::pieces(const Ray& ray, double tEnd, std::vector<Piece>&
     auto emit = [&](double a, double b, std::uint64_t mask) {
         if (mask != 0) {
             const int region = 63 - __builtin_clzll(mask);
-            if (a < b) out.push_back({a, b, tracked_[region].get()});
+            if (a < b) return visit(Piece{a, b, tracked_[region].get()});
         } else if (fogHere) {
             a = std::max(a, fog0);
             b = std::min(b, fog1);
-            if (a < b) out.push_back({a, b, fog_});
+            if (a < b) return visit(Piece{a, b, fog_});
         }
+        return true;
     };
     double t = 0.0;
-    for (const Crossing& e : events) {
-        emit(t, e.t, inside);
-        inside ^= std::uint64_t{1} << e.region;
-        t = e.t;
+    for (int k = 0; k < count; ++k) {
+        if (!emit(t, events[k].t, inside)) return;
+        inside ^= std::uint64_t{1} << events[k].region;
+        t = events[k].t;
     }
     emit(t, tEnd, inside);
+}
+
+void ParticipatingMedia::pieces(const Ray& ray, double tEnd, std::vector<Piece>& out) const {
+    out.clear();
+    forEachPiece(ray, tEnd, [&](const Piece& piece) {
+        out.push_back(piece);
+        return true;
+    });
 }
 // [media-pieces]
 
@@ -278,6 +305,9 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
     Hit hit;
     bool found = false;
     std::vector<Piece> stretches;
+    // The walk's guess of the largest transmittance to a light at its next scattering
+    // (walkLight): 1 until a shadow ray has measured it.
+    double shadowGuess = 1.0;
     for (int bounce = 0;; ++bounce) {
         // Step 0: the media along this ray, and single scattering towards the lights at points
         // placed for each (equiangular, or by transmittance), weighted against what the free
@@ -316,7 +346,8 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
         // each light's MIS share), and at the path's first scattering A4's ambient light, which
         // stands for all the indirect light: the rest of the path must not count it again.
         const Vec3 travel = glm::normalize(r.d);
-        radiance += beta * lightScattered(ctx, x, travel, *m, &site);
+        radiance += beta * (bounce == 0 ? lightScattered(ctx, x, travel, *m, &site)
+                                        : walkLight(ctx, r.o, x, travel, *m, shadowGuess));
         if (bounce == 0 && ctx.ambient) radiance += beta * ctx.scene.ambient;
         // Step 2: and light from one direction the phase function draws (its pdf cancels the
         // phase function), until the path has scattered `bounces` more times.
@@ -343,8 +374,33 @@ Colour ParticipatingMedia::lightScattered(const ShadeContext& ctx, const Vec3& x
     return light;
 }
 
+Colour ParticipatingMedia::walkLight(const ShadeContext& ctx, const Vec3& previous, const Vec3& x,
+                                     const Vec3& travel, const Medium& m, double& guess) const {
+    // Step 1: the guess grows by e^{σ̄ ℓ} over the flight of length ℓ from the previous
+    // scattering, as much as a flight straight towards the light would gain (a guess where the
+    // medium curves or changes: the roulette's weight keeps the mean whatever it guesses).
+    guess = std::min(1.0, guess * std::exp(m.sigmaTMax() * glm::length(x - previous)));
+    // Step 2: where the light is likely far out of reach, this scattering's shadow rays are
+    // played for by Russian roulette, before any is traced.
+    const double chance = std::clamp(guess / kShadowRouletteBelow, kLeastShadowChance, 1.0);
+    if (chance < 1.0 && ctx.sampler.next1D() >= chance) return Colour(0.0);
+    // Step 3: each light's shadow rays (their own roulette on the transmittance they measure),
+    // which set the next guess.
+    Colour light(0.0);
+    double largest = 0.0;
+    for (const PointLight& source : ctx.scene.lights)
+        light += lightFrom(ctx, source, x, travel, m, true, &largest);
+    guess = largest;
+    return light / chance;
+}
+
+double shadowRayChance(const Colour& tr) {
+    return std::min(1.0, maxChannel(tr) / kShadowRouletteBelow);
+}
+
 Colour ParticipatingMedia::lightFrom(const ShadeContext& ctx, const PointLight& source,
-                                     const Vec3& x, const Vec3& travel, const Medium& m) const {
+                                     const Vec3& x, const Vec3& travel, const Medium& m,
+                                     bool roulette, double* largest) const {
     const bool area = source.shape && ctx.scene.sampleAreaLights;
     const int perAxis = !area                        ? 1
                         : ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples
@@ -358,10 +414,22 @@ Colour ParticipatingMedia::lightFrom(const ShadeContext& ctx, const PointLight& 
         const Vec3 toLight = from - x;
         const double r = glm::length(toLight);
         if (!(r > 0.0) || emission <= 0.0) continue;
-        if (ctx.integrator.occluded(Ray{x, toLight}, 1.0, ctx.counters)) continue;
         // A4's lights are in units where a white diffuse surface returns I cos θ / r², π
         // times a physical point light's: the phase function is scaled to match.
         const double phase = kPi * henyeyGreenstein(glm::dot(travel, toLight / r), m.g);
+        if (roulette) {
+            // On a walk the transmittance comes first (closed form through homogeneous
+            // media): deep in a cloud it is e^{−σt d}, next to nothing, and the shadow ray
+            // that would confirm it is played for by Russian roulette.
+            const Colour tr = transmittance(x, from, ctx.sampler, ctx.counters);
+            if (largest) *largest = std::max(*largest, maxChannel(tr));
+            const double keep = shadowRayChance(tr);
+            if (!(keep > 0.0) || (keep < 1.0 && ctx.sampler.next1D() >= keep)) continue;
+            if (ctx.integrator.occluded(Ray{x, toLight}, 1.0, ctx.counters)) continue;
+            sum += emission * source.intensityAt(r) * phase * tr / keep;
+            continue;
+        }
+        if (ctx.integrator.occluded(Ray{x, toLight}, 1.0, ctx.counters)) continue;
         sum += emission * source.intensityAt(r) * phase *
                transmittance(x, from, ctx.sampler, ctx.counters);
     }
@@ -501,16 +569,14 @@ Colour ParticipatingMedia::transmittance(const Vec3& a, const Vec3& b, Sampler& 
 }
 
 Colour ParticipatingMedia::transmittanceAlong(const Ray& ray, double tEnd, Sampler& sampler) const {
-    std::vector<Piece> stretches;
-    pieces(ray, tEnd, stretches);
     const TransmittanceMethod method =
         settings_.march ? TransmittanceMethod::March : settings_.shadows;
     Colour tr(1.0);
-    for (const Piece& piece : stretches) {
+    forEachPiece(ray, tEnd, [&](const Piece& piece) {
         tr *= estimateTransmittance(*piece.medium, ray, piece.t0, piece.t1, method, settings_.step,
                                     sampler);
-        if (!(maxChannel(tr) > 0.0)) break;
-    }
+        return maxChannel(tr) > 0.0;
+    });
     return tr;
 }
 // [media-transmittance]

@@ -19,6 +19,19 @@ enum class MediaDirect {
     LightPoints,  ///< Only at points placed for each light (free flights carry the path on).
 };
 
+/// Below this transmittance to a light, a shadow ray from a walk's later scatterings is traced
+/// only by Russian roulette (shadowRayChance): deep in a dense cloud nearly all are.
+constexpr double kShadowRouletteBelow = 0.05;
+
+/// The chance that a walk's shadow ray of transmittance `tr` is traced: 1 from
+/// kShadowRouletteBelow up (in the largest channel), in proportion below, so that a traced
+/// ray's tr / chance is kShadowRouletteBelow, never more than an untouched ray carries.
+double shadowRayChance(const Colour& tr);
+
+/// The least chance with which a walk's scattering traces its shadow rays, however far out of
+/// reach the walk guesses the light is (walkLight): a wrong guess weighs at most 1 / this.
+constexpr double kLeastShadowChance = 0.02;
+
 /// How a render treats its media: gr.option values, overridden by the command line.
 struct MediaSettings {
     bool march = false;  ///< Ray marching (single scattering only) instead of tracking.
@@ -60,6 +73,10 @@ class ParticipatingMedia final : public MediaTerm {
     };
     /// The stretches of the ray between t = 0 and tEnd, in order; empty space is left out.
     void pieces(const Ray& ray, double tEnd, std::vector<Piece>& out) const;
+    /// The same stretches, each passed to `visit` in order, until it returns false (no list
+    /// is built: a shadow ray needs none).
+    template <class Visit>
+    void forEachPiece(const Ray& ray, double tEnd, Visit&& visit) const;
 
     /// Where a free flight scattered: the ray, the piece and the parameter t, which the
     /// multiple importance sampling weights need.
@@ -77,6 +94,13 @@ class ParticipatingMedia final : public MediaTerm {
     /// add, once per path.
     Colour lightScattered(const ShadeContext& ctx, const Vec3& x, const Vec3& travel,
                           const Medium& m, const FlightSite* site = nullptr) const;
+    /// lightScattered on a walk's later scatterings (no lamp points there, so no MIS share):
+    /// x reached by a flight from `previous`. `guess` is the walk's guess of the largest
+    /// transmittance to a light here, from the last shadow rays: below kShadowRouletteBelow
+    /// the shadow rays are traced only with a chance (at least kLeastShadowChance), their light
+    /// divided by it; they set the next guess.
+    Colour walkLight(const ShadeContext& ctx, const Vec3& previous, const Vec3& x,
+                     const Vec3& travel, const Medium& m, double& guess) const;
 
   private:
     /// What a ray meets in the media along `stretches` (its pieces): nothing (`beta` holds the
@@ -97,8 +121,12 @@ class ParticipatingMedia final : public MediaTerm {
     /// the shadow-ray estimator in the others.
     Colour transmittanceAlong(const Ray& ray, double tEnd, Sampler& sampler) const;
     /// The light of one source, scattered at x along `travel` reversed (lightScattered's term).
+    /// With `roulette` (a walk's later scatterings), a shadow ray whose transmittance is below
+    /// kShadowRouletteBelow is traced with the chance shadowRayChance, its light divided by it,
+    /// and `largest` (if given) becomes at least the largest transmittance measured.
     Colour lightFrom(const ShadeContext& ctx, const PointLight& source, const Vec3& x,
-                     const Vec3& travel, const Medium& m) const;
+                     const Vec3& travel, const Medium& m, bool roulette = false,
+                     double* largest = nullptr) const;
     /// Single scattering towards every light along the ray's `stretches`, at `points` stratified
     /// points per light on each homogeneous piece (equiangular, or by transmittance for a light
     /// without falloff), MIS-weighted against free flights.

@@ -12,6 +12,11 @@ double maxChannel(const Colour& c) {
     return std::max({c.r, c.g, c.b});
 }
 
+/// True when the three channels are equal.
+bool grey(const Colour& c) {
+    return c.r == c.g && c.g == c.b;
+}
+
 /// The next tentative collision after t with majorant mu per unit of t: an exponential step.
 double nextCollision(double t, double mu, Sampler& sampler) {
     return t - std::log(1.0 - sampler.next1D()) / mu;
@@ -35,8 +40,8 @@ TrackedMedium::TrackedMedium(const Medium& medium_, const Mat4& worldToMedium_,
           majorantResolution) {}
 
 Colour beerLambert(const Colour& sigmaT, double d) {
-    // A grey medium (the usual fog) needs one exponential, not three.
-    if (sigmaT.r == sigmaT.g && sigmaT.g == sigmaT.b) return Colour(std::exp(-sigmaT.r * d));
+    // Grey media (most of them) need one exponential, not three.
+    if (grey(sigmaT)) return Colour(std::exp(-sigmaT.r * d));
     return {std::exp(-sigmaT.r * d), std::exp(-sigmaT.g * d), std::exp(-sigmaT.b * d)};
 }
 
@@ -44,12 +49,34 @@ Colour beerLambert(const Colour& sigmaT, double d) {
 FreeFlight sampleFreeFlight(const TrackedMedium& m, const Ray& ray, double t0, double t1,
                             Sampler& sampler) {
     FreeFlight flight;
-    const Ray local = m.toMedium(ray);
     // Coefficients per unit of t: σ per unit length times the length of ray.d.
     const double length = glm::length(ray.d);
+    if (m.medium.homogeneous() && grey(m.medium.sigmaA) && grey(m.medium.sigmaS)) {
+        // A homogeneous grey medium (milk, most fog): the exponential in closed form, then
+        // absorption or scattering by their shares of σt; the loop below would find no null
+        // collision, and a walk through milk takes hundreds of these flights.
+        const double mu = m.medium.sigmaTMax() * length;
+        if (!(mu > 0.0)) return flight;
+        const double t = nextCollision(t0, mu, sampler);
+        if (t >= t1) return flight;
+        flight.t = t;
+        flight.event = sampler.next1D() * mu < m.medium.sigmaA.r * length
+                           ? FreeFlight::Event::Absorbed
+                           : FreeFlight::Event::Scattered;
+        return flight;
+    }
+    const Ray local = m.toMedium(ray);
     const Colour sigmaA = m.medium.sigmaA * length, sigmaS = m.medium.sigmaS * length;
     const double sigmaTMax = m.medium.sigmaTMax() * length;
-    m.majorants.traverse(local, t0, t1, [&](double a, double b, double bound) {
+    // A homogeneous medium has density 1 all along the piece: one majorant, no grid to walk (a
+    // walk through milk takes hundreds of flights, each a cell or two long).
+    auto forEachCell = [&](auto&& cell) {
+        if (m.medium.homogeneous())
+            cell(t0, t1, 1.0);
+        else
+            m.majorants.traverse(local, t0, t1, cell);
+    };
+    forEachCell([&](double a, double b, double bound) {
         // μ̄: this cell's majorant. An empty cell holds no particle.
         const double mu = bound * sigmaTMax;
         if (!(mu > 0.0)) return true;

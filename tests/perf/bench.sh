@@ -312,6 +312,14 @@ if [ -x "$build/rt_ch17" ]; then
   say ""
   MEDIA_RUNS=$runs bash "$root/tests/perf/ch17/media_speed.sh" "$build" | tee "$out/ch17-speed.txt" | tee -a "$report"
 fi
+# The milk ball's time to RMSE 0.01 (issue 36: a dense medium, all multiple scattering), CPU
+# seconds on 1 thread against a converged reference kept in BUILD_DIR/bench/ (about 4 minutes
+# the first time, for the reference).
+if [ -x "$build/rt_ch18" ]; then
+  progress "milk ball convergence"
+  say ""
+  python3 "$root/tests/perf/ch17/milk_convergence.py" --rt "$build/rt_ch18" --out "$out" | tee -a "$report"
+fi
 
 # ---- Path tracing against Blender's Cycles (chapter 18) -------------------------------------
 # The chapter's Cornell box path traced by raybook and by Cycles (headless blender, CPU) at equal
