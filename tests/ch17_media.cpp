@@ -535,6 +535,71 @@ SCENARIO("A lamp inside fog: free flights, light points and both under MIS agree
         }
 }
 
+SCENARIO("A lamp inside a ramp of smoke: ratio-tracked lamp points and free flights agree",
+         "[ch17][ex17.1][ex17.2][ex17.3]") {
+    // Source: along the ray p(x) = (x, 1, 1) through a slab x in [0, ℓ] of density ρ(x) = a + bx,
+    // with a lamp of intensity 1 without falloff at q, the ambient light A and a sky S behind,
+    // L = ∫ σs ρ(x) π p(cos θ) e^(−σt τq(x)) e^(−σt τ(x)) dx + A σs/σt (1 − e^(−σt τ(ℓ)))
+    //     + S e^(−σt τ(ℓ)),
+    // τ(x) = a x + b x²/2 the optical depth from the slab's face and τq(x) = r (a + b (x + qx)/2)
+    // the one to the lamp (a linear density's mean along a segment is its value at the middle);
+    // the second term is ∫ σs ρ e^(−σt τ) dx in closed form. The first is integrated by
+    // Simpson's rule.
+    const double sa = 0.1, ss = 0.4, g = 0.5, length = 4.0, a = 0.5, b = 0.5;
+    const double ambient = 0.1, sky = 0.25;
+    const Vec3 lamp(2.0, 1.5, 1.0);
+    // The density lives in the slab's unit cube (x/ℓ, (y + 5)/10, (z + 5)/10): a + bℓ·(x/ℓ).
+    const rb::Medium m = medium(sa, ss, std::make_shared<RampDensity>(a, b * length, 1.0, 1.0), g);
+    const rb::Ray ray{Vec3(-1.0, 1.0, 1.0), Vec3(1.0, 0.0, 0.0)};
+    const double z = rbtest::zCritical(sidak(0.001, 3));
+    GIVEN(
+        "density 0.5 + 0.5x, σa = 0.1, σs = 0.4, g = 0.5, ℓ = 4, a lamp 0.5 off the ray, "
+        "ambient light 0.1 and a sky of 0.25") {
+        const double st = sa + ss;
+        const auto depth = [&](double x) { return a * x + b * x * x / 2.0; };
+        const auto integrand = [&](double x) {
+            const Vec3 toLamp = lamp - Vec3(x, 1.0, 1.0);
+            const double r = glm::length(toLamp);
+            const double toLampDepth = r * (a + b * (x + lamp.x) / 2.0);
+            return ss * (a + b * x) * kPi * rb::henyeyGreenstein(toLamp.x / r, g) *
+                   std::exp(-st * toLampDepth) * std::exp(-st * depth(x));
+        };
+        const int intervals = 200000;
+        double expected = integrand(0.0) + integrand(length);
+        for (int k = 1; k < intervals; ++k)
+            expected += (k % 2 ? 4.0 : 2.0) * integrand(k * length / intervals);
+        expected *= length / intervals / 3.0;
+        const double through = std::exp(-st * depth(length));
+        expected += ambient * ss / st * (1.0 - through) + sky * through;
+        WHEN("the ray is traced 100000 times with each --media-direct") {
+            std::map<std::string, std::pair<double, double>> estimates;
+            for (const std::string direct : {"flight", "light", "mis"}) {
+                Slab slab(m, length, {{"media-bounces", "0"}, {"media-direct", direct}}, lamp);
+                slab.world.scene.ambient = Colour(ambient);
+                slab.world.scene.background = Colour(sky);
+                estimates[direct] = meanAndError(100000, [&](int i) {
+                    rb::RayCounters counters;
+                    const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+                    rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 11);
+                    return integrator.trace(ray, sampler, counters, 0).r;
+                });
+            }
+            THEN("each passes a z-test against the integral") {
+                for (const auto& [direct, estimate] : estimates) {
+                    INFO(direct << ": mean " << estimate.first << " ± " << estimate.second
+                                << " against " << expected);
+                    CHECK(std::abs(estimate.first - expected) < z * estimate.second);
+                }
+            }
+            THEN("the ratio-tracked points have a smaller standard error than free flights") {
+                INFO("points ± " << estimates["mis"].second << ", free flights ± "
+                                 << estimates["flight"].second);
+                CHECK(estimates["mis"].second < estimates["flight"].second);
+            }
+        }
+    }
+}
+
 SCENARIO(
     "A surface behind homogeneous fog is seen through Beer–Lambert's transmittance, with no "
     "noise",

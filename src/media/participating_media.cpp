@@ -116,6 +116,45 @@ Colour transmittanceFrom(const Medium& m, double d, double fall) {
     return beerLambert(sigmaT, d);
 }
 
+/// How soft the spread of a heterogeneous piece's points is: e^{−α τ̄} with α below 1, since
+/// the majorant's optical depth τ̄ overstates the true one (by 2.7 on the plume at 16³ cells).
+constexpr double kMajorantSoftening = 0.5;
+
+/// Where single-scattering points go on one heterogeneous piece of a ray, for a light without
+/// falloff: with density α σ̄(t) e^{−α τ̄(t)} / (1 − e^{−α τ̄(t1)}) per unit t, σ̄ the majorant grid's
+/// bound per unit t and τ̄ its optical depth from the piece's start (piecewise linear, one
+/// piece per cell), so the points follow the majorant's transmittance, softened by α.
+struct MajorantPoints {
+    /// One majorant cell along the ray: from a to b, σ̄ per unit t, and τ̄ at a.
+    struct Cell {
+        double a, b, mu, depth;
+    };
+    std::vector<Cell> cells;
+    double total = 0.0;  ///< τ̄ at the piece's end.
+
+    MajorantPoints(const TrackedMedium& m, const Ray& ray, double t0, double t1) {
+        const double sigmaTMax = m.medium.sigmaTMax() * glm::length(ray.d);
+        m.majorants.traverse(m.toMedium(ray), t0, t1, [&](double a, double b, double bound) {
+            const double mu = bound * sigmaTMax;
+            if (mu > 0.0) {
+                cells.push_back({a, b, mu, total});
+                total += mu * (b - a);
+            }
+            return true;
+        });
+    }
+    /// The point for u in [0, 1), and its density per unit t (by inverting τ̄ in the cells).
+    std::pair<double, double> sample(double u) const {
+        const double alpha = kMajorantSoftening, reach = -std::expm1(-alpha * total);
+        const double depth = std::min(-std::log1p(-u * reach) / alpha, total);
+        auto cell = std::upper_bound(cells.begin(), cells.end(), depth,
+                                     [](double d, const Cell& c) { return d < c.depth; });
+        --cell;  // The last cell that starts at or before the depth.
+        const double t = std::min(cell->a + (depth - cell->depth) / cell->mu, cell->b);
+        return {t, alpha * cell->mu * std::exp(-alpha * depth) / reach};
+    }
+};
+
 }  // namespace
 
 ParticipatingMedia::ParticipatingMedia(std::vector<Instance> boundaries, const Medium* fog,
@@ -317,14 +356,31 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
         // they cost more than they save (chapter 17's scene: 2.4 times the time for a tenth
         // less error).
         const double points = bounce == 0 ? settings_.pointsPerRay : 0.0;
+        // On heterogeneous pieces the points carry all the single scattering (and A4's ambient
+        // light), and their ratio-tracking passes show the surface beyond (`seen`) in place
+        // of the free flight's coin toss.
+        const auto tracked = [&](const Piece& p) { return trackedOn(p, points); };
+        const bool anyTracked =
+            !ctx.scene.lights.empty() && std::any_of(stretches.begin(), stretches.end(), tracked);
+        Colour seen(1.0);
         if (points > 0 && settings_.direct != MediaDirect::FreeFlight)
-            radiance += beta * pointsScattered(ctx, r, stretches, points);
+            radiance +=
+                beta * pointsScattered(ctx, r, stretches, points, anyTracked ? &seen : nullptr);
+        // A path that may not scatter again needs no free flight where nothing is left to it.
+        if (anyTracked && settings_.bounces == 0 &&
+            std::all_of(stretches.begin(), stretches.end(), [&](const Piece& p) {
+                return tracked(p) || !(maxChannel(p.medium->medium.sigmaS) > 0.0);
+            })) {
+            throughput = seen;
+            return radiance;
+        }
         Vec3 x;
         const Medium* m = nullptr;
         FlightSite site{nullptr, {}, 0.0, points};
         const FreeFlight::Event event =
             bounce == 0 ? firstFlight(ctx, r, stretches, beta, x, m, site, throughput)
                         : track(ctx, r, stretches, beta, x, m, site);
+        if (anyTracked) throughput = seen;
         if (event == FreeFlight::Event::Absorbed) return radiance;
         if (event == FreeFlight::Event::None) {
             // The path leaves the media: the first ray's surface is the caller's to shade,
@@ -348,7 +404,8 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
         const Vec3 travel = glm::normalize(r.d);
         radiance += beta * (bounce == 0 ? lightScattered(ctx, x, travel, *m, &site)
                                         : walkLight(ctx, r.o, x, travel, *m, shadowGuess));
-        if (bounce == 0 && ctx.ambient) radiance += beta * ctx.scene.ambient;
+        if (bounce == 0 && ctx.ambient && !(anyTracked && tracked(site.piece)))
+            radiance += beta * ctx.scene.ambient;
         // Step 2: and light from one direction the phase function draws (its pdf cancels the
         // phase function), until the path has scattered `bounces` more times.
         if (bounce >= settings_.bounces || ctx.weight * maxChannel(beta) < ctx.scene.minWeight)
@@ -441,31 +498,46 @@ Colour ParticipatingMedia::lightFrom(const ShadeContext& ctx, const PointLight& 
 bool ParticipatingMedia::pointsOn(const Piece& piece, double points) const {
     const Medium& m = piece.medium->medium;
     return points > 0 && settings_.direct != MediaDirect::FreeFlight && !settings_.march &&
-           m.homogeneous() && maxChannel(m.sigmaS) > 0.0;
+           maxChannel(m.sigmaS) > 0.0;
+}
+
+bool ParticipatingMedia::trackedOn(const Piece& piece, double points) const {
+    return pointsOn(piece, points) && !piece.medium->medium.homogeneous();
 }
 
 double ParticipatingMedia::pointsShare(const Ray& ray, const Piece& piece, double t,
                                        const PointLight& light, double points) const {
     if (!pointsOn(piece, points)) return 0.0;
-    if (settings_.direct == MediaDirect::LightPoints) return 1.0;
+    // A free flight's density in a heterogeneous piece is unknown, so no MIS there: its points
+    // carry all of its single scattering.
+    if (settings_.direct == MediaDirect::LightPoints || trackedOn(piece, points)) return 1.0;
     const PiecePoints place = piecePoints(ray, piece, light);
     return balanceShare(piece.medium->medium, place.at(t * glm::length(ray.d)), points);
 }
 
 Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& ray,
-                                           const std::vector<Piece>& stretches,
-                                           double points) const {
+                                           const std::vector<Piece>& stretches, double points,
+                                           Colour* seen) const {
     if (ctx.scene.lights.empty()) return Colour(0.0);
-    // Only pieces up to the last homogeneous one matter.
+    // Only pieces up to the last one with points matter, unless the transmittance to the end
+    // is asked for.
     size_t last = stretches.size();
     for (size_t k = 0; k < stretches.size(); ++k)
         if (pointsOn(stretches[k], points)) last = k;
+    if (seen) last = stretches.empty() ? stretches.size() : stretches.size() - 1;
     if (last == stretches.size()) return Colour(0.0);
     const Vec3 travel = glm::normalize(ray.d);
     Colour tr(1.0), light(0.0);
     for (size_t k = 0; k <= last; ++k) {
         const Piece& piece = stretches[k];
         const Medium& m = piece.medium->medium;
+        if (trackedOn(piece, points)) {
+            // A heterogeneous piece: its points read one ratio-tracking pass, which also
+            // carries `tr` through it.
+            light += trackedScattered(ctx, ray, piece, points, tr);
+            if (!(maxChannel(tr) > 0.0)) break;
+            continue;
+        }
         if (pointsOn(piece, points)) {
             for (const PointLight& source : ctx.scene.lights) {
                 const PiecePoints place = piecePoints(ray, piece, source);
@@ -486,23 +558,89 @@ Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& r
                     if (!(e.pdf > 0.0) || !(share > 0.0)) continue;
                     // Step 3: the light it scatters towards the ray's origin, seen through the
                     // media before it (closed form in this piece), over the point's density.
-                    const Colour seen = tr * transmittanceFrom(m, e.s - place.seg.a, e.fall);
-                    light += seen * m.sigmaS * (share / (points * e.pdf)) *
+                    const Colour back = tr * transmittanceFrom(m, e.s - place.seg.a, e.fall);
+                    light += back * m.sigmaS * (share / (points * e.pdf)) *
                              lightFrom(ctx, source, ray.o + t * ray.d, travel, m);
                 }
             }
         }
         // Step 3: what gets through this piece, for the pieces beyond it.
-        if (k < last)
+        if (k < last || seen)
             tr *= m.homogeneous()
                       ? beerLambert(m.sigmaT(), (piece.t1 - piece.t0) * glm::length(ray.d))
                       : estimateTransmittance(*piece.medium, ray, piece.t0, piece.t1,
                                               settings_.shadows, settings_.step, ctx.sampler);
         if (!(maxChannel(tr) > 0.0)) break;
     }
+    if (seen) *seen = tr;
     return light;
 }
 // [media-equiangular]
+
+// [media-tracked]
+Colour ParticipatingMedia::trackedScattered(const ShadeContext& ctx, const Ray& ray,
+                                            const Piece& piece, double points, Colour& tr) const {
+    const Medium& m = piece.medium->medium;
+    const double length = glm::length(ray.d);
+    const Vec3 travel = ray.d / length;
+    // Step 1: each light's points on the piece, stratified as on a homogeneous piece:
+    // equiangular for a light that falls off, else spread as the majorant's transmittance.
+    struct Point {
+        double t;
+        double pdf;  // Per unit world length.
+        const PointLight* light;
+    };
+    std::vector<Point> spots;
+    const MajorantPoints spread(*piece.medium, ray, piece.t0, piece.t1);
+    if (spread.total > 0.0)
+        for (const PointLight& source : ctx.scene.lights) {
+            const PiecePoints place = piecePoints(ray, piece, source);
+            const int n = points >= 1.0                   ? static_cast<int>(points)
+                          : ctx.sampler.next1D() < points ? 1
+                                                          : 0;
+            for (int k = 0; k < n; ++k) {
+                const double u = (k + ctx.sampler.next1D()) / n;
+                if (place.equiangular) {
+                    const EquiangularSample e = sampleEquiangular(place.seg, u);
+                    spots.push_back({e.s / length, e.pdf, &source});
+                } else {
+                    const auto [t, pdf] = spread.sample(u);
+                    spots.push_back({t, pdf / length, &source});
+                }
+            }
+        }
+    std::sort(spots.begin(), spots.end(), [](const Point& a, const Point& b) { return a.t < b.t; });
+    // Step 2: one ratio-tracking pass along the piece, read at every point: the collisions do
+    // not depend on the points, so each read's expectation is the transmittance to its point.
+    std::vector<double> at(spots.size());
+    std::vector<Colour> trAt(spots.size());
+    for (size_t i = 0; i < spots.size(); ++i) at[i] = spots[i].t;
+    const Colour through = ratioTrackReading(*piece.medium, ray, piece.t0, piece.t1, at.data(),
+                                             trAt.data(), static_cast<int>(at.size()), ctx.sampler);
+    // Step 3: the light each point scatters towards the ray's origin, over its density; a point
+    // the pass did not reach, or in empty space, needs no shadow ray.
+    const Ray local = piece.medium->toMedium(ray);
+    Colour light(0.0);
+    for (size_t i = 0; i < spots.size(); ++i) {
+        if (!(maxChannel(trAt[i]) > 0.0) || !(spots[i].pdf > 0.0)) continue;
+        const double density = m.density->at(local.o + spots[i].t * local.d);
+        if (!(density > 0.0)) continue;
+        light += trAt[i] * m.sigmaS * (density / (points * spots[i].pdf)) *
+                 lightFrom(ctx, *spots[i].light, ray.o + spots[i].t * ray.d, travel, m);
+    }
+    // Step 4: A4's ambient light scattered once along the piece needs no points: the density
+    // scales σs and σt alike, so ∫ σs ρ T dt = σs/σt (1 − T(t1)), read from the same pass.
+    if (ctx.ambient) {
+        const Colour st = m.sigmaT(), ss = m.sigmaS;
+        const Colour albedo(st.r > 0.0 ? ss.r / st.r : 0.0, st.g > 0.0 ? ss.g / st.g : 0.0,
+                            st.b > 0.0 ? ss.b / st.b : 0.0);
+        light += ctx.scene.ambient * albedo * (Colour(1.0) - through);
+    }
+    const Colour seenBefore = tr;
+    tr *= through;
+    return seenBefore * light;
+}
+// [media-tracked]
 
 // [media-march]
 Colour ParticipatingMedia::march(const ShadeContext& ctx, const Ray& ray, const Piece& piece,

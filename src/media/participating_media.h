@@ -128,13 +128,23 @@ class ParticipatingMedia final : public MediaTerm {
                      const Vec3& travel, const Medium& m, bool roulette = false,
                      double* largest = nullptr) const;
     /// Single scattering towards every light along the ray's `stretches`, at `points` stratified
-    /// points per light on each homogeneous piece (equiangular, or by transmittance for a light
-    /// without falloff), MIS-weighted against free flights.
+    /// points per light on each piece (equiangular, or by transmittance for a light without
+    /// falloff): on a homogeneous piece MIS-weighted against free flights, on a heterogeneous
+    /// one all of it (trackedScattered). With `seen`, the transmittance to the ray's end too.
     Colour pointsScattered(const ShadeContext& ctx, const Ray& ray,
-                           const std::vector<Piece>& stretches, double points) const;
-    /// True when single scattering on `piece` is sampled at lamp points as well, `points` per
-    /// lamp (0 on the later rays of a path).
+                           const std::vector<Piece>& stretches, double points,
+                           Colour* seen = nullptr) const;
+    /// Single scattering towards every light and of A4's ambient light on one heterogeneous
+    /// piece, from `points` points per light read off one ratio-tracking pass along it; `tr`,
+    /// the transmittance before the piece, is carried through it by the same pass.
+    Colour trackedScattered(const ShadeContext& ctx, const Ray& ray, const Piece& piece,
+                            double points, Colour& tr) const;
+    /// True when single scattering on `piece` is sampled at lamp points, `points` per lamp (0
+    /// on the later rays of a path).
     bool pointsOn(const Piece& piece, double points) const;
+    /// True when `piece` is heterogeneous and sampled at lamp points: they carry all of its
+    /// single scattering, and free flights none.
+    bool trackedOn(const Piece& piece, double points) const;
     /// The light points' share of single scattering towards `light` at parameter t of `piece`,
     /// when they are `points` to the free flight's one: 0 where only free flights sample it, 1
     /// where only light points do.

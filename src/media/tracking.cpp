@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rb {
 
@@ -122,6 +123,45 @@ FreeFlight sampleFreeFlight(const TrackedMedium& m, const Ray& ray, double t0, d
     return flight;
 }
 // [free-flight]
+
+// [ratio-track-reading]
+Colour ratioTrackReading(const TrackedMedium& m, const Ray& ray, double t0, double t1,
+                         const double* at, Colour* trAt, int count, Sampler& sampler) {
+    const double length = glm::length(ray.d);
+    const Colour sigmaT = m.medium.sigmaT() * length;
+    const double sigmaTMax = m.medium.sigmaTMax() * length;
+    const Ray local = m.toMedium(ray);
+    Colour tr(1.0);
+    int next = 0;  // The first read not yet taken.
+    const auto readBefore = [&](double t) {
+        for (; next < count && at[next] < t; ++next) trAt[next] = tr;
+    };
+    m.majorants.traverse(local, t0, t1, [&](double a, double b, double bound) {
+        const double mu = bound * sigmaTMax;
+        if (!(mu > 0.0)) return true;
+        for (double t = nextCollision(a, mu, sampler); t < b; t = nextCollision(t, mu, sampler)) {
+            // Step 1: the reads before this collision see the product so far.
+            readBefore(t);
+            // Step 2: the collision's ratio of null to majorant, as in estimateTransmittance.
+            const double density = m.medium.density->at(local.o + t * local.d);
+            tr *= (Colour(mu) - sigmaT * density) / mu;
+            // Step 3: Russian roulette on a small product, which keeps its expectation.
+            const double largest = maxChannel(tr);
+            if (largest < kRouletteBelow) {
+                if (!(sampler.next1D() * kRouletteBelow < largest)) {
+                    tr = Colour(0.0);
+                    return false;
+                }
+                tr *= kRouletteBelow / largest;
+            }
+        }
+        return true;
+    });
+    // The reads after the last collision (or after the walk ended: 0).
+    readBefore(std::numeric_limits<double>::infinity());
+    return tr;
+}
+// [ratio-track-reading]
 
 // [transmittance]
 Colour estimateTransmittance(const TrackedMedium& m, const Ray& ray, double t0, double t1,

@@ -55,6 +55,21 @@ enum class TransmittanceMethod {
 Colour estimateTransmittance(const TrackedMedium& m, const Ray& ray, double t0, double t1,
                              TransmittanceMethod method, double step, Sampler& sampler);
 
+/// Ratio tracking from t0 to t1, as estimateTransmittance's Ratio method, that also reads its
+/// running product at the parameters `at` (`count` of them, sorted, in [t0, t1]) into `trAt`:
+/// the product over the tentative collisions before each. The collisions do not depend on where
+/// they are read, so each read is an unbiased estimate of the transmittance from t0 to its
+/// parameter, as the result is to t1. Below kRouletteBelow the product plays Russian roulette
+/// (it survives with chance product / kRouletteBelow, then worth kRouletteBelow), so a walk
+/// into a thick cloud ends, and the reads past its end cost no shadow ray.
+/// Source: Novák, Selle and Jarosz 2014 (ratio tracking); Russian roulette keeps each read's
+/// expectation (Arvo and Kirk, "Particle transport and image synthesis", SIGGRAPH 1990).
+Colour ratioTrackReading(const TrackedMedium& m, const Ray& ray, double t0, double t1,
+                         const double* at, Colour* trAt, int count, Sampler& sampler);
+
+/// Where ratioTrackReading starts Russian roulette: a product below this.
+constexpr double kRouletteBelow = 0.05;
+
 /// The exact transmittance of a homogeneous medium over a world length d: e^{−σt d} per
 /// channel (Beer–Lambert).
 Colour beerLambert(const Colour& sigmaT, double d);
