@@ -20,6 +20,7 @@
 #include "test_helpers.h"
 
 using Catch::Contains;
+using Catch::EndsWith;
 using rb::Vec3;
 
 namespace {
@@ -554,7 +555,7 @@ SCENARIO("--lenient builds other courses' primitives from raybook's own shapes",
             THEN("each is the nearest shape raybook has, where its author put it") {
                 REQUIRE(r.instances.size() == 6);
                 CHECK(rbtest::boundsOf(r, "plane").lo.x <= -1000.0);
-                CHECK(rbtest::boundsOf(r, "plane").hi.y == Catch::Approx(0.0).margin(1e-9));
+                CHECK(std::abs(rbtest::boundsOf(r, "plane").hi.y) < 1e-9);
                 CHECK(rbtest::near(rbtest::boundsOf(r, "tri").hi, Vec3(1, 2, 0)));
                 CHECK(rbtest::near(rbtest::boundsOf(r, "quad").lo, Vec3(0, 0, 1)));
                 CHECK(rbtest::near(rbtest::boundsOf(r, "quad").hi, Vec3(3, 1, 1)));
@@ -620,7 +621,7 @@ SCENARIO("a long gr.render call alone is no sign of the pre-2015 era", "[ch02][e
             CHECK_THAT(l.report.unreadable[0], Contains("read with its first 10 arguments"));
         }
         THEN("the render names the scene's line, not the C function that read it again") {
-            CHECK(l.renders[0].job.where == "scene.lua:6");
+            CHECK_THAT(l.renders[0].job.where, EndsWith("scene.lua:6") && !Contains("[C]"));
         }
     }
 }

@@ -355,7 +355,8 @@ void checkSeed001Values(lua_State* L) {
         refuse(13, "(dist) must be a whole number from 0 to 256");
     if (n >= 14) {
         const auto dof = checkTuple(L, 14, 3, "gr.render", "{aperture, focalLength, dof}");
-        if (!(dof[0] >= 0.0) || !(dof[1] > 0.0) || !wholeUpTo(dof[2], 256))
+        // The aperture and focal length matter only when dof asks for rays through the lens.
+        if (!wholeUpTo(dof[2], 256) || (dof[2] > 0.0 && (!(dof[0] >= 0.0) || !(dof[1] > 0.0))))
             refuse(14,
                    "({aperture, focalLength, dof}) must be an aperture of 0 or more, a "
                    "focal length above 0 and a whole number of samples from 0 to 256");

@@ -149,7 +149,11 @@ bool callOwn(lua_State* L, const char* name, int n) {
     const size_t signs = builder.eraSigns.size();
     lua_getglobal(L, "gr");
     const bool table = lua_type(L, -1) == LUA_TTABLE;
-    if (table) lua_getfield(L, -1, name);
+    // Raw: gr's __index would make a stand-in of a call this build lacks, and so on forever.
+    if (table) {
+        lua_pushstring(L, name);
+        lua_rawget(L, -2);
+    }
     if (!table || !lua_iscfunction(L, -1)) {
         lua_pop(L, n + (table ? 2 : 1));
         return false;
