@@ -20,6 +20,7 @@
 #include "test_helpers.h"
 
 using Catch::Contains;
+using Catch::EndsWith;
 using rb::Vec3;
 
 namespace {
@@ -252,11 +253,22 @@ SCENARIO("--lenient renders what raybook understands and lists what it ignored",
             rb::SceneLoadOptions options;
             options.lenient = true;
             const Loaded l = load(lua, options);
-            THEN("the primitive is an empty node, and the sphere wears a magenta stand-in") {
-                REQUIRE(l.renders[0].instances.size() == 1);
-                const rb::Material* m = l.renders[0].instances[0].material;
-                REQUIRE(m != nullptr);
-                CHECK(rbtest::near(m->kd, Vec3(0.8, 0.2, 0.8)));
+            THEN("the torus is a sphere of its outer radius, and both wear the material's red") {
+                REQUIRE(l.renders[0].instances.size() == 2);
+                for (const rb::Instance& i : l.renders[0].instances) {
+                    REQUIRE(i.material != nullptr);
+                    CHECK(rbtest::near(i.material->kd, Vec3(1, 0, 0)));
+                }
+                CHECK(rbtest::near(rbtest::boundsOf(l.renders[0], "donut").hi, Vec3(2.5)));
+            }
+            THEN("a warning names each stand-in") {
+                REQUIRE(l.report.warnings.size() == 2);
+                CHECK_THAT(l.report.warnings[0],
+                           Contains("scene.lua:2: gr.shiny_material: --lenient stands in a "
+                                    "diffuse material whose kd is argument 1 {1, 0, 0}"));
+                CHECK_THAT(l.report.warnings[1],
+                           Contains("scene.lua:3: gr.torus: --lenient stands in a sphere of its "
+                                    "outer radius 2.5"));
             }
             THEN("the ignored list names each unknown once, with its count and first line") {
                 REQUIRE(l.report.ignored.size() == 3);
@@ -323,28 +335,31 @@ SCENARIO("--lenient puts a stand-in where a known call cannot be read at all",
             "local t = gr.sphere('t')\nt:set_material(b)\nroot:add_child(t)\n" +
             rbtest::renderLine();
         const Loaded l = load(lua, lenient);
-        THEN("both spheres wear the magenta stand-in") {
+        THEN("each table is read as its number: the spheres keep their colours and exponents") {
             REQUIRE(l.renders.at(0).instances.size() == 2);
-            for (const rb::Instance& i : l.renders[0].instances) {
-                REQUIRE(i.material != nullptr);
-                CHECK(rbtest::near(i.material->kd, Vec3(0.8, 0.2, 0.8)));
-            }
+            const rb::Material* a = l.renders[0].instances[0].material;
+            const rb::Material* b = l.renders[0].instances[1].material;
+            REQUIRE((a && b));
+            CHECK(rbtest::near(a->kd, Vec3(0.1, 0.8, 0.1)));
+            CHECK(a->shininess == 25.0);
+            CHECK(rbtest::near(b->kd, Vec3(0.1, 0.1, 0.8)));
+            CHECK(b->shininess == 40.0);
         }
-        THEN("one line lists the call, with the first line and the count") {
-            REQUIRE(l.report.unreadable.size() == 1);
-            CHECK_THAT(l.report.unreadable[0],
-                       Contains("gr.material (arguments raybook cannot read: argument 3 "
-                                "(shininess) must be a number, got table; a stand-in took its "
-                                "place), first at ") &&
-                           Contains("scene.lua:1 (2 times)"));
+        THEN("one warning names the guess, with the first line and the count; nothing is listed") {
+            CHECK(l.report.unreadable.empty());
+            REQUIRE(l.report.warnings.size() == 1);
+            CHECK_THAT(l.report.warnings[0],
+                       Contains("scene.lua:1: gr.material: argument 3 (shininess): --lenient "
+                                "read the table {25} as the number 25 (a table where a number "
+                                "belongs) (2 times)"));
         }
     }
     GIVEN("a material whose second argument cannot be read, followed by a fourth") {
         // Read again without arguments 2 to 4, the call is one argument short: a stand-in.
         const Loaded l =
             load(rbtest::oneMaterialScene("gr.material({1, 0, 0}, {1, 1}, 25, 0.5)"), lenient, 4);
-        THEN("the call is listed once, by what its first reading found") {
-            CHECK(rbtest::near(l.renders.at(0).instances.at(0).material->kd, Vec3(0.8, 0.2, 0.8)));
+        THEN("the call is listed once, by what its first reading found; kd is its first colour") {
+            CHECK(rbtest::near(l.renders.at(0).instances.at(0).material->kd, Vec3(1, 0, 0)));
             REQUIRE(l.report.unreadable.size() == 1);
             CHECK_THAT(l.report.unreadable[0],
                        Contains("argument 2 (ks) must be a table of 3 numbers, got a table of 2; "
@@ -379,11 +394,12 @@ SCENARIO("--lenient puts a stand-in where a known call cannot be read at all",
             "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50,"
             " {0.1, 0.1, 0.1}, {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0}), spot})\n",
             lenient);
-        THEN("the light is the dark stand-in, beside the scene's own") {
+        THEN("the light is a white point light at its position, beside the scene's own") {
             const auto& lights = l.renders.at(0).job.lights;
             REQUIRE(lights.size() == 2);
             CHECK(rbtest::near(lights[0].colour, Vec3(1.0)));
-            CHECK(rbtest::near(lights[1].colour, Vec3(0.0)));
+            CHECK(rbtest::near(lights[1].position, Vec3(0, 5, 5)));
+            CHECK(rbtest::near(lights[1].colour, Vec3(1.0)));
             REQUIRE(l.report.unreadable.size() == 1);
             CHECK_THAT(l.report.unreadable[0], Contains("gr.light (") && Contains("scene.lua:3"));
         }
@@ -475,6 +491,171 @@ SCENARIO("a dialect file maps a student's own calls onto raybook's before the sc
             CHECK_THROWS_WITH(
                 load(rbtest::renderLine(), {}, 7, {{"bad.lua", "local x = 1\nx()\n"}}),
                 Contains("bad.lua:2:"));
+        }
+    }
+}
+
+SCENARIO("--lenient stands in other courses' lights as point lights at their position",
+         "[ch02][lenient][ex2.2]") {
+    rb::SceneLoadOptions lenient;
+    lenient.lenient = true;
+    GIVEN("a scene lit only by gr.spot_light and gr.point_light, which raybook does not know") {
+        const std::string lua =
+            "root = gr.node('root')\nroot:add_child(gr.sphere('s'))\n"
+            "local a = gr.spot_light({0, 5, 5}, {0.9, 0.8, 0.7}, {1, 0, 0}, {0, -1, 0}, 30)\n"
+            "local b = gr.point_light{position = {1, 2, 3}, colour = {0.2, 0.3, 0.4}}\n"
+            "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50,"
+            " {0.1, 0.1, 0.1}, {a, b})\n";
+        const Loaded l = load(lua, lenient);
+        THEN("each is a point light at its first triple, of the colour of the next") {
+            const auto& lights = l.renders.at(0).job.lights;
+            REQUIRE(lights.size() == 2);
+            CHECK(rbtest::near(lights[0].position, Vec3(0, 5, 5)));
+            CHECK(rbtest::near(lights[0].colour, Vec3(0.9, 0.8, 0.7)));
+            CHECK(rbtest::near(lights[0].falloff, Vec3(1, 0, 0)));
+            CHECK(rbtest::near(lights[1].position, Vec3(1, 2, 3)));
+            CHECK(rbtest::near(lights[1].colour, Vec3(0.2, 0.3, 0.4)));
+        }
+        THEN("one warning line says that the render is lit by stand-ins alone") {
+            CHECK_THAT(l.report.warnings.back(),
+                       Contains("scene.lua:5: gr.render: every light is a --lenient stand-in "
+                                "(point lights in place of gr.spot_light, gr.point_light)"));
+        }
+    }
+    GIVEN("the same render with one of raybook's own lights beside a stand-in") {
+        const Loaded l = load(
+            "root = gr.node('root')\nroot:add_child(gr.sphere('s'))\n"
+            "local a = gr.spot_light({0, 5, 5}, {0.9, 0.8, 0.7})\n"
+            "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50,"
+            " {0.1, 0.1, 0.1}, {a, gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0})})\n",
+            lenient);
+        THEN("no line says the lighting is a guess") {
+            for (const std::string& w : l.report.warnings) CHECK_THAT(w, !Contains("every light"));
+        }
+    }
+}
+
+SCENARIO("--lenient builds other courses' primitives from raybook's own shapes",
+         "[ch02][lenient][ex2.2][needs-ch15]") {
+    rb::SceneLoadOptions lenient;
+    lenient.lenient = true;
+    GIVEN("a plane, a triangle, a quad, a disc, a torus and a tube") {
+        const std::string lua =
+            "root = gr.node('root')\n"
+            "root:add_child(gr.plane('plane'))\n"
+            "root:add_child(gr.triangle('tri', {0, 0, 0}, {1, 0, 0}, {0, 2, 0}))\n"
+            "root:add_child(gr.quad('quad', {{0, 0, 1}, {3, 0, 1}, {3, 1, 1}, {0, 1, 1}}))\n"
+            "root:add_child(gr.disk('disc'))\n"
+            "root:add_child(gr.torus('torus', 2, 0.5))\n"
+            "root:add_child(gr.tube('tube'))\n" +
+            rbtest::renderLine();
+        WHEN("it is loaded in a chapter-15 build") {
+            const Loaded l = load(lua, lenient, 15);
+            const rb::LoadedRender& r = l.renders.at(0);
+            THEN("each is the nearest shape raybook has, where its author put it") {
+                REQUIRE(r.instances.size() == 6);
+                CHECK(rbtest::boundsOf(r, "plane").lo.x <= -1000.0);
+                CHECK(std::abs(rbtest::boundsOf(r, "plane").hi.y) < 1e-9);
+                CHECK(rbtest::near(rbtest::boundsOf(r, "tri").hi, Vec3(1, 2, 0)));
+                CHECK(rbtest::near(rbtest::boundsOf(r, "quad").lo, Vec3(0, 0, 1)));
+                CHECK(rbtest::near(rbtest::boundsOf(r, "quad").hi, Vec3(3, 1, 1)));
+                CHECK(rbtest::boundsOf(r, "disc").hi.y < 0.01);
+                CHECK(rbtest::near(rbtest::boundsOf(r, "torus").hi, Vec3(2.5)));
+                CHECK(rbtest::near(rbtest::boundsOf(r, "tube").lo, Vec3(-1)));
+            }
+            THEN("a warning names each stand-in, and the table mesh is no sign of an era") {
+                REQUIRE(l.report.warnings.size() == 6);
+                CHECK_THAT(l.report.warnings[1],
+                           Contains("scene.lua:3: gr.triangle: --lenient stands in a mesh of "
+                                    "its 3 vertices"));
+                CHECK_THAT(l.report.warnings[3], Contains("gr.disk: --lenient stands in a "
+                                                          "cylinder of radius 1"));
+                CHECK(l.report.era.era == rb::Era::Modern);
+                CHECK_THAT(l.report.era.line, !Contains("gr.mesh"));
+            }
+        }
+        WHEN("it is loaded in a chapter-7 build, which has no cylinder") {
+            const Loaded l = load(lua, lenient, 7);
+            THEN("the disc is a flattened sphere and the tube a sphere") {
+                CHECK(rbtest::boundsOf(l.renders.at(0), "disc").hi.y < 0.01);
+                CHECK_THAT(l.report.warnings[3], Contains("a sphere of radius 1 flattened"));
+                CHECK_THAT(l.report.warnings[5], Contains("a unit sphere (this build has no "
+                                                          "cylinder)"));
+            }
+        }
+    }
+}
+
+SCENARIO("a long gr.render call alone is no sign of the pre-2015 era", "[ch02][era][ex2.2]") {
+    // A wall scaled, then moved: the current way (post-multiplied, it would be moved first).
+    const std::string wall =
+        "root = gr.node('root')\nlocal wall = gr.cube('wall')\nwall:scale(10, 4, 0.5)\n"
+        "wall:translate(-5, -2, -6)\nroot:add_child(wall)\n";
+    const std::string ten =
+        "gr.render(root, 'out.png', 8, 8, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 50, {0.1, 0.1, 0.1},"
+        " {gr.light({0, 0, 10}, {1, 1, 1}, {1, 0, 0})}";
+    GIVEN("a render with two more numbers (aa = 1, ss = 2), which seed 001 also wrote") {
+        const Loaded l = load(wall + ten + ", 1, 2)\n", {}, 8);
+        THEN("the transforms' idiom decides: current, and the wall stands where it was put") {
+            CHECK(l.report.era.era == rb::Era::Modern);
+            CHECK_THAT(l.report.era.line, !Contains("gr.render"));
+            CHECK(rbtest::near(rbtest::boundsOf(l.renders.at(0), "wall").lo, Vec3(-5, -2, -6)));
+        }
+    }
+    GIVEN("seed 001's whole form, ending in its {aperture, focalLength, dof} triple") {
+        const Loaded l = load(wall + ten + ", 0, 0, 0, {0, 10, 0})\n", {}, 13);
+        THEN("it is still a sign of seed 001's era") {
+            CHECK(l.report.era.era == rb::Era::Legacy);
+            CHECK_THAT(l.report.era.line, Contains("seed 001's gr.render with 14 arguments"));
+        }
+    }
+    GIVEN("a render with sixteen values under --lenient: samples, depth, aperture, ...") {
+        rb::SceneLoadOptions lenient;
+        lenient.lenient = true;
+        const Loaded l = load(wall + ten + ", 16, 5, 0.1, 2.8, 1, 64)\n", lenient, 13);
+        THEN("it renders from its first ten, current, its extras listed and never an error") {
+            REQUIRE(l.renders.size() == 1);
+            CHECK(l.renders[0].job.options.count("aa") == 0);
+            CHECK(l.report.era.era == rb::Era::Modern);
+            REQUIRE(l.report.unreadable.size() == 1);
+            CHECK_THAT(l.report.unreadable[0], Contains("read with its first 10 arguments"));
+        }
+        THEN("the render names the scene's line, not the C function that read it again") {
+            CHECK_THAT(l.renders[0].job.where, EndsWith("scene.lua:6") && !Contains("[C]"));
+        }
+    }
+}
+
+SCENARIO("an error names the scene's line once, wherever the script raised it",
+         "[ch02][errors][ex2.2]") {
+    GIVEN("error() with a table") {
+        THEN("the message says so, at the line") {
+            CHECK_THAT(rbtest::loadError("local x = 1\nerror({code = 1})\n"),
+                       Contains("scene.lua:2: the script raised an error whose value is a "
+                                "table, not a message"));
+        }
+    }
+    GIVEN("a call made through pcall, its message raised again with error(message, 0)") {
+        THEN("the message names the line of the pcall, not [C]") {
+            const std::string e =
+                rbtest::loadError("local ok, e = pcall(gr.sphere, 5)\nerror(e, 0)\n");
+            CHECK_THAT(e, Contains("scene.lua:1: gr.sphere: argument 1 (name) must be a string"));
+            CHECK_THAT(e, !Contains("[C]"));
+        }
+    }
+    GIVEN("the same message raised again with error(message) on the line that made it") {
+        THEN("the line is named once") {
+            const std::string e = rbtest::loadError(
+                "local ok, e = pcall(gr.sphere, 5) if not ok then error(e) end\n");
+            CHECK_THAT(e, Contains("scene.lua:1: gr.sphere: argument 1"));
+            CHECK_THAT(e, !Contains("scene.lua:1: scene.lua:1:"));
+        }
+    }
+    GIVEN("a bad call inside table.sort's comparison") {
+        THEN("the message names the comparison's line") {
+            CHECK_THAT(rbtest::loadError("table.sort({3, 1, 2}, function(a, b)\n"
+                                         "  return gr.nh_sphere('s', {0, 0}, 1)\nend)\n"),
+                       Contains("scene.lua:2: gr.nh_sphere: argument 2 (centre)"));
         }
     }
 }

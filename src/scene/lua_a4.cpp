@@ -175,6 +175,8 @@ int grOption(lua_State* L) {
 constexpr const char* kLightType = "rb.light";
 
 int collectLight(lua_State* L) {
+    // A new light may take a collected stand-in's address.
+    sceneBuilder(L).standInLights.erase(lua_touserdata(L, 1));
     static_cast<PointLight*>(lua_touserdata(L, 1))->~PointLight();
     return 0;
 }
@@ -332,8 +334,38 @@ int integerArg(lua_State* L, int arg, const char* name) {
     return static_cast<int>(v);
 }
 
+/// True for a whole number from 0 to `hi`.
+bool wholeUpTo(double v, double hi) {
+    return v >= 0.0 && v <= hi && v == std::floor(v);
+}
+
+/// Under --lenient, check seed 001's trailing values now, where a value outside what its
+/// chapters read can still be left out (they check them again when the render starts, for
+/// scenes read strictly): other courses put samples, depths and apertures there.
+void checkSeed001Values(lua_State* L) {
+    const int n = lua_gettop(L);
+    const auto refuse = [](int arg, const char* what) {
+        throw ArgumentError("gr.render: argument " + std::to_string(arg) + " " + what, arg);
+    };
+    if (n >= 11 && lua_tonumber(L, 11) != 0.0 && lua_tonumber(L, 11) != 1.0)
+        refuse(11, "(aa) must be 0 (off) or 1 (on)");
+    if (n >= 12 && !wholeUpTo(lua_tonumber(L, 12), 256))
+        refuse(12, "(ss) must be a whole number of samples per axis from 0 to 256");
+    if (n >= 13 && !wholeUpTo(lua_tonumber(L, 13), 256))
+        refuse(13, "(dist) must be a whole number from 0 to 256");
+    if (n >= 14) {
+        const auto dof = checkTuple(L, 14, 3, "gr.render", "{aperture, focalLength, dof}");
+        // The aperture and focal length matter only when dof asks for rays through the lens.
+        if (!wholeUpTo(dof[2], 256) || (dof[2] > 0.0 && (!(dof[0] >= 0.0) || !(dof[1] > 0.0))))
+            refuse(14,
+                   "({aperture, focalLength, dof}) must be an aperture of 0 or more, a "
+                   "focal length above 0 and a whole number of samples from 0 to 256");
+    }
+}
+
 // [lua-render]
 int grRender(lua_State* L) {
+    const int given = lua_gettop(L);
     checkArgCount(L, "gr.render", 10, 14,
                   "(root, file, width, height, eye, view, up, fovy, ambient, lights"
                   " [, aa, ss, dist, {aperture, focal, dof}])");
@@ -341,9 +373,9 @@ int grRender(lua_State* L) {
     RenderJob& job = r.job;
     job.options = sceneBuilder(L).sceneOptions;
     job.fog = sceneBuilder(L).fog;
-    lua_Debug ar;
-    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar))
-        job.where = std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
+    // The scene's line, also when the call is read again from C (--lenient) or made through
+    // pcall: never "[C]:-1".
+    job.where = luaCaller(L);
     auto root = checkNode(L, 1, "gr.render", "root");
     job.output = checkString(L, 2, "gr.render", "file");
     job.width = integerArg(L, 3, "width");
@@ -358,8 +390,10 @@ int grRender(lua_State* L) {
     job.lights = checkLights(L, 10);
     // Seed 001's extra arguments; their chapters (adaptive AA, soft shadows, glossy, DOF)
     // read them.
-    if (lua_gettop(L) >= 11)
-        noteEraSign(L, Era::Legacy, "seed 001's gr.render with 11-14 arguments");
+    // Only seed 001's whole form, ending in its {aperture, focalLength, dof} triple, tells
+    // the era: students of every era add samples, depth or aperture after the ten.
+    if (given == 14 && lua_type(L, 14) == LUA_TTABLE && lua_rawlen(L, 14) == 3)
+        noteEraSign(L, Era::Legacy, "seed 001's gr.render with 14 arguments");
     if (lua_gettop(L) >= 11) job.options["aa"] = checkNumber(L, 11, "gr.render", "aa");
     if (lua_gettop(L) >= 12) job.options["ss"] = checkNumber(L, 12, "gr.render", "ss");
     if (lua_gettop(L) >= 13) job.options["dist"] = checkNumber(L, 13, "gr.render", "dist");
@@ -369,6 +403,7 @@ int grRender(lua_State* L) {
         job.options["focal_length"] = dof[1];
         job.options["dof"] = dof[2];
     }
+    if (sceneBuilder(L).options.lenient) checkSeed001Values(L);
     // Freeze the graph as it is now and flatten it, so errors point at this line. Both
     // recurse once per level: refuse a graph too deep for that first.
     checkGraphDepth(*root);
@@ -382,6 +417,7 @@ int grRender(lua_State* L) {
     // Copying and flattening the graph is work done for the script, as are its instances.
     chargeInstructions(L, copies.size() + r.instances.size(), "gr.render");
     chargeMemory(L, copies.size() * sizeof(SceneNode) + r.instances.size() * sizeof(Instance));
+    noteStandInLighting(L, 10);
     sceneBuilder(L).renders.push_back(std::move(r));
     return 0;
 }

@@ -15,7 +15,7 @@
 namespace rb {
 
 void pushCallerError(lua_State* L, const std::string& message) {
-    luaL_where(L, 1);
+    pushScriptWhere(L);
     lua_pushlstring(L, message.data(), message.size());
     lua_concat(L, 2);
 }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <regex>
 
 #include "core/box.h"
 #include "core/error.h"
@@ -84,6 +85,31 @@ std::string luaCaller(lua_State* L) {
         if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0)
             return std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
     return sceneBuilder(L).scenePath;
+}
+
+void pushScriptWhere(lua_State* L) {
+    // Only Lua's own calls here: an error may be raised right after (no C++ objects alive).
+    lua_Debug ar;
+    for (int level = 1; lua_getstack(L, level, &ar); ++level)
+        if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0) {
+            lua_pushfstring(L, "%s:%d: ", ar.short_src, ar.currentline);
+            return;
+        }
+    lua_pushliteral(L, "");
+}
+
+void addScriptWhere(lua_State* L) {
+    pushScriptWhere(L);
+    size_t whereLength = 0, messageLength = 0;
+    const char* where = lua_tolstring(L, -1, &whereLength);
+    const char* message = lua_tolstring(L, -2, &messageLength);
+    if (!message ||
+        (messageLength >= whereLength && std::memcmp(message, where, whereLength) == 0)) {
+        lua_pop(L, 1);
+        return;
+    }
+    lua_insert(L, -2);
+    lua_concat(L, 2);
 }
 
 void recordKind(std::vector<std::pair<std::string, std::string>>& kinds,
@@ -197,6 +223,31 @@ struct LuaStateCloser {
 
 namespace {
 
+/// The message handler of a script's run: a string passes as it is; any other error value
+/// (error() with a table, say) becomes a message that says what it was, at the script's line.
+int scriptMessage(lua_State* L) {
+    if (lua_type(L, 1) == LUA_TSTRING || lua_type(L, 1) == LUA_TNUMBER) return 1;
+    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) {
+        addScriptWhere(L);
+        return 1;
+    }
+    lua_settop(L, 1);
+    pushScriptWhere(L);
+    lua_pushfstring(L,
+                    "the script raised an error whose value is a %s, not a message (error() "
+                    "takes a string)",
+                    luaL_typename(L, 1));
+    lua_concat(L, 2);
+    return 1;
+}
+
+/// "a.lua:3: a.lua:3: what" as "a.lua:3: what": a message raised again by error(message) on
+/// the line that made it names its place once.
+std::string withoutRepeatedPlace(const std::string& message) {
+    static const std::regex repeated(R"(^([^ \n]+:[0-9]+: )\1+)");
+    return std::regex_replace(message, repeated, "$1", std::regex_constants::format_first_only);
+}
+
 /// Run one Lua file in the scene's state: text only, errors raised as InputError with
 /// "file:line:" (or the memory limit named).
 void runFile(lua_State* L, const std::string& file, const SceneLoadOptions& options,
@@ -204,8 +255,15 @@ void runFile(lua_State* L, const std::string& file, const SceneLoadOptions& opti
     // "@file" names the chunk the way luaL_loadfilex does, so messages read "file:line:".
     int status = text ? luaL_loadbufferx(L, text->data(), text->size(), ("@" + file).c_str(), "t")
                       : luaL_loadfilex(L, file.c_str(), "t");
-    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
-    if (status == LUA_OK) return;
+    if (status == LUA_OK) {
+        lua_pushcfunction(L, scriptMessage);
+        lua_insert(L, -2);
+        status = lua_pcall(L, 0, 0, -2);
+    }
+    if (status == LUA_OK) {
+        lua_pop(L, 1);  // the message handler
+        return;
+    }
     if (const int signal = pendingInterrupt()) throw interruptedBy(signal);
     std::string message = lua_tostring(L, -1) ? lua_tostring(L, -1) : "unknown Lua error";
     if (status == LUA_ERRMEM)
@@ -213,7 +271,7 @@ void runFile(lua_State* L, const std::string& file, const SceneLoadOptions& opti
                   formatBytes(options.memoryLimit) +
                   " for scripts (2 GiB, or what the run's memory limit leaves free if less: " +
                   options.memory.origin + ")";
-    throw InputError(message);
+    throw InputError(withoutRepeatedPlace(message));
 }
 
 /// Run the dialect files, then the scene, in one sandboxed state, with transforms in the

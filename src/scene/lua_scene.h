@@ -108,6 +108,9 @@ struct SceneBuilder {
         int kept = 0;          ///< The arguments it is read with.
         bool stoodIn = false;  ///< A later reading failed too, and a stand-in was returned.
     } reread;
+    /// --lenient: the lights that stand in for calls raybook does not know, by their userdata,
+    /// with the call each stands in for.
+    std::map<const void*, std::string> standInLights;
     int lastChapter = 0;               ///< The newest chapter built into this binary.
     std::vector<int> builtChapters;    ///< Every chapter built in (they may land out of order).
     std::set<std::string> featuresOn;  ///< The features switched on for this run.
@@ -166,6 +169,7 @@ class ArgumentError : public InputError {
 struct LenientReading {
     int arguments = -1;   ///< How many arguments the call received.
     size_t eraSigns = 0;  ///< Era signs before the call: a failed reading's are taken back.
+    size_t warnings = 0;  ///< Kinds of warning before the call: a failed reading's new ones too.
     int rereadWith = 0;   ///< Read the call again with this many arguments (0: do not).
     bool ownsReread = false;  ///< This reading began the call's rereading (lists the call).
 };
@@ -185,6 +189,13 @@ int rereadLeniently(lua_State* L, const LenientReading& reading);
 /// The call's arguments and era signs as a reading starts.
 LenientReading startReading(lua_State* L);
 
+/// Push "file:line: " for the nearest Lua code on the call stack that has a line (the script's
+/// line, also under pcall, table.sort or a call made from C), or "" when there is none.
+void pushScriptWhere(lua_State* L);
+/// Prefix the error message on top of the stack with pushScriptWhere's "file:line: ", unless it
+/// already begins with it (a message must never repeat its place).
+void addScriptWhere(lua_State* L);
+
 /// Wrap a C++ body `int body(lua_State*)` that may throw into a lua_CFunction. Under
 /// --lenient, an ArgumentError becomes a second reading or a stand-in (lenientArgument).
 template <int (*Body)(lua_State*)>
@@ -203,7 +214,7 @@ int luaGuard(lua_State* L) {
             message = e.what();
         }
         if (reading.rereadWith == 0) {
-            luaL_where(L, 1);
+            pushScriptWhere(L);
             lua_pushlstring(L, message.data(), message.size());
             lua_concat(L, 2);
         }
@@ -281,6 +292,10 @@ void pushLight(lua_State* L, const PointLight& light);
 PointLight checkLight(lua_State* L, int arg, const char* call, const char* argName);
 /// The table of lights at argument arg: at least one, each made by gr.light.
 std::vector<PointLight> checkLights(lua_State* L, int arg);
+
+/// Under --lenient, warn (one line) when every light in the table at argument `arg` of
+/// gr.render is a stand-in: the scene's lighting is then a guess.
+void noteStandInLighting(lua_State* L, int arg);
 
 /// Store scene option `name` (a gr.option name) after checking the range gr.option allows;
 /// out of range throws InputError "<what> must be a number from MIN to MAX", where `what`

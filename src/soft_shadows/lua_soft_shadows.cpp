@@ -209,12 +209,8 @@ int grLight(lua_State* L) {
     for (int i = 1; i <= 3; ++i) lua_pushvalue(L, i);
     const int status = lua_pcall(L, 3, 1, 0);
     if (status != LUA_OK) {
-        // The core's message has no "file:line:" (its caller was this C function): add it.
-        if (status == LUA_ERRRUN) {
-            luaL_where(L, 1);
-            lua_insert(L, -2);
-            lua_concat(L, 2);
-        }
+        // The core's message names the script's line already; add it if not.
+        if (status == LUA_ERRRUN) addScriptWhere(L);
         return lua_error(L);
     }
     if (n == 3) return 1;
