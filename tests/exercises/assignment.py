@@ -271,10 +271,11 @@ def trim_test_file(text: str, modules: set[str], names: set[str],
 
 
 CHECK_CMAKE = """
-# make check (an assignment): chapter {n}'s tests alone, so that a check builds only them.
-file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp
-     ${{CMAKE_SOURCE_DIR}}/tests/stability*.cpp)
-add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp source_dir.cpp ${{RB_CHECK_SOURCES}})
+# make check (an assignment): chapter {n}'s tests alone, so that a check builds only them, and
+# the shared test files that hold some of them{shared_note}.
+file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp)
+add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp source_dir.cpp ${{RB_CHECK_SOURCES}}
+               {shared})
 target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src
                            ${{CMAKE_SOURCE_DIR}}/tests)
 target_link_libraries(raybook_check PRIVATE raybook Catch2::Catch2)
@@ -452,7 +453,16 @@ def export(args) -> int:
     # Benchmarks and fuzz targets are not part of an assignment.
     for folder in ("tests/perf", "tests/fuzz"):
         contents[f"{folder}/CMakeLists.txt"] = b"# Not part of an assignment (see raybook).\n"
-    contents["tests/CMakeLists.txt"] += CHECK_CMAKE.format(n=n, nn=f"{n:02d}").encode()
+    # make check runs chapter N's tests only (its rows' [exN.k] and the other [chNN] ones):
+    # a shared test file (tests/stability.cpp) goes into raybook_check only when it holds one,
+    # since compiling it costs a first check, and every step of the round trip, as much as a
+    # chapter's own test file. Its tests of other chapters run in make test.
+    mine = re.compile(rf"\[(?:ch{n:02d}|ex{n}\.\d+)\]")
+    shared = sorted(rel for rel in contents if re.match(r"^tests/stability[^/]*\.cpp$", rel)
+                    and mine.search(contents[rel].decode()))
+    contents["tests/CMakeLists.txt"] += CHECK_CMAKE.format(
+        n=n, nn=f"{n:02d}", shared_note=f" ({', '.join(shared)})" if shared else " (none here)",
+        shared=" ".join("${CMAKE_SOURCE_DIR}/" + rel for rel in shared)).encode()
     template = (root / "tests/exercises/assignment.mk").read_text()
     contents["Makefile"] = template.replace("@CHAPTER@", str(n)).replace(
         "@WHOLE_BOOK@", "|".join(WHOLE_BOOK_SUITES + [s for s, k in SUITES_NEEDING.items()
