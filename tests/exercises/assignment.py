@@ -18,8 +18,9 @@ Commands (raybook's Makefile and the exported project's Makefile call them):
     assignment.py roundtrip WORK [--chapters 1 2 ...]
         CI: for every chapter with regions, export, check (every exercise must fail), solve,
         check (everything must pass). Two chapters at a time (--workers), each reusing its
-        export and build folder, with one compiler cache (objcache.py), so each chapter costs
-        only what changed. --stamps BUILD skips chapters unchanged since they passed.
+        export and build folder, with one compiler cache (ccache, or objcache.py without it),
+        so each chapter costs only what changed. --stamps BUILD skips chapters unchanged since
+        they passed.
     assignment.py list
         every chapter's exercises and the tests tagged [exN.k] for each.
     assignment.py tags BUILD --chapter N [--apply]
@@ -727,6 +728,25 @@ def row_spec(exercises: list[dict], k: int) -> str:
     return exercises[k]["tag"] + "".join("~" + e["tag"] for e in exercises[k + 1:])
 
 
+def use_compiler_cache(cache: Path, strip: Path) -> None:
+    """The compiler cache of the round trip, make grade and mc_golden.py, which build exports
+    in PROJECT/build, the folder make check uses. With ccache installed (make deps installs
+    it) no launcher is given: the export's CMakeLists.txt puts ccache in front of the compiler
+    with the project as its base folder, so its keys name the sources relative to the build
+    folder (../src/core/sphere.cpp), as raybook's own build in the clone's build/ does. A file
+    the export did not change is then the object raybook's build compiled (chapter 1's core,
+    the earlier chapters), and a project's copy in another folder (the other slot, a grading
+    stage) takes it too. Without ccache, objcache.py (keyed on the preprocessed source, with
+    STRIP/<project> taken out) shares objects between projects side by side in `strip`. A
+    launcher already in $RB_COMPILER_LAUNCHER wins."""
+    if "RB_COMPILER_LAUNCHER" in os.environ or shutil.which("ccache"):
+        return
+    here = Path(__file__).resolve().parent
+    os.environ["RB_COMPILER_LAUNCHER"] = f"{sys.executable};{here / 'objcache.py'}"
+    os.environ.setdefault("RB_OBJCACHE", str(cache))
+    os.environ.setdefault("RB_OBJCACHE_STRIP", str(strip))
+
+
 def configured(build: Path, project: Path, launcher: str | None) -> bool:
     """Whether `build` is a configured build folder of `project`, with `launcher`."""
     cache = build / "CMakeCache.txt"
@@ -928,7 +948,7 @@ def sync_tree(source: Path, dest: Path, skip: set[str]) -> None:
             target.write_bytes(data)
     for path in sorted(dest.rglob("*"), reverse=True):
         rel = path.relative_to(dest)
-        if path.is_file() and rel not in wanted:
+        if path.is_file() and rel not in wanted and rel.parts[0] not in skip:
             path.unlink()
 
 
@@ -939,7 +959,7 @@ def keep_report(result: dict, stage: Path, project: Path, build: Path) -> None:
     report = result["golden"].get("report", "")
     if report:
         shutil.rmtree(build / "golden-report", ignore_errors=True)
-        shutil.copytree(stage / "build" / "golden-report", build / "golden-report")
+        shutil.copytree(stage / "project" / "build" / "golden-report", build / "golden-report")
         result["golden"]["report"] = str(build / "golden-report" / Path(report).name)
 
 
@@ -953,14 +973,12 @@ def grade(args) -> int:
         sys.exit(f"grade: no exported assignment in {target} (looked for {INFO})")
     out = Path(args.csv) if args.csv else (target if target.is_dir() and len(projects) > 1
                                           else target.parent) / "grades.csv"
-    # Compile what is the same once: a compiler cache keyed on the preprocessed source, with
-    # each project's folder taken out of the key (objcache.py), so the second student's build
-    # compiles only the files that student changed. Kept beside the builds for the next run.
+    # Compile what is the same once: ccache, keyed on paths relative to the project (or,
+    # without ccache, objcache.py, keyed on the preprocessed source with each project's folder
+    # taken out, kept beside the builds for the next run), so the second student's build
+    # compiles only the files that student changed (use_compiler_cache).
     cache_root = Path(args.build_root).resolve() if args.build_root else target
-    os.environ.setdefault("RB_COMPILER_LAUNCHER",
-                          f"{sys.executable};{Path(__file__).resolve().parent / 'objcache.py'}")
-    os.environ.setdefault("RB_OBJCACHE", str(cache_root / ".raybook-objcache"))
-    os.environ.setdefault("RB_OBJCACHE_STRIP", str(projects[0].parent))
+    use_compiler_cache(cache_root / ".raybook-objcache", projects[0].parent)
     # Run students side by side when the cores allow (each build gets its share of them); each
     # test keeps its own time limit. The results print in the students' order.
     global JOBS
@@ -970,7 +988,8 @@ def grade(args) -> int:
     # Each worker grades in a staging copy of its own (build root/.stage-W): the next student's
     # files are copied over it where their bytes differ, so make rebuilds only what that
     # student changed (normally the exercise files) and relinks. Reports are copied back to
-    # the student's own build folder.
+    # the student's own build folder. The stage builds in its copy's build/ (stage/project/
+    # build), the folder make check uses, so that ccache's keys match raybook's own build.
     root = Path(args.build_root).resolve() if args.build_root else target
     workers = queue.Queue()
     for w in range(parallel):
@@ -985,7 +1004,7 @@ def grade(args) -> int:
         stage = workers.get()
         try:
             sync_tree(project, stage / "project", skip={"build"})
-            result = check_project(stage / "project", stage / "build")
+            result = check_project(stage / "project", stage / "project" / "build")
             keep_report(result, stage, project, build)
         finally:
             workers.put(stage)
@@ -1267,19 +1286,17 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
 
 def roundtrip(args) -> int:
     """Every chapter's round trip, `--workers` chapters at a time (default 2), each in a
-    project and build folder of its own (WORK/slotK/project, WORK/slotK/build), all sharing one
-    object cache. Chapter 1 runs alone first: it fills the cache with the core every later
-    chapter compiles. make grade's staging folders and mc_golden.py's chapters have the same
-    layout (ROOT/project, ROOT/build), so given one $RB_OBJCACHE (make test gives them
-    BUILD/objcache) they take each other's objects too. With
-    `--stamps BUILD`, a chapter unchanged since its round trip passed (stamps.py) is skipped,
-    and one that passes is stamped."""
+    project folder of its own that builds in its build/ (WORK/slotK/project/build, as make
+    check does), all sharing one compiler cache (use_compiler_cache): ccache, which also holds
+    raybook's own build, so a file an export did not change is not compiled again; without
+    ccache, objcache.py, and then chapter 1 runs alone first to fill it with the core every
+    later chapter compiles. make grade's staging folders and mc_golden.py's chapters have the
+    same layout, so they take each other's objects too. With `--stamps BUILD`, a chapter
+    unchanged since its round trip passed (stamps.py) is skipped, and one that passes is
+    stamped."""
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
-    env_launcher = f"{sys.executable} {Path(__file__).resolve().parent / 'objcache.py'}"
-    os.environ.setdefault("RB_COMPILER_LAUNCHER", env_launcher.replace(" ", ";"))
-    os.environ.setdefault("RB_OBJCACHE", str(work / "objcache"))
-    os.environ.setdefault("RB_OBJCACHE_STRIP", str(work))  # the slots share objects
+    use_compiler_cache(work / "objcache", work)  # the slots share objects
     chapters = args.chapters or sorted({r.chapter for r in rg.find_regions()})
     if args.stamps:
         import stamps
@@ -1297,7 +1314,7 @@ def roundtrip(args) -> int:
         slot = slots.get()
         try:
             start = time.monotonic()
-            problems, log = roundtrip_chapter(n, slot / "project", slot / "build",
+            problems, log = roundtrip_chapter(n, slot / "project", slot / "project" / "build",
                                               not args.no_bugs)
         finally:
             slots.put(slot)
@@ -1310,7 +1327,10 @@ def roundtrip(args) -> int:
 
     failures = []
     total = time.monotonic()
-    first, rest = chapters[:1], chapters[1:]
+    # objcache.py starts empty: chapter 1 runs alone first and fills it with the core every
+    # later chapter compiles. ccache already holds the core, from raybook's own build.
+    objcache = "objcache.py" in os.environ.get("RB_COMPILER_LAUNCHER", "")
+    first, rest = (chapters[:1], chapters[1:]) if objcache else ([], chapters)
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.workers)) as pool:
         results = [one(n) for n in first] + list(pool.map(one, rest))
     failures = [n for n, problems in results if problems]
