@@ -7,7 +7,10 @@ CHAPTERS   := $(sort $(patsubst 0%,%,$(shell ls scenes 2>/dev/null | sed -n 's/^
 CHAPTERS   := $(shell echo $(CHAPTERS) | tr ' ' '\n' | sort -n | tr '\n' ' ')
 LAST       := $(lastword $(CHAPTERS))
 CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
-DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3 libnanovdb-dev ccache
+# ninja-build: make test's assignments round trip builds its exports with Ninja (assignment.py
+# use_ninja); everything else builds with CMake's Makefiles.
+DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3 libnanovdb-dev ccache \
+              ninja-build
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox blender
 # Open MPI, for rendering on many processes (mpirun -np N ./rt scene.lua): make mpi installs it,
 # and so does make test, so that the MPI tests always run.

@@ -177,6 +177,11 @@ def check_chapter(n: int, work: Path) -> list[str]:
     configure = ["cmake", "-S", str(project), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"]
     if env.get("RB_COMPILER_LAUNCHER"):
         configure.append(f"-DCMAKE_CXX_COMPILER_LAUNCHER={env['RB_COMPILER_LAUNCHER']}")
+    if env.get("RB_CMAKE_GENERATOR"):  # assignment.use_ninja()
+        configure += ["-G", env["RB_CMAKE_GENERATOR"]]
+        import assignment  # noqa: E402
+        if assignment.cache_generator(build) not in (None, env["RB_CMAKE_GENERATOR"]):
+            (build / "CMakeCache.txt").unlink()
     code, out = run(configure, env=env)
     if code != 0:
         return [f"chapter {n}: configure failed:\n{out[-1500:]}"]
@@ -217,6 +222,7 @@ def main() -> int:
     work.mkdir(parents=True, exist_ok=True)
     import assignment  # noqa: E402
     assignment.use_compiler_cache(work / "objcache", work)  # the chapters' projects share objects
+    assignment.use_ninja()
     failures = 0
     for n in args.chapters:
         start = time.monotonic()
