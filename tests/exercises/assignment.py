@@ -18,8 +18,9 @@ Commands (raybook's Makefile and the exported project's Makefile call them):
     assignment.py roundtrip WORK [--chapters 1 2 ...]
         CI: for every chapter with regions, export, check (every exercise must fail), solve,
         check (everything must pass). Two chapters at a time (--workers), each reusing its
-        export and build folder, with one compiler cache (objcache.py), so each chapter costs
-        only what changed. --stamps BUILD skips chapters unchanged since they passed.
+        export and build folder, with one compiler cache (ccache, or objcache.py without it),
+        so each chapter costs only what changed. --stamps BUILD skips chapters unchanged since
+        they passed.
     assignment.py list
         every chapter's exercises and the tests tagged [exN.k] for each.
     assignment.py tags BUILD --chapter N [--apply]
@@ -271,10 +272,11 @@ def trim_test_file(text: str, modules: set[str], names: set[str],
 
 
 CHECK_CMAKE = """
-# make check (an assignment): chapter {n}'s tests alone, so that a check builds only them.
-file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp
-     ${{CMAKE_SOURCE_DIR}}/tests/stability*.cpp)
-add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp source_dir.cpp ${{RB_CHECK_SOURCES}})
+# make check (an assignment): chapter {n}'s tests alone, so that a check builds only them, and
+# the shared test files that hold some of them{shared_note}.
+file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp)
+add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp source_dir.cpp ${{RB_CHECK_SOURCES}}
+               {shared})
 target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src
                            ${{CMAKE_SOURCE_DIR}}/tests)
 target_link_libraries(raybook_check PRIVATE raybook Catch2::Catch2)
@@ -452,7 +454,16 @@ def export(args) -> int:
     # Benchmarks and fuzz targets are not part of an assignment.
     for folder in ("tests/perf", "tests/fuzz"):
         contents[f"{folder}/CMakeLists.txt"] = b"# Not part of an assignment (see raybook).\n"
-    contents["tests/CMakeLists.txt"] += CHECK_CMAKE.format(n=n, nn=f"{n:02d}").encode()
+    # make check runs chapter N's tests only (its rows' [exN.k] and the other [chNN] ones):
+    # a shared test file (tests/stability.cpp) goes into raybook_check only when it holds one,
+    # since compiling it costs a first check, and every step of the round trip, as much as a
+    # chapter's own test file. Its tests of other chapters run in make test.
+    mine = re.compile(rf"\[(?:ch{n:02d}|ex{n}\.\d+)\]")
+    shared = sorted(rel for rel in contents if re.match(r"^tests/stability[^/]*\.cpp$", rel)
+                    and mine.search(contents[rel].decode()))
+    contents["tests/CMakeLists.txt"] += CHECK_CMAKE.format(
+        n=n, nn=f"{n:02d}", shared_note=f" ({', '.join(shared)})" if shared else " (none here)",
+        shared=" ".join("${CMAKE_SOURCE_DIR}/" + rel for rel in shared)).encode()
     template = (root / "tests/exercises/assignment.mk").read_text()
     contents["Makefile"] = template.replace("@CHAPTER@", str(n)).replace(
         "@WHOLE_BOOK@", "|".join(WHOLE_BOOK_SUITES + [s for s, k in SUITES_NEEDING.items()
@@ -717,16 +728,59 @@ def row_spec(exercises: list[dict], k: int) -> str:
     return exercises[k]["tag"] + "".join("~" + e["tag"] for e in exercises[k + 1:])
 
 
-def configured(build: Path, project: Path, launcher: str | None) -> bool:
-    """Whether `build` is a configured build folder of `project`, with `launcher`."""
+def use_compiler_cache(cache: Path, strip: Path) -> None:
+    """The compiler cache of the round trip, make grade and mc_golden.py, which build exports
+    in PROJECT/build, the folder make check uses. With ccache installed (make deps installs
+    it) no launcher is given: the export's CMakeLists.txt puts ccache in front of the compiler
+    with the project as its base folder, so its keys name the sources relative to the build
+    folder (../src/core/sphere.cpp), as raybook's own build in the clone's build/ does. A file
+    the export did not change is then the object raybook's build compiled (chapter 1's core,
+    the earlier chapters), and a project's copy in another folder (the other slot, a grading
+    stage) takes it too. Without ccache, objcache.py (keyed on the preprocessed source, with
+    STRIP/<project> taken out) shares objects between projects side by side in `strip`. A
+    launcher already in $RB_COMPILER_LAUNCHER wins."""
+    if "RB_COMPILER_LAUNCHER" in os.environ or shutil.which("ccache"):
+        return
+    here = Path(__file__).resolve().parent
+    os.environ["RB_COMPILER_LAUNCHER"] = f"{sys.executable};{here / 'objcache.py'}"
+    os.environ.setdefault("RB_OBJCACHE", str(cache))
+    os.environ.setdefault("RB_OBJCACHE_STRIP", str(strip))
+
+
+def use_ninja() -> None:
+    """Build the round trip's and mc_golden.py's exports with Ninja when it is installed (make
+    deps installs it; $RB_CMAKE_GENERATOR, when set, wins). A round-trip step builds one or
+    two changed files, and a chapter's round trip builds 2K + 1 times for K exercises: with
+    CMake's Makefiles each build spends about 3 s of CPU checking that nothing else changed
+    (make's recursion over every chapter's library and their dependency scans), with Ninja
+    0.2 s. make check and make grade keep CMake's default generator."""
+    if "RB_CMAKE_GENERATOR" not in os.environ and shutil.which("ninja"):
+        os.environ["RB_CMAKE_GENERATOR"] = "Ninja"
+
+
+def cache_generator(build: Path) -> str | None:
+    """The CMake generator a configured build folder uses, or None."""
     cache = build / "CMakeCache.txt"
-    if not cache.is_file() or not (build / "Makefile").is_file():
+    if not cache.is_file():
+        return None
+    m = re.search(r"^CMAKE_GENERATOR:INTERNAL=(.*)$", cache.read_text(errors="replace"), re.M)
+    return m.group(1) if m else None
+
+
+def configured(build: Path, project: Path, launcher: str | None,
+               generator: str | None = None) -> bool:
+    """Whether `build` is a configured build folder of `project`, with `launcher` (and with
+    `generator`, when given)."""
+    cache = build / "CMakeCache.txt"
+    rules = "build.ninja" if (generator or cache_generator(build)) == "Ninja" else "Makefile"
+    if not cache.is_file() or not (build / rules).is_file():
         return False
     text = cache.read_text(errors="replace")
     home = re.search(r"^CMAKE_HOME_DIRECTORY:INTERNAL=(.*)$", text, re.M)
     given = re.search(r"^CMAKE_CXX_COMPILER_LAUNCHER:[A-Z]+=(.*)$", text, re.M)
     return (home is not None and Path(home.group(1)).resolve() == project.resolve()
-            and (given.group(1) if given else None) == launcher)
+            and (given.group(1) if given else None) == launcher
+            and generator in (None, cache_generator(build)))
 
 
 def check_project(project: Path, build: Path, golden: bool = True,
@@ -749,11 +803,17 @@ def check_project(project: Path, build: Path, golden: bool = True,
     launcher = os.environ.get("RB_COMPILER_LAUNCHER")
     if launcher:
         configure.append(f"-DCMAKE_CXX_COMPILER_LAUNCHER={launcher}")
+    generator = os.environ.get("RB_CMAKE_GENERATOR") or None  # use_ninja()
+    if generator:
+        configure += ["-G", generator]
+        if cache_generator(build) not in (None, generator):  # CMake refuses to switch
+            (build / "CMakeCache.txt").unlink()
+            shutil.rmtree(build / "CMakeFiles", ignore_errors=True)
     # A build folder already configured for this project needs no second configure (2 s each
     # time): `cmake --build` configures again by itself when a CMakeLists.txt or a globbed
     # folder changed.
     tell = say or (lambda _: None)
-    if configured(build, project, launcher):
+    if configured(build, project, launcher, generator):
         code, out = 0, ""
     else:
         tell(f"make check: configuring the build in {build}")
@@ -918,7 +978,7 @@ def sync_tree(source: Path, dest: Path, skip: set[str]) -> None:
             target.write_bytes(data)
     for path in sorted(dest.rglob("*"), reverse=True):
         rel = path.relative_to(dest)
-        if path.is_file() and rel not in wanted:
+        if path.is_file() and rel not in wanted and rel.parts[0] not in skip:
             path.unlink()
 
 
@@ -929,7 +989,7 @@ def keep_report(result: dict, stage: Path, project: Path, build: Path) -> None:
     report = result["golden"].get("report", "")
     if report:
         shutil.rmtree(build / "golden-report", ignore_errors=True)
-        shutil.copytree(stage / "build" / "golden-report", build / "golden-report")
+        shutil.copytree(stage / "project" / "build" / "golden-report", build / "golden-report")
         result["golden"]["report"] = str(build / "golden-report" / Path(report).name)
 
 
@@ -943,14 +1003,12 @@ def grade(args) -> int:
         sys.exit(f"grade: no exported assignment in {target} (looked for {INFO})")
     out = Path(args.csv) if args.csv else (target if target.is_dir() and len(projects) > 1
                                           else target.parent) / "grades.csv"
-    # Compile what is the same once: a compiler cache keyed on the preprocessed source, with
-    # each project's folder taken out of the key (objcache.py), so the second student's build
-    # compiles only the files that student changed. Kept beside the builds for the next run.
+    # Compile what is the same once: ccache, keyed on paths relative to the project (or,
+    # without ccache, objcache.py, keyed on the preprocessed source with each project's folder
+    # taken out, kept beside the builds for the next run), so the second student's build
+    # compiles only the files that student changed (use_compiler_cache).
     cache_root = Path(args.build_root).resolve() if args.build_root else target
-    os.environ.setdefault("RB_COMPILER_LAUNCHER",
-                          f"{sys.executable};{Path(__file__).resolve().parent / 'objcache.py'}")
-    os.environ.setdefault("RB_OBJCACHE", str(cache_root / ".raybook-objcache"))
-    os.environ.setdefault("RB_OBJCACHE_STRIP", str(projects[0].parent))
+    use_compiler_cache(cache_root / ".raybook-objcache", projects[0].parent)
     # Run students side by side when the cores allow (each build gets its share of them); each
     # test keeps its own time limit. The results print in the students' order.
     global JOBS
@@ -960,7 +1018,8 @@ def grade(args) -> int:
     # Each worker grades in a staging copy of its own (build root/.stage-W): the next student's
     # files are copied over it where their bytes differ, so make rebuilds only what that
     # student changed (normally the exercise files) and relinks. Reports are copied back to
-    # the student's own build folder.
+    # the student's own build folder. The stage builds in its copy's build/ (stage/project/
+    # build), the folder make check uses, so that ccache's keys match raybook's own build.
     root = Path(args.build_root).resolve() if args.build_root else target
     workers = queue.Queue()
     for w in range(parallel):
@@ -975,7 +1034,7 @@ def grade(args) -> int:
         stage = workers.get()
         try:
             sync_tree(project, stage / "project", skip={"build"})
-            result = check_project(stage / "project", stage / "build")
+            result = check_project(stage / "project", stage / "project" / "build")
             keep_report(result, stage, project, build)
         finally:
             workers.put(stage)
@@ -1257,19 +1316,18 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
 
 def roundtrip(args) -> int:
     """Every chapter's round trip, `--workers` chapters at a time (default 2), each in a
-    project and build folder of its own (WORK/slotK/project, WORK/slotK/build), all sharing one
-    object cache. Chapter 1 runs alone first: it fills the cache with the core every later
-    chapter compiles. make grade's staging folders and mc_golden.py's chapters have the same
-    layout (ROOT/project, ROOT/build), so given one $RB_OBJCACHE (make test gives them
-    BUILD/objcache) they take each other's objects too. With
-    `--stamps BUILD`, a chapter unchanged since its round trip passed (stamps.py) is skipped,
-    and one that passes is stamped."""
+    project folder of its own that builds in its build/ (WORK/slotK/project/build, as make
+    check does), all sharing one compiler cache (use_compiler_cache): ccache, which also holds
+    raybook's own build, so a file an export did not change is not compiled again; without
+    ccache, objcache.py, and then chapter 1 runs alone first to fill it with the core every
+    later chapter compiles. make grade's staging folders and mc_golden.py's chapters have the
+    same layout, so they take each other's objects too. With `--stamps BUILD`, a chapter
+    unchanged since its round trip passed (stamps.py) is skipped, and one that passes is
+    stamped."""
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
-    env_launcher = f"{sys.executable} {Path(__file__).resolve().parent / 'objcache.py'}"
-    os.environ.setdefault("RB_COMPILER_LAUNCHER", env_launcher.replace(" ", ";"))
-    os.environ.setdefault("RB_OBJCACHE", str(work / "objcache"))
-    os.environ.setdefault("RB_OBJCACHE_STRIP", str(work))  # the slots share objects
+    use_compiler_cache(work / "objcache", work)  # the slots share objects
+    use_ninja()
     chapters = args.chapters or sorted({r.chapter for r in rg.find_regions()})
     if args.stamps:
         import stamps
@@ -1287,7 +1345,7 @@ def roundtrip(args) -> int:
         slot = slots.get()
         try:
             start = time.monotonic()
-            problems, log = roundtrip_chapter(n, slot / "project", slot / "build",
+            problems, log = roundtrip_chapter(n, slot / "project", slot / "project" / "build",
                                               not args.no_bugs)
         finally:
             slots.put(slot)
@@ -1300,7 +1358,10 @@ def roundtrip(args) -> int:
 
     failures = []
     total = time.monotonic()
-    first, rest = chapters[:1], chapters[1:]
+    # objcache.py starts empty: chapter 1 runs alone first and fills it with the core every
+    # later chapter compiles. ccache already holds the core, from raybook's own build.
+    objcache = "objcache.py" in os.environ.get("RB_COMPILER_LAUNCHER", "")
+    first, rest = (chapters[:1], chapters[1:]) if objcache else ([], chapters)
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.workers)) as pool:
         results = [one(n) for n in first] + list(pool.map(one, rest))
     failures = [n for n, problems in results if problems]

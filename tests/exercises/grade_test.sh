@@ -8,7 +8,10 @@
 #   broken     solved, then a syntax error: reported as a build failure with score 0, never
 #              a crash of the grader.
 # Then the solved project's own make check (the export's copy of the scripts) must pass.
-# Checks the printed table and the CSV. The four builds share objects through objcache.py.
+# Checks the printed table and the CSV. The builds share objects through ccache (keyed, like
+# raybook's own build, on paths relative to the project: each builds in PROJECT/build, as make
+# check does), so they take chapter 1's objects from make test's build and round trip; without
+# ccache, through objcache.py.
 #
 # Usage: bash tests/exercises/grade_test.sh WORK_DIR
 set -euo pipefail
@@ -20,8 +23,10 @@ SCRIPT=$ROOT/tests/exercises/assignment.py
 start=$SECONDS
 rm -rf "$CLASS"
 mkdir -p "$CLASS"
-export RB_OBJCACHE=${RB_OBJCACHE:-$WORK/objcache} RB_OBJCACHE_STRIP=$CLASS
-export RB_COMPILER_LAUNCHER="python3;$ROOT/tests/exercises/objcache.py"
+if ! command -v ccache >/dev/null; then
+    export RB_OBJCACHE=${RB_OBJCACHE:-$WORK/objcache} RB_OBJCACHE_STRIP=$CLASS
+    export RB_COMPILER_LAUNCHER="python3;$ROOT/tests/exercises/objcache.py"
+fi
 
 for student in untouched solved buggy broken; do
     python3 "$SCRIPT" export 1 "$CLASS/$student" >/dev/null
@@ -95,8 +100,8 @@ EOF
 # The export's own make check, as a student runs it: its copy of assignment.py, not raybook's
 # (a module only raybook has once made every export's make check crash on import). It runs in
 # a byte copy of the solved project at OWN/project, the layout of make grade's staging folders
-# (CLASS/.raybook-stage-W/project): the object cache keys on the source's path below
-# $RB_OBJCACHE_STRIP/<folder>, so the copy's compiles are the ones make grade just made (and the
+# (CLASS/.raybook-stage-W/project): ccache keys on paths relative to the project, and objcache
+# (without ccache) on the source's path below $RB_OBJCACHE_STRIP/<folder>, so the copy's compiles are the ones make grade just made (and the
 # round trip, under make test), instead of chapter 1 compiled again from scratch (about 40
 # files).
 OWN=$WORK/own-check

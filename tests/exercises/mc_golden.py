@@ -7,14 +7,13 @@ For each chapter below, a project is exported (chapters 1..N), solved with raybo
 each planted solution put into its exercise region in turn: its rt_chN is rebuilt and the
 chapter's golden image checked as make check does (run_golden.sh --statistical). A correct
 solution that draws differently must pass; each biased one must fail. Builds share objects
-through objcache.py, as the assignments' round trip does.
+through ccache (objcache.py without it), as the assignments' round trip does.
 
 usage: python3 tests/exercises/mc_golden.py WORK_DIR [--chapters 13 ...]
 """
 import argparse
 import json
 import os
-import shutil
 import subprocess
 import sys
 import time
@@ -163,10 +162,12 @@ def plant(project: Path, region_id: str, code: str | None) -> None:
 
 
 def check_chapter(n: int, work: Path) -> list[str]:
-    # The layout of the round trip's slots and make grade's staging folders (ROOT/project,
-    # ROOT/build): with one $RB_OBJCACHE, objcache.py gives each the others' objects.
-    project, build = work / f"ch{n:02d}" / "project", work / f"ch{n:02d}" / "build"
-    shutil.rmtree(project, ignore_errors=True)
+    # The layout of make check, the round trip's slots and make grade's staging folders
+    # (PROJECT/build): ccache (or, without it, objcache.py with one $RB_OBJCACHE) gives each the
+    # others' objects, and raybook's own build's. The export rewrites every file it holds and
+    # removes the others (the build folder stays).
+    project = work / f"ch{n:02d}" / "project"
+    build = project / "build"
     env = dict(os.environ)
     script = str(HERE / "assignment.py")
     code, out = run([sys.executable, script, "export", str(n), str(project)], env=env)
@@ -176,6 +177,11 @@ def check_chapter(n: int, work: Path) -> list[str]:
     configure = ["cmake", "-S", str(project), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"]
     if env.get("RB_COMPILER_LAUNCHER"):
         configure.append(f"-DCMAKE_CXX_COMPILER_LAUNCHER={env['RB_COMPILER_LAUNCHER']}")
+    if env.get("RB_CMAKE_GENERATOR"):  # assignment.use_ninja()
+        configure += ["-G", env["RB_CMAKE_GENERATOR"]]
+        import assignment  # noqa: E402
+        if assignment.cache_generator(build) not in (None, env["RB_CMAKE_GENERATOR"]):
+            (build / "CMakeCache.txt").unlink()
     code, out = run(configure, env=env)
     if code != 0:
         return [f"chapter {n}: configure failed:\n{out[-1500:]}"]
@@ -214,10 +220,9 @@ def main() -> int:
     args = parser.parse_args()
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
-    launcher = f"{sys.executable};{HERE / 'objcache.py'}"
-    os.environ.setdefault("RB_COMPILER_LAUNCHER", launcher)
-    os.environ.setdefault("RB_OBJCACHE", str(work / "objcache"))
-    os.environ.setdefault("RB_OBJCACHE_STRIP", str(work))  # the chapters' projects share objects
+    import assignment  # noqa: E402
+    assignment.use_compiler_cache(work / "objcache", work)  # the chapters' projects share objects
+    assignment.use_ninja()
     failures = 0
     for n in args.chapters:
         start = time.monotonic()

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""A small compiler cache for the assignment round trip (assignment.py roundtrip), used as
-CMAKE_CXX_COMPILER_LAUNCHER: `objcache.py c++ ARGS... -o OBJ -c SOURCE`.
+"""A small compiler cache for the assignment round trip (assignment.py roundtrip), make grade
+and mc_golden.py on a machine without ccache (with ccache they use it: use_compiler_cache in
+assignment.py), used as CMAKE_CXX_COMPILER_LAUNCHER: `objcache.py c++ ARGS... -o OBJ -c SOURCE`.
 
 The round trip exports chapter after chapter into the same folders and builds them there. Most
 translation units do not change from one chapter to the next, but an export rewrites some files
