@@ -1158,6 +1158,14 @@ int luaL_getmetafield(lua_State* L, int obj, const char* e) {
     return v.type;
 }
 
+int luaL_callmeta(lua_State* L, int obj, const char* e) {
+    obj = lua_absindex(L, obj);
+    if (luaL_getmetafield(L, obj, e) == LUA_TNIL) return 0;
+    lua_pushvalue(L, obj);
+    lua_call(L, 1, 1);
+    return 1;
+}
+
 const char* luaL_tolstring(lua_State* L, int idx, size_t* len) {
     const Value v = get(L, idx);
     std::string s;
