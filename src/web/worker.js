@@ -8,8 +8,11 @@
 // stops an endless render with worker.terminate().
 //
 // Messages in:  {type: 'init'}
-//               {type: 'render', id, scene, text, features, size}
+//               {type: 'render', id, scene, text, features, size, extra, progress}
+//                 extra: more options for rt (the page's previews: --preview --spp N ...);
+//                 progress: true to send rt's progress bar while it renders
 // Messages out: {type: 'ready', features: [{chapter, name, on, core, what}], ms}
+//               {type: 'progress', id, line}   (each redraw of the bar, while rt runs)
 //               {type: 'done', id, code, png (ArrayBuffer or null), out, err, ms}
 //               {type: 'failed', id, message}   (rt could not be started or aborted)
 'use strict';
@@ -22,6 +25,25 @@ let rbFactory = null; // one wasmoon LuaFactory (the compiled Lua VM) for the wo
 let rbRt = null;      // the rt instance; dropped after an abort, made again on the next render
 let rbOut = '';
 let rbErr = '';
+let rbProgress = null; // called with each line of rt's progress bar, during a render that asks
+
+// rt draws its progress bar on stderr (a terminal here), each redraw after a carriage return,
+// but emscripten's terminal hands its text on only at a newline, when the render is over. So
+// the terminal's put_char is watched: a carriage return ends the line drawn before it, which
+// goes to rbProgress at once (a worker's postMessage is sent while rt still runs).
+function rbWatchProgress(rt) {
+  const ops = rt.FS.getStream(2).tty.ops;
+  const putChar = ops.put_char;
+  ops.put_char = (tty, byte) => {
+    if (byte === 13 && rbProgress) {
+      let start = tty.output.length;
+      while (start > 0 && tty.output[start - 1] !== 13) start--;
+      const line = new TextDecoder().decode(Uint8Array.from(tty.output.slice(start))).trim();
+      if (line) rbProgress(line);
+    }
+    putChar(tty, byte);
+  };
+}
 
 async function rbInstance() {
   if (rbRt) return rbRt;
@@ -32,6 +54,7 @@ async function rbInstance() {
     print: (s) => { rbOut += s + '\n'; },
     printErr: (s) => { rbErr += s + '\n'; },
   });
+  rbWatchProgress(rbRt);
   return rbRt;
 }
 
@@ -78,9 +101,15 @@ async function rbRender(m) {
   rt.FS.writeFile(scene, m.text);
   try { rt.FS.unlink('/tmp/out.png'); } catch (e) { /* not there */ }
   const args = ['--features=' + m.features, '--size', m.size, '--threads', '1',
-                '--output', '/tmp/out.png', scene];
+                ...(m.extra || []), '--output', '/tmp/out.png', scene];
+  rbProgress = m.progress ? (line) => self.postMessage({type: 'progress', id: m.id, line}) : null;
   const t0 = performance.now();
-  const code = rbRun(rt, args);
+  let code;
+  try {
+    code = rbRun(rt, args);
+  } finally {
+    rbProgress = null;
+  }
   const ms = performance.now() - t0;
   let png = null;
   if (code === 0) {
