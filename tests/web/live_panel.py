@@ -13,7 +13,13 @@ listed if not. Then, on chapter 1's page:
   - a broken call in the text box shows the command line's message, file:line included;
   - `while true do end` stops with the command line's "ran more than ... Lua instructions"
     message, while the page keeps answering;
-  - Stop ends a running render at once, and the next render works.
+  - Stop ends a running render at once, and the next render works;
+  - the page opened with ?rb-autorender=160x120 renders on load and leaves the command line's
+    picture in <pre id="rb-autorender-result">.
+And on chapter 18's page (issue 38), a render long enough for previews (its Cornell box at
+80x60 with 144 samples a pixel, raised from 64 in the text box, some seconds in the page) shows at
+least two previews before the picture, a quarter-size one and then full-size ones of growing
+sample counts, and the picture that follows them equals native rt's.
 With --bad-input (as CTest runs it), every case of tests/bad_input/cases that the panel can
 run must fail in the page with native rt's message (see bad_input below).
 Exit code 0 when all pass, 1 otherwise, 77 (skipped) when there is no bundle or no chromium.
@@ -22,6 +28,7 @@ import argparse
 import base64
 import functools
 import http.server
+import json
 import os
 import re
 import shutil
@@ -69,8 +76,8 @@ def differing_pixels(a, b, most=10):
     return ['%d pixel(s) differ' % count] + out
 
 
-def native(rt, features, scene, out):
-    args = [rt, '--features=' + features, '--size', SIZE, '--threads', '1', '--output', out, scene]
+def native(rt, features, scene, out, size=SIZE):
+    args = [rt, '--features=' + features, '--size', size, '--threads', '1', '--output', out, scene]
     t0 = time.time()
     r = subprocess.run(args, capture_output=True, text=True)
     return r, time.time() - t0
@@ -107,19 +114,30 @@ def panel_text(page):
     return page.evaluate('document.querySelector(".rb-live pre.rb-msg").textContent')
 
 
-def compare_chapter(page, args, n, scene_name, label, text=None):
-    opts = '{size: "%s"%s}' % (SIZE, '' if text is None else ', text: ' + json_str(text))
+def compare_chapter(page, args, n, scene_name, label, text=None, size=SIZE):
+    opts = '{size: "%s"%s}' % (size, '' if text is None else ', text: ' + json_str(text))
     r = render(page, opts, args.timeout)
+    return r if same_as_native(args, r, n, scene_name, label, text, size) else None
+
+
+def same_as_native(args, r, n, scene_name, label, text=None, size=SIZE):
+    """Whether the panel's render R of SCENE_NAME (or of TEXT typed in its place) succeeded and
+    its canvas equals native rt's render, pixel for pixel."""
     if not check(r and r['code'] == 0 and r['pixels'], '%s: the panel renders %s' % (label, scene_name),
-                 repr({k: v for k, v in (r or {}).items() if k != 'pixels'})):
-        return None
+                 repr({k: v for k, v in (r or {}).items() if k not in ('pixels', 'frames')})):
+        return False
     canvas = os.path.join(args.work, 'ch%02d-%s-page.png' % (n, re.sub(r'[^a-z]+', '-', label)))
     save_canvas(r, canvas)
     features = r['args'][0].split('=', 1)[1]
     ref = os.path.join(args.work, 'ch%02d-%s-native.png' % (n, re.sub(r'[^a-z]+', '-', label)))
-    nat, secs = native(args.rt, features, os.path.join(args.scenes, scene_name), ref)
+    scene = os.path.join(args.scenes, scene_name)
+    if text is not None and text != open(scene).read():  # an edited scene (with no assets)
+        scene = os.path.join(args.work, scene_name)
+        with open(scene, 'w') as f:
+            f.write(text)
+    nat, secs = native(args.rt, features, scene, ref, size)
     if not check(nat.returncode == 0, 'native rt renders ' + scene_name, nat.stderr):
-        return None
+        return False
     cmp = subprocess.run([args.rt, '--compare', canvas, ref], capture_output=True, text=True)
     largest = re.search(r'largest\s+(\S+)', cmp.stdout)
     same = largest is not None and float(largest.group(1)) == 0
@@ -129,9 +147,8 @@ def compare_chapter(page, args, n, scene_name, label, text=None):
             detail += '\n' + '\n'.join(differing_pixels(canvas, ref))
         except Exception as e:  # an unexpected PNG kind: --compare's numbers still stand
             detail += '\n(could not list the pixels: %s)' % e
-    check(same, '%s: chapter %d\'s canvas equals native rt (--features=%s, %s): page %.2f s, '
-          'native %.2f s' % (label, n, features, SIZE, r['ms'] / 1000, secs), detail)
-    return r
+    return check(same, '%s: chapter %d\'s canvas equals native rt (--features=%s, %s): page %.2f s, '
+                 'native %.2f s' % (label, n, features, size, r['ms'] / 1000, secs), detail)
 
 
 def serve(root):
@@ -209,6 +226,8 @@ def main():
         finally:
             server.shutdown()
 
+        autorender(browser, args, chapters[0], scenes[chapters[0]])
+        progressive(browser, args, scenes)
         if not args.skip_limits:
             limits(browser, args, chapters[0], scenes[chapters[0]])
         if args.bad_input:
@@ -294,6 +313,58 @@ def limits(browser, args, n, scene_name):
     page.screenshot(os.path.join(args.work, 'ch%02d-after-stop.png' % n), full_page=False)
 
 
+def autorender(browser, args, n, scene_name):
+    """?rb-autorender=WxH: the first panel renders on load, and the page leaves the result."""
+    page = browser.open('file://%s/ch%02d.html?rb-autorender=%s' % (args.html, n, SIZE))
+    try:
+        page.wait_for('document.getElementById("rb-autorender-result")', args.timeout)
+        r = json.loads(page.evaluate('document.getElementById("rb-autorender-result").textContent'))
+    except cdp.CdpError as e:
+        check(False, '?rb-autorender=%s renders chapter %d\'s panel on load' % (SIZE, n), str(e))
+        return
+    same_as_native(args, r, n, scene_name, '?rb-autorender')
+
+
+# A render long enough for previews (issue 38): chapter 18's Cornell box with 144 samples a
+# pixel in place of the scene's 64, at 80x60 (20 tiles: rt's progress bar, which starts the
+# previews, draws once the first is done).
+PROGRESSIVE = (18, '80x60', 'samples = 64}', 'samples = 144}')
+
+
+def progressive(browser, args, scenes):
+    """The panel draws previews of growing sample counts, then the picture itself."""
+    n, size, old, new = PROGRESSIVE
+    html = os.path.join(args.html, 'ch%02d.html' % n)
+    if n not in scenes or not os.path.exists(html):  # an export of an earlier chapter
+        print('live_panel: no chapter %d page; the progressive render is not checked' % n)
+        return
+    page = open_panel(browser, 'file://' + html)
+    if not page.evaluate('!!window.raybookLive.panels[0].features'):
+        return
+    original = page.evaluate('window.raybookLive.panels[0].original')
+    if not check(old in original, 'chapter %d\'s scene has "%s" to raise' % (n, old)):
+        return
+    text = original.replace(old, new)
+    r = render(page, '{size: "%s", text: %s}' % (size, json_str(text)), args.timeout)
+    same_as_native(args, r, n, scenes[n], 'progressive', text, size)
+    frames = (r or {}).get('frames') or []
+    shown = ', '.join('%s (%s, after %.1f s)' % (f['label'], f['size'], f['at'] / 1000) for f in frames)
+    check(len(frames) >= 2, 'a %.1f s render in the page shows %d previews before the picture '
+          '(at least 2): %s' % ((r or {}).get('ms', 0) / 1000, len(frames), shown), repr(r and r['err']))
+    # Their order: rt --preview's quarter size at one sample a pixel, then the full size at 1,
+    # 4, 16, ... samples a pixel; each drawn as an image of its size.
+    w, h = (int(v) for v in size.split('x'))
+    want = [('%dx%d' % ((w + 2) // 4, (h + 2) // 4), 1)] + [(size, 4 ** k) for k in range(len(frames))]
+    got = [(f['size'], f['spp']) for f in frames]
+    check(got == want[:len(frames)], 'the previews grow: %s' % got, 'expected %s' % want[:len(frames)])
+    for k, f in enumerate(frames):
+        path = os.path.join(args.work, 'ch%02d-preview-%d.png' % (n, k))
+        save_canvas(f, path)
+        fw, fh, _ = png_pixels(path)
+        check('%dx%d' % (fw, fh) == f['size'], 'preview %d is drawn at its size %s' % (k, f['size']),
+              'drawn %dx%d' % (fw, fh))
+
+
 # Cases that reach a file through the repository's layout (tests/bad_input/cases/../../../scenes),
 # which neither the page's /scenes nor the native copy here has.
 LAYOUT_CASES = {'media-vdb-grid-name.lua'}
@@ -370,7 +441,6 @@ def bad_input(browser, args, n, scene_name):
 
 
 def json_str(s):
-    import json
     return json.dumps(s)
 
 

@@ -8,7 +8,9 @@ Records the bundle's size (and gzip's, what a server would send) and, for each c
 the time to render it at 160x120 in headless Chromium (the panel's rt in its Web Worker: the
 callMain time the worker measures, and the wall time of a render seen from the page, which adds
 the messages and drawing the PNG) against native `rt --threads 1` on the same scene with the
-same options (wall time of the process), as a Markdown table with the ratio page / native.
+same options (wall time of the process), as a Markdown table with the ratio page / native, and
+when the page showed its first picture (its first preview, else the picture itself) with the
+number of previews before the picture (src/web/panel.js renders them in a second worker).
 Each time is the least (--stat min, the default: a busy machine only adds time) or the median
 of --runs renders; the page's first render (which starts rt) is not counted. Each chapter gets a page of its own in a temporary folder next to a copy of the bundle.
 """
@@ -70,8 +72,8 @@ def main():
              'page: headless Chromium %s, the worker\'s callMain time and the page\'s wall '
              'time for one render.' % (args.size, args.stat, args.runs, os.path.basename(args.rt),
                                        chromium_version()), '',
-             '| chapter | scene | native (s) | page callMain (s) | page wall (s) | ratio callMain / native | rt start in the page (s) |',
-             '|---:|---|---:|---:|---:|---:|---:|']
+             '| chapter | scene | native (s) | page callMain (s) | page wall (s) | ratio callMain / native | first picture in the page (s) | previews | rt start in the page (s) |',
+             '|---:|---|---:|---:|---:|---:|---:|---:|---:|']
     print('\n'.join(lines))
     sys.stdout.flush()
 
@@ -125,11 +127,13 @@ def bench_chapter(browser, args, tmp, n, scene):
     if r['code'] != 0:
         return '| %d | %s | | | | | failed: %s |' % (n, scene, r['err'].strip().replace('\n', ' '))
     features = r['args'][0]
-    calls, walls = [], []
+    calls, walls, firsts, previews = [], [], [], []
     for _ in range(args.runs):
         r, wall = render()
         calls.append(r['ms'] / 1000)
         walls.append(wall)
+        firsts.append(r['frames'][0]['at'] / 1000 if r['frames'] else wall)
+        previews.append(len(r['frames']))
     natives = []
     for _ in range(args.runs):
         t = time.time()
@@ -139,8 +143,10 @@ def bench_chapter(browser, args, tmp, n, scene):
         natives.append(time.time() - t)
     page.send('Page.close')
     pick = min if args.stat == 'min' else statistics.median
-    nat, call, wall = (pick(x) for x in (natives, calls, walls))
-    return '| %d | `%s` | %.3f | %.3f | %.3f | %.2f | %.2f |' % (n, scene, nat, call, wall, call / nat, start)
+    nat, call, wall, first = (pick(x) for x in (natives, calls, walls, firsts))
+    shown = '%d' % min(previews) if min(previews) == max(previews) else '%d-%d' % (min(previews), max(previews))
+    return '| %d | `%s` | %.3f | %.3f | %.3f | %.2f | %.3f | %s | %.2f |' % (
+        n, scene, nat, call, wall, call / nat, first, shown, start)
 
 
 if __name__ == '__main__':
