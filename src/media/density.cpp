@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 #include "bump/gradient_noise.h"
 #include "media/medium.h"
@@ -16,6 +17,11 @@ AABB everywhere() {
 }
 
 }  // namespace
+
+double DensityField::depth(const Vec3&, const Vec3&, double, double, const double*, double*,
+                           int) const {
+    throw std::logic_error("DensityField::depth on a density that is not integrable()");
+}
 
 AABB ConstantDensity::bounds() const {
     return everywhere();

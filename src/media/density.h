@@ -26,6 +26,13 @@ class DensityField {
     virtual AABB bounds() const = 0;
     /// True when the density is the same everywhere (closed-form transmittance applies).
     virtual bool constant() const { return false; }
+    /// True when depth() integrates the density along a line exactly (a voxel grid).
+    virtual bool integrable() const { return false; }
+    /// The optical depth per unit density coefficient, ∫ density(o + t d) dt from t0 to t1,
+    /// and the same integral from t0 up to each of the `count` sorted parameters `at` (into
+    /// depthAt; those outside [t0, t1] are clamped to it). Only where integrable().
+    virtual double depth(const Vec3& o, const Vec3& d, double t0, double t1, const double* at,
+                         double* depthAt, int count) const;
 };
 
 }  // namespace rb

@@ -33,13 +33,16 @@ MediaSettings mediaSettings(const RenderContext& context) {
     if (method != "track" && method != "march")
         throw InputError("--media: expected 'track' or 'march', got '" + method + "'");
     s.march = method == "march";
-    const std::string shadows = context.cliOption("media-shadows", "ratio");
-    if (shadows == "ratio")
+    const std::string shadows = context.cliOption("media-shadows", "exact");
+    if (shadows == "exact")
+        s.shadows = TransmittanceMethod::Exact;
+    else if (shadows == "ratio")
         s.shadows = TransmittanceMethod::Ratio;
     else if (shadows == "delta")
         s.shadows = TransmittanceMethod::Delta;
     else
-        throw InputError("--media-shadows: expected 'ratio' or 'delta', got '" + shadows + "'");
+        throw InputError("--media-shadows: expected 'exact', 'ratio' or 'delta', got '" + shadows +
+                         "'");
     const std::string direct = context.cliOption("media-direct", "mis");
     if (direct == "mis")
         s.direct = MediaDirect::Mis;
@@ -126,7 +129,10 @@ Feature mediaFeature() {
             installMedia,
             {{"media", "track|march",
               "free flights by delta tracking, or ray marching (single scattering only)", "track"},
-             {"media-shadows", "ratio|delta", "shadow-ray transmittance estimator", "ratio"},
+             {"media-shadows", "exact|ratio|delta",
+              "transmittance through heterogeneous media: exact through voxel grids (else "
+              "ratio tracking), ratio or delta tracking",
+              "exact"},
              {"media-direct", "mis|flight|light",
               "single scattering in homogeneous media: free flights, lamp points, or both by MIS",
               "mis"},

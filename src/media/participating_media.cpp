@@ -615,8 +615,12 @@ Colour ParticipatingMedia::trackedScattered(const ShadeContext& ctx, const Ray& 
     std::vector<double> at(spots.size());
     std::vector<Colour> trAt(spots.size());
     for (size_t i = 0; i < spots.size(); ++i) at[i] = spots[i].t;
-    const Colour through = ratioTrackReading(*piece.medium, ray, piece.t0, piece.t1, at.data(),
-                                             trAt.data(), static_cast<int>(at.size()), ctx.sampler);
+    const int count = static_cast<int>(at.size());
+    const Colour through = exactOn(*piece.medium, settings_.shadows)
+                               ? exactTransmittance(*piece.medium, ray, piece.t0, piece.t1,
+                                                    at.data(), trAt.data(), count)
+                               : ratioTrackReading(*piece.medium, ray, piece.t0, piece.t1,
+                                                   at.data(), trAt.data(), count, ctx.sampler);
     // Step 3: the light each point scatters towards the ray's origin, over its density; a point
     // the pass did not reach, or in empty space, needs no shadow ray.
     const Ray local = piece.medium->toMedium(ray);

@@ -35,7 +35,7 @@ constexpr double kLeastShadowChance = 0.02;
 /// How a render treats its media: gr.option values, overridden by the command line.
 struct MediaSettings {
     bool march = false;  ///< Ray marching (single scattering only) instead of tracking.
-    TransmittanceMethod shadows = TransmittanceMethod::Ratio;  ///< Shadow-ray estimator.
+    TransmittanceMethod shadows = TransmittanceMethod::Exact;  ///< Shadow-ray estimator.
     double step = 0.0;  ///< Marching step in world units; 0: 1/400 of the fog box diagonal.
     int majorantResolution = 16;  ///< Majorant grid cells per axis.
     /// Scatterings a path may take in media after the first (0: single scattering only).

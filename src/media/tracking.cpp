@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace rb {
 
@@ -164,12 +165,56 @@ Colour ratioTrackReading(const TrackedMedium& m, const Ray& ray, double t0, doub
 // [ratio-track-reading]
 
 // [transmittance]
+// [exact-transmittance]
+bool exactOn(const TrackedMedium& m, TransmittanceMethod method) {
+    return method == TransmittanceMethod::Exact && !m.medium.homogeneous() &&
+           m.medium.density->integrable();
+}
+
+Colour exactTransmittance(const TrackedMedium& m, const Ray& ray, double t0, double t1,
+                          const double* at, Colour* trAt, int count) {
+    const Ray local = m.toMedium(ray);
+    // Optical depth per unit t is σt · density · |ray.d|: the density's integral, scaled.
+    const Colour sigmaT = m.medium.sigmaT() * glm::length(ray.d);
+    // Step 1: the stretches of the majorant grid's cells that may hold density, merged.
+    std::vector<std::pair<double, double>> runs;
+    m.majorants.traverse(local, t0, t1, [&](double a, double b, double bound) {
+        if (!(bound > 0.0)) return true;
+        if (!runs.empty() && runs.back().second == a)
+            runs.back().second = b;
+        else
+            runs.emplace_back(a, b);
+        return true;
+    });
+    // Step 2: each stretch integrated; a reading before or between them keeps the depth so far.
+    std::vector<double> depthAt(count);
+    double depth = 0.0;
+    int k = 0;
+    for (const auto& [a, b] : runs) {
+        for (; k < count && at[k] <= a; ++k) depthAt[k] = depth;
+        int end = k;
+        while (end < count && at[end] < b) ++end;
+        const double before = depth;
+        depth +=
+            m.medium.density->depth(local.o, local.d, a, b, at + k, depthAt.data() + k, end - k);
+        for (int i = k; i < end; ++i) depthAt[i] += before;
+        k = end;
+    }
+    for (; k < count; ++k) depthAt[k] = depth;
+    for (int i = 0; i < count; ++i) trAt[i] = beerLambert(sigmaT, depthAt[i]);
+    return beerLambert(sigmaT, depth);
+}
+// [exact-transmittance]
+
 Colour estimateTransmittance(const TrackedMedium& m, const Ray& ray, double t0, double t1,
                              TransmittanceMethod method, double step, Sampler& sampler) {
     const double length = glm::length(ray.d);
     const Colour sigmaT = m.medium.sigmaT() * length;
     // A homogeneous medium needs no estimate: Beer–Lambert.
     if (m.medium.homogeneous()) return beerLambert(sigmaT, t1 - t0);
+    // A voxel grid needs no estimate either: its optical depth, integrated cell by cell.
+    if (exactOn(m, method)) return exactTransmittance(m, ray, t0, t1, nullptr, nullptr, 0);
+    if (method == TransmittanceMethod::Exact) method = TransmittanceMethod::Ratio;
     const Ray local = m.toMedium(ray);
     Colour tr(1.0);
     if (method == TransmittanceMethod::March) {

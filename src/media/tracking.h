@@ -43,6 +43,8 @@ FreeFlight sampleFreeFlight(const TrackedMedium& m, const Ray& ray, double t0, d
 
 /// How a shadow ray's transmittance is estimated.
 enum class TransmittanceMethod {
+    Exact,  ///< The optical depth integrated exactly where the density allows (a voxel grid),
+            ///< else ratio tracking.
     Ratio,  ///< Ratio tracking: the product of 1 − μt/μ̄ at each tentative collision.
     Delta,  ///< Delta tracking: 1 if the ray meets no real particle, else 0.
     March,  ///< Ray marching with a fixed step: biased, the baseline.
@@ -67,6 +69,14 @@ Colour estimateTransmittance(const TrackedMedium& m, const Ray& ray, double t0, 
 Colour ratioTrackReading(const TrackedMedium& m, const Ray& ray, double t0, double t1,
                          const double* at, Colour* trAt, int count, Sampler& sampler);
 
+/// The transmittance from t0 to t1 of a medium whose density integrates exactly along a line
+/// (DensityField::integrable(), a voxel grid), and from t0 to each of the `count` sorted
+/// parameters `at` (into trAt): e^{−σt τ} with τ the optical depth, no estimate. Only the
+/// majorant grid's non-empty cells are integrated.
+Colour exactTransmittance(const TrackedMedium& m, const Ray& ray, double t0, double t1,
+                          const double* at, Colour* trAt, int count);
+/// True when the transmittance through `m` by `method` is exactTransmittance's.
+bool exactOn(const TrackedMedium& m, TransmittanceMethod method);
 /// Where ratioTrackReading starts Russian roulette: a product below this.
 constexpr double kRouletteBelow = 0.05;
 
