@@ -54,8 +54,13 @@ fail() {
     failures=$((failures + 1))
     local kept="$work/failures/$(basename "$scene")"
     cp "$scene" "$kept"
-    for log in "$@"; do cp "$log" "$work/failures/"; done
     local index=$(basename "$scene" .lua)
+    # Each log under the scene's name (soak_film's is shared by the scenes of its batch).
+    for log in "$@"; do
+        local copy=$(basename "$log")
+        [[ $copy == "$index"* ]] || copy="$index-$copy"
+        cp "$log" "$work/failures/$copy"
+    done
     index=$((10#${index#scene-}))
     echo "FAIL $(basename "$scene"): $why"
     echo "  scene kept: $kept (logs beside it)"
