@@ -75,7 +75,9 @@ check_films() {
     local -a pairs=("$@")
     while [ ${#pairs[@]} -gt 0 ]; do
         local log="$work/out/film.log"
-        "$film" "${pairs[@]}" >"$log" 2>&1
+        # A scene still rendering after 600 s (the slowest of the first 2,000 took about a
+        # minute) is a hang or a pathological slowdown: it fails, the rest are checked again.
+        timeout -s KILL 600 "$film" "${pairs[@]}" >"$log" 2>&1
         local rc=$?
         while read -r verdict scene why; do
             [ "$verdict" = BAD ] && fail "${scene%:}" "soak_film: $why" "$log"
@@ -88,7 +90,11 @@ check_films() {
         # Crashed in the last scene it named: that one fails, the rest are checked again.
         local last
         last=$(grep '^checking ' "$log" | tail -n 1 | cut -d' ' -f2)
-        fail "${last:-${pairs[0]}}" "soak_film ended with exit code $rc (a crash or a sanitizer report)" "$log"
+        if [ $rc = 137 ]; then
+            fail "${last:-${pairs[0]}}" "soak_film was still rendering after 600 s (killed)" "$log"
+        else
+            fail "${last:-${pairs[0]}}" "soak_film ended with exit code $rc (a crash or a sanitizer report)" "$log"
+        fi
         pairs=("${pairs[@]:$((2 * (checked > 0 ? checked : 1)))}")
     done
 }
