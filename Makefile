@@ -183,7 +183,8 @@ sanitize-build: deps
 # make soak (issue 40): SOAK_N random legal scenes of every chapter, of seed SOAK_SEED, rendered
 # by the sanitizer tree's rt on one thread and on two under a random --max-memory and
 # --time-limit, their films checked for NaN in-process (tests/soak/README.md). Never part of
-# make test: 2,000 scenes take about 50 minutes on two busy cores.
+# make test: about 4 s a scene on two cores under a heavy load (2,000 took 51 minutes as up to four
+# workers side by side, soak.sh FIRST).
 SOAK_N    ?= 300
 SOAK_SEED ?= 1
 soak: sanitize-build

@@ -27,12 +27,24 @@
 
 namespace {
 
+/// `c` with every digit a float holds (std::to_string prints -1e-9 as -0.000000).
+std::string exact(float c) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", c);
+    return text;
+}
+
 /// What is wrong with the image's channels: "" when each is finite, ≥ 0 and at most `most`.
 std::string channelFault(const rb::Image& image, float most) {
-    for (float c : image.data()) {
-        if (!std::isfinite(c)) return "a channel is " + std::to_string(c);
-        if (c < 0.0f) return "a channel is negative (" + std::to_string(c) + ")";
-        if (c > most) return "a display channel exceeds 1 (" + std::to_string(c) + ")";
+    const auto data = image.data();
+    for (size_t i = 0; i < data.size(); ++i) {
+        const float c = data[i];
+        const std::string where = " at pixel (" + std::to_string(i / 3 % image.width()) + ", " +
+                                  std::to_string(i / 3 / image.width()) + "), channel " +
+                                  std::to_string(i % 3);
+        if (!std::isfinite(c)) return "a channel is " + exact(c) + where;
+        if (c < 0.0f) return "a channel is negative (" + exact(c) + ")" + where;
+        if (c > most) return "a display channel exceeds 1 (" + exact(c) + ")" + where;
     }
     return "";
 }
