@@ -26,6 +26,7 @@
 #include "photon_map/photon_map.h"
 #include "photon_map/photon_tracer.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::Vec3;
@@ -183,7 +184,7 @@ SCENARIO("inside a closed diffuse sphere the indirect light is the geometric ser
                 for (const double t : totals) mean += t / totals.size();
                 for (const double t : totals) var += (t - mean) * (t - mean) / (totals.size() - 1);
                 const double z = (mean - 1.0) / std::sqrt(var / totals.size());
-                INFO("mean " << mean << ", standard error " << std::sqrt(var / totals.size()));
+                INFO(rbtest::zReport(mean, 1.0, std::sqrt(var / totals.size())));
                 CHECK(std::abs(z) < rbtest::zCritical(0.01));
                 CHECK(mean == Approx(1.0).epsilon(0.05));
             }

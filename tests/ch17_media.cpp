@@ -34,6 +34,7 @@
 #include "media/participating_media.h"
 #include "media/tracking.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::Colour;
@@ -184,8 +185,7 @@ SCENARIO(
                             .r;
                     });
                     THEN("the mean lies within the z-test's bound of e^−1") {
-                        INFO("mean " << mean << " ± " << error
-                                     << ", z = " << (mean - exact) / error);
+                        INFO(rbtest::zReport(mean, exact, error) << " (e^−1)");
                         CHECK(std::abs(mean - exact) < z * error);
                     }
                 }
@@ -271,7 +271,7 @@ SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws
                 }
                 THEN("a chi-square test of 20 × 8 bins in (cos θ, φ) passes at 0.001 / 4") {
                     const double p = chiSquarePValue(observed, expected);
-                    INFO("p = " << p);
+                    INFO("p = " << p << "; " << rbtest::warptestHint("hg-phase"));
                     CHECK(p > sidak(0.001, 4));
                 }
             }
@@ -419,7 +419,7 @@ SCENARIO("Equiangular points are spread as the angle under which the light sees 
                                        cdf(seg.a + double(k) / bins * (seg.b - seg.a)));
                 THEN("a chi-square test of 40 distance bins passes at 0.001") {
                     const double p = chiSquarePValue(observed, expected);
-                    INFO("p = " << p << " (./rt --warptest equiangular draws it)");
+                    INFO("p = " << p << "; " << rbtest::warptestHint("equiangular"));
                     CHECK(p > sidak(0.001, 3));
                 }
                 THEN("each point's stated density is the pdf's") {
