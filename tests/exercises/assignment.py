@@ -23,6 +23,8 @@ Commands (raybook's Makefile and the exported project's Makefile call them):
         they passed.
     assignment.py list
         every chapter's exercises and the tests tagged [exN.k] for each.
+    assignment.py readmes
+        CI: every chapter's exported README is plain Markdown (no Doxygen or LaTeX left).
     assignment.py tags BUILD --chapter N [--apply]
         maintainer's tool: find which [chNN] tests pass once exercises 1..k are written and
         k+1.. are stubs, i.e. the [exN.k] tag each test should carry.
@@ -337,6 +339,93 @@ def compare_rows(root: Path, scene: Path | None) -> list[str]:
                if stats.exists() else "") + " |"]
 
 
+# ---- Doxygen to plain Markdown (the exported README is read on GitHub or in a terminal) ------
+
+GREEK = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε",
+         "varepsilon": "ε", "zeta": "ζ", "eta": "η", "theta": "θ", "kappa": "κ", "lambda": "λ",
+         "mu": "μ", "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ",
+         "phi": "φ", "varphi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω", "Gamma": "Γ",
+         "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Sigma": "Σ", "Phi": "Φ", "Psi": "Ψ",
+         "Omega": "Ω"}
+SYMBOLS = {"cdot": "·", "times": "×", "le": "≤", "leq": "≤", "ge": "≥", "geq": "≥", "ne": "≠",
+           "neq": "≠", "approx": "≈", "infty": "∞", "to": "→", "rightarrow": "→", "pm": "±",
+           "sum": "Σ", "prod": "Π", "int": "∫", "partial": "∂", "nabla": "∇", "ell": "ℓ",
+           "propto": "∝", "in": "∈", "ldots": "…", "dots": "…", "cdots": "⋯", "sim": "∼",
+           "lvert": "|", "rvert": "|", "lfloor": "⌊", "rfloor": "⌋", "lceil": "⌈", "rceil": "⌉",
+           "quad": " ", "qquad": " ", "left": "", "right": ""}
+# Names LaTeX sets upright: written as words.
+FUNCTIONS = {"max", "min", "ln", "log", "exp", "cos", "sin", "tan", "arctan", "arcsin",
+             "arccos", "atan2", "sqrt"}
+ACCENTS = {"bar": "\u0304", "hat": "\u0302", "tilde": "\u0303", "vec": "\u20d7"}
+SUPERSCRIPT = dict(zip("0123456789+-=()nikTp′", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱᵏᵀᵖ′"))
+SUBSCRIPT = dict(zip("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))
+
+
+def plain_math(tex: str) -> str:
+    """A Doxygen formula (LaTeX) as plain text with Unicode: \\sigma_s(s)\\,T(a, s) becomes
+    σₛ(s) T(a, s), P^{-1/3} becomes P^(−1/3), \\frac{a}{b} (a)/(b), \\mathbf{n} **n**."""
+    group = r"\{((?:[^{}]|\{[^{}]*\})*)\}"
+
+    def wrapped(body: str) -> str:  # a fraction's part: in parentheses unless one word
+        return body if re.fullmatch(r"\\?\w+", body.strip()) else "(" + body + ")"
+    text = tex.replace("\\{", "\x00").replace("\\}", "\x01")
+    # Fractions, roots, fonts and accents, innermost first.
+    for _ in range(4):
+        text = re.sub(r"\\frac" + group + group,
+                      lambda m: wrapped(m.group(1)) + "/" + wrapped(m.group(2)), text)
+        text = re.sub(r"\\sqrt" + group, r"√(\1)", text)
+        text = re.sub(r"\\(?:text|mathrm|operatorname|mathit)" + group, r"\1", text)
+        text = re.sub(r"\\mathbf" + group, r"**\1**", text)
+        text = re.sub(r"\\(bar|hat|tilde|vec)\s*(?:" + group + r"|(\\[a-zA-Z]+|\w))",
+                      lambda m: (m.group(2) or m.group(3)) + "\x02" + m.group(1), text)
+    text = re.sub(r"\\sqrt\s*", "√", text)
+    text = re.sub(r"\\([,;:! ])", lambda m: "" if m.group(1) == "!" else " ", text)
+
+    def command(m: re.Match) -> str:
+        name = m.group(1)
+        if name in GREEK:
+            return GREEK[name]
+        if name in SYMBOLS:
+            return SYMBOLS[name]
+        return name if name in FUNCTIONS else m.group(0)
+    text = re.sub(r"\\([a-zA-Z]+)", command, text)
+    text = re.sub(r"(.)\x02(bar|hat|tilde|vec)", lambda m: m.group(1) + ACCENTS[m.group(2)],
+                  text)
+    text = text.replace("'", "′").replace("-", "−")
+
+    def script(m: re.Match) -> str:
+        mark, body = m.group(1), m.group(2) if m.group(2) is not None else m.group(3)
+        table = SUPERSCRIPT if mark == "^" else SUBSCRIPT
+        plain = body.replace("−", "-")
+        if all(c in table for c in plain):
+            return "".join(table[c] for c in plain)
+        return mark + (body if re.fullmatch(r"\w+", body) else "(" + body + ")")
+    text = re.sub(r"([\^_])(?:" + group + r"|([^\s{\\]))", script, text)
+    text = text.replace("{", "").replace("}", "").replace("\x00", "{").replace("\x01", "}")
+    return re.sub(r"  +", " ", text).strip()
+
+
+def plain_markdown(text: str, headings: dict[str, str]) -> str:
+    """Chapter-page Markdown without Doxygen's own markup: formulas (\\f$...\\f$, \\f[...\\f])
+    as Unicode text, \\ref as the text or heading it names with its anchor."""
+    text = re.sub(r"\\f\[(.*?)\\f\]", lambda m: "\n\n    " + plain_math(m.group(1)) + "\n\n",
+                  text, flags=re.S)
+    text = re.sub(r"\\f\$(.*?)\\f\$", lambda m: plain_math(m.group(1)), text, flags=re.S)
+
+    def ref(m: re.Match) -> str:
+        anchor, label = m.group(1), m.group(2)
+        return f"*{label or headings.get(anchor, anchor)}* (`#{anchor}`)"
+    return re.sub(r'\\ref ([\w-]+)(?: "([^"]*)")?', ref, text)
+
+
+def page_headings(root: Path) -> dict[str, str]:
+    """Anchor -> heading text over every chapter page."""
+    found: dict[str, str] = {}
+    for page in sorted((root / "chapters").glob("*.md")):
+        found.update(sections(page))
+    return found
+
+
 def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
     """The exported project's README, built from the chapter page."""
     page = page_of(root, n)
@@ -355,7 +444,8 @@ def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
            f"complete; in chapter {n} the code that *is* the chapter's idea has been taken out "
            f"and replaced by stubs. Each stub throws `rb::ExerciseNotDone`, which names the "
            f"exercise and the section of `{page_rel}` that explains it.", ""]
-    out += "\n".join(intro).strip().split("\n")
+    headings = page_headings(root)
+    out += plain_markdown("\n".join(intro).strip(), headings).split("\n")
     out += ["", "## What to implement, in this order", "",
             f"Read `{page_rel}` first. Then write each exercise between its two "
             "`// [exercise-…]` marker comments (keep the markers):", ""]
@@ -406,7 +496,7 @@ def readme(root: Path, n: int, exercises: list[dict], left: list[str]) -> str:
     if more:
         challenges = re.split(r"\n\n(?=1\. )", more.group(1), maxsplit=1)
         if len(challenges) == 2:
-            out += ["## Going further", "", challenges[1].strip(), ""]
+            out += ["## Going further", "", plain_markdown(challenges[1].strip(), headings), ""]
     return "\n".join(out)
 
 
@@ -1211,6 +1301,39 @@ def apply_tags(chapter: int, owned: dict[str, list[str]]) -> None:
             print(f"not found in the test files (tag it by hand): {key}")
 
 
+# Formulas of the chapter pages and what the README must show for them (plain_math).
+PLAIN_MATH_CASES = [
+    (r"\sigma_s(s)\,T(a, s)", "σₛ(s) T(a, s)"),
+    (r"P^{-1/3}", "P^(−1/3)"),
+    (r"\max(0, \mathbf{n}\cdot\mathbf{h})^{p'}", "max(0, **n**·**h**)ᵖ′"),
+    (r"(1 - r)\,L_{\text{Phong}}", "(1 − r) L_Phong"),
+    (r"\frac{1}{2} \le \sqrt{x}", "1/2 ≤ √(x)"),
+    (r"e^{-\sigma_c d}\,\prod_i (1 - \sigma_t(t_i)/\bar\mu_r)",
+     "e^(−σ_c d) Πᵢ (1 − σₜ(tᵢ)/μ̄ᵣ)"),
+]
+
+
+def check_readmes(_args) -> int:
+    """Every chapter's exported README (built as `export` builds it, nothing written) is plain
+    Markdown: no Doxygen command (\f$, \ref, \snippet, ...) and no LaTeX left; and
+    plain_math turns the sample formulas into the expected text."""
+    problems = [f"plain_math({tex!r}) = {plain_math(tex)!r}, expected {want!r}"
+                for tex, want in PLAIN_MATH_CASES if plain_math(tex) != want]
+    chapters = sorted({r.chapter for r in rg.find_regions(ROOT)})
+    for n in chapters:
+        text = readme(ROOT, n, exercise_info(ROOT, n), [])
+        for number, line in enumerate(text.split("\n"), start=1):
+            left = re.findall(r"\\(?:f[$\[\]{}]|[a-zA-Z]+)", line)
+            if left:
+                problems.append(f"chapter {n}'s README, line {number}: {' '.join(left)} in: "
+                                f"{line.strip()[:120]}")
+    for p in problems:
+        print(f"readmes: {p}")
+    print(f"readmes: {len(chapters)} chapters' READMEs, {len(PLAIN_MATH_CASES)} formulas, "
+          f"{len(problems)} problems")
+    return 1 if problems else 0
+
+
 def list_exercises(_args) -> int:
     """Every chapter's exercises and the tests tagged for each (read from the test files)."""
     tagged: dict[str, list[str]] = {}
@@ -1439,6 +1562,7 @@ def main() -> int:
     p.add_argument("project")
     p.set_defaults(func=solve)
     sub.add_parser("list").set_defaults(func=list_exercises)
+    sub.add_parser("readmes").set_defaults(func=check_readmes)
     p = sub.add_parser("roundtrip")
     p.add_argument("work")
     p.add_argument("--chapters", type=int, nargs="*")
