@@ -429,7 +429,8 @@ SCENARIO("Equiangular points are spread as the angle under which the light sees 
         }
 }
 
-SCENARIO("A walk's shadow rays played for by Russian roulette keep their light's mean", "[ch17]") {
+SCENARIO("A walk's shadow rays played for by Russian roulette keep their light's mean",
+         "[ch17][ex17.1]") {
     // Source: a particle at depth 0.6 of a slab ℓ = 1 (σs = 10, σa = 0.1, g = 0) sees the lamp
     // at x = 10 through the last 0.4 of the slab, T = e^(−10.1 · 0.4) = e^(−4.04), so it
     // scatters π p(1) T I = π (1 / 4π) e^(−4.04) = e^(−4.04) / 4 back along the axis (A4's
