@@ -1454,9 +1454,10 @@ def roundtrip_chapter(n: int, project: Path, build: Path, bugs: bool) -> tuple[l
                   check_project(project, build, golden=False, others=untagged,
                                 rows=set(range(k - 1, len(regions))), fail_fast=True))
         problems += step_problems(result, k, f"{n}.1-{r.name} written")
-        still = {t["name"] for t in result.get("others", {}).get("failures", [])}
-        problems += [untagged_problem(t, r.name, n) for t in sorted(untagged - still)]
-        untagged = still
+        if result["build"] == "ok":  # a build failure is reported by step_problems
+            still = {t["name"] for t in result.get("others", {}).get("failures", [])}
+            problems += [untagged_problem(t, r.name, n) for t in sorted(untagged - still)]
+            untagged = still
         if last and not passed_all(result):
             failed = result.get("others", {}).get("failures", [])
             problems.append("the solved export does not pass:\n" + table(result) + "".join(
