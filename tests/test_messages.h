@@ -1,7 +1,7 @@
 /// \file
 /// Failure messages of the statistical tests that lead somewhere: a z-test names the value it
 /// expected next to its z, and a sampler's chi-square test names the sampling lab's command
-/// that draws the same sampler (`./rt --warptest NAME`).
+/// that draws the same sampler (warptestHint).
 #pragma once
 
 #include <sstream>
