@@ -41,6 +41,7 @@
 #include "refraction/refraction.h"
 #include "scene/lua_scene.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::Colour;
@@ -777,6 +778,8 @@ SCENARIO("deep in the tree the term follows one ray, chosen so the mean is uncha
                 const double sigma =
                     setup.transparency * std::sqrt(F * (1.0 - F)) * std::abs(Lr[ch] - Lt[ch]);
                 const double z = (mean[ch] - mu[ch]) / (sigma / std::sqrt(double(N)));
+                INFO("channel " << ch << ": "
+                                << rbtest::zReport(mean[ch], mu[ch], sigma / std::sqrt(double(N))));
                 CHECK(std::abs(z) < 2.935);
             }
         }

@@ -37,6 +37,7 @@
 #include "scene/chapter_features.h"
 #include "soft_shadows/soft_shadows.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::Colour;
@@ -331,7 +332,8 @@ SCENARIO("the light samplers draw points with the density their pdfs state",
         const rb::ChiSquare test = rb::chiSquareTest(count, expected);
         THEN("every point is on the panel and the chi-square test does not reject") {
             REQUIRE(onPanel);
-            INFO("chi2 = " << test.statistic << ", p = " << test.pValue << ", level " << alpha);
+            INFO("chi2 = " << test.statistic << ", p = " << test.pValue << ", level " << alpha
+                           << "; " << rbtest::warptestHint("rectangle"));
             REQUIRE(test.pValue > alpha);
         }
     }
@@ -362,7 +364,8 @@ SCENARIO("the light samplers draw points with the density their pdfs state",
         const rb::ChiSquare test = rb::chiSquareTest(count, expected);
         THEN("every point is on the visible cap and the chi-square test does not reject") {
             REQUIRE(onVisibleCap);
-            INFO("chi2 = " << test.statistic << ", p = " << test.pValue << ", level " << alpha);
+            INFO("chi2 = " << test.statistic << ", p = " << test.pValue << ", level " << alpha
+                           << "; " << rbtest::warptestHint("ball-cone"));
             REQUIRE(test.pValue > alpha);
             REQUIRE(ball.pdfSolidAngle(centre, p) ==
                     Approx(1.0 / (2 * kPi * oneMinusCosThetaMax)).epsilon(1e-12));

@@ -43,6 +43,7 @@
 #include "lab/chi_square.h"
 #include "scene/lua_scene.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::ChiSquare;
@@ -295,7 +296,8 @@ SCENARIO("the Phong-lobe sampler draws directions with density (n+1)/(2π) cos^n
                     12);
                 THEN("the chi-square test does not reject at α = 0.01 (Šidák-corrected)") {
                     INFO("chi2 = " << r.statistic << ", dof = " << r.dof << ", p = " << r.pValue
-                                   << ", pooled cells = " << r.pooledCells);
+                                   << ", pooled cells = " << r.pooledCells << "; "
+                                   << rbtest::warptestHint("phong-lobe"));
                     CHECK(r.pValue > alpha);
                 }
             }
@@ -457,7 +459,8 @@ SCENARIO("the fuzz-sphere sampler draws directions with the density its pdf stat
                     200000, edges(top, 24, top), probability, 12);
                 THEN("the chi-square test does not reject at α = 0.01 (Šidák-corrected)") {
                     INFO("chi2 = " << r.statistic << ", dof = " << r.dof << ", p = " << r.pValue
-                                   << ", pooled cells = " << r.pooledCells);
+                                   << ", pooled cells = " << r.pooledCells << "; "
+                                   << rbtest::warptestHint("fuzz-sphere"));
                     CHECK(r.pValue > alpha);
                 }
             }
@@ -490,12 +493,13 @@ SCENARIO(
             // E[r⁴] = 3/7; by symmetry E[x] = 0 and E[x²] = E[r²]/3 = 1/5.
             for (int k = 0; k < 3; ++k) {
                 const double z = (sum[k] / count) / std::sqrt(0.2 / count);
-                INFO("coordinate " << k << ": z = " << z);
+                INFO("coordinate " << k << ": "
+                                   << rbtest::zReport(sum[k] / count, 0.0, std::sqrt(0.2 / count)));
                 CHECK(std::abs(z) < zMax);
             }
             const double varR2 = 3.0 / 7.0 - 0.36;
             const double zR2 = (sumR2 / count - 0.6) / std::sqrt(varR2 / count);
-            INFO("|b|²: z = " << zR2);
+            INFO("|b|²: " << rbtest::zReport(sumR2 / count, 0.6, std::sqrt(varR2 / count)));
             CHECK(std::abs(zR2) < zMax);
             CHECK(largest <= 1.0);
         }

@@ -33,6 +33,7 @@
 #include "dof/thin_lens.h"
 #include "lab/chi_square.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::Vec2;
@@ -384,7 +385,8 @@ SCENARIO("the concentric map and the square aperture are uniform", "[ch13][ex13.
             }
             THEN("a chi-square test over 160 equal-area cells accepts the density 1/π") {
                 const double p = diskChiSquareP(points);
-                INFO(uniformity("the concentric map's points over the unit disk", p));
+                INFO(uniformity("the concentric map's points over the unit disk", p)
+                     << "; " << rbtest::warptestHint("concentric-disk"));
                 CHECK(p > kPerTestAlpha);
             }
         }
@@ -426,7 +428,8 @@ SCENARIO("the stratified, paired lens samples are uniform over the disk",
             }
         THEN("they are uniform on the disk too (the pairing changes no density)") {
             const double p = diskChiSquareP(points);
-            INFO(uniformity("the stratified lens samples over the unit disk", p));
+            INFO(uniformity("the stratified lens samples over the unit disk", p)
+                 << "; " << rbtest::warptestHint("thin-lens"));
             CHECK(p > kPerTestAlpha);
         }
     }

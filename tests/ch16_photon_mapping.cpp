@@ -26,6 +26,7 @@
 #include "photon_map/photon_map.h"
 #include "photon_map/photon_tracer.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::Vec3;
@@ -183,7 +184,7 @@ SCENARIO("inside a closed diffuse sphere the indirect light is the geometric ser
                 for (const double t : totals) mean += t / totals.size();
                 for (const double t : totals) var += (t - mean) * (t - mean) / (totals.size() - 1);
                 const double z = (mean - 1.0) / std::sqrt(var / totals.size());
-                INFO("mean " << mean << ", standard error " << std::sqrt(var / totals.size()));
+                INFO(rbtest::zReport(mean, 1.0, std::sqrt(var / totals.size())));
                 CHECK(std::abs(z) < rbtest::zCritical(0.01));
                 CHECK(mean == Approx(1.0).epsilon(0.05));
             }
@@ -193,7 +194,8 @@ SCENARIO("inside a closed diffuse sphere the indirect light is the geometric ser
 // [furnace]
 
 // [gather-furnace]
-SCENARIO("a final gather inside a closed diffuse sphere measures the geometric series", "[ch16]") {
+SCENARIO("a final gather inside a closed diffuse sphere measures the geometric series",
+         "[ch16][ex16.1][ex16.2]") {
     GIVEN(
         "a point light of intensity 1 at the centre of a sphere of radius 1 and albedo 0.5, "
         "seen from inside, 8 passes of 4000 indirect photons and 16 gather rays a pixel") {
@@ -257,7 +259,8 @@ SCENARIO("a final gather inside a closed diffuse sphere measures the geometric s
 }
 // [gather-furnace]
 
-SCENARIO("the final gather gives the same bits on one thread and on two", "[ch16]") {
+SCENARIO("the final gather gives the same bits on one thread and on two",
+         "[ch16][ex16.1][ex16.2]") {
     GIVEN("the chapter's scene at 40 x 40 with 8 gather rays and with the direct read") {
         for (const char* gather : {"gather = 8", "gather = 0"}) {
             std::string lua = sourceFile("scenes/chapter16-photon-mapping.lua");
@@ -278,7 +281,7 @@ SCENARIO("the final gather gives the same bits on one thread and on two", "[ch16
 }
 
 SCENARIO("a gather that grows to m photons where few lie is unbiased and less speckled",
-         "[ch16]") {
+         "[ch16][ex16.2]") {
     GIVEN("N = 4000 photons of flux 1 spread uniformly over a 2 x 2 square of the plane y = 0") {
         // A disk of radius r holds λπr² = 4 photons on average (λ = N/4 per unit area), so the
         // fixed-radius gather is speckle; the wide grid's disk, 3r, holds 36, so m = 16 nearly
@@ -489,7 +492,7 @@ SCENARIO("a glass ball focuses parallel light n R / (2 (n - 1)) behind its centr
 
 // [caustic-flux]
 SCENARIO("a half-silvered ceiling's caustic is half the light of the lamp's mirror image",
-         "[ch16]") {
+         "[ch16][ex16.2]") {
     GIVEN(
         "a lamp of intensity 1 at y = 1 between a grey floor (y = 0) and a ceiling mirror "
         "(y = 2) of reflectivity 0.5, and a full mirror hidden under the floor") {
@@ -670,7 +673,7 @@ double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
 
 // [convergence]
 SCENARIO("the progressive method's bias falls as N^(alpha-1) and its variance as N^-alpha",
-         "[ch16]") {
+         "[ch16][ex16.1][ex16.2]") {
     GIVEN("a point light over a plane, a gather under it, alpha = 2/3") {
         // Source: C. Knaus and M. Zwicker, "Progressive Photon Mapping: A Probabilistic
         // Approach", ACM TOG 30(3), 2011, §4: pass i's radius r_i² ∝ i^(α−1) gives it a bias

@@ -34,6 +34,7 @@
 #include "media/participating_media.h"
 #include "media/tracking.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::Colour;
@@ -184,8 +185,7 @@ SCENARIO(
                             .r;
                     });
                     THEN("the mean lies within the z-test's bound of e^−1") {
-                        INFO("mean " << mean << " ± " << error
-                                     << ", z = " << (mean - exact) / error);
+                        INFO(rbtest::zReport(mean, exact, error) << " (e^−1)");
                         CHECK(std::abs(mean - exact) < z * error);
                     }
                 }
@@ -271,7 +271,7 @@ SCENARIO("The Henyey–Greenstein phase function is a pdf, and its sampler draws
                 }
                 THEN("a chi-square test of 20 × 8 bins in (cos θ, φ) passes at 0.001 / 4") {
                     const double p = chiSquarePValue(observed, expected);
-                    INFO("p = " << p);
+                    INFO("p = " << p << "; " << rbtest::warptestHint("hg-phase"));
                     CHECK(p > sidak(0.001, 4));
                 }
             }
@@ -419,7 +419,7 @@ SCENARIO("Equiangular points are spread as the angle under which the light sees 
                                        cdf(seg.a + double(k) / bins * (seg.b - seg.a)));
                 THEN("a chi-square test of 40 distance bins passes at 0.001") {
                     const double p = chiSquarePValue(observed, expected);
-                    INFO("p = " << p << " (./rt --warptest equiangular draws it)");
+                    INFO("p = " << p << "; " << rbtest::warptestHint("equiangular"));
                     CHECK(p > sidak(0.001, 3));
                 }
                 THEN("each point's stated density is the pdf's") {
@@ -429,7 +429,8 @@ SCENARIO("Equiangular points are spread as the angle under which the light sees 
         }
 }
 
-SCENARIO("A walk's shadow rays played for by Russian roulette keep their light's mean", "[ch17]") {
+SCENARIO("A walk's shadow rays played for by Russian roulette keep their light's mean",
+         "[ch17][ex17.1]") {
     // Source: a particle at depth 0.6 of a slab ℓ = 1 (σs = 10, σa = 0.1, g = 0) sees the lamp
     // at x = 10 through the last 0.4 of the slab, T = e^(−10.1 · 0.4) = e^(−4.04), so it
     // scatters π p(1) T I = π (1 / 4π) e^(−4.04) = e^(−4.04) / 4 back along the axis (A4's

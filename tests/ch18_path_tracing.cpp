@@ -26,6 +26,7 @@
 #include "path_tracing/bsdf.h"
 #include "path_tracing/path_tracing.h"
 #include "test_helpers.h"
+#include "test_messages.h"
 
 using Catch::Contains;
 using rb::Colour;
@@ -404,7 +405,8 @@ SCENARIO("The path tracer's samplers draw the densities MIS weighs them by",
         settings.samples = 200000;
         settings.seed = seed();
         const rb::WarpRun run = rb::runWarp(find(name), values, settings);
-        INFO(name << " " << run.caption << ": p = " << run.test.pValue);
+        INFO(name << " " << run.caption << ": p = " << run.test.pValue << "; "
+                  << rbtest::warptestHint(name));
         CHECK(run.test.pValue > rb::sidak(0.01, static_cast<int>(runs.size())));
     }
 }

@@ -1,7 +1,7 @@
 // ./rt --batch DIR: render a class's scenes, each in a child rt, and write one HTML report.
 //
 // The batch runs in four steps. It finds every Lua file under DIR and sets aside the helpers
-// (modules that never call gr.render). It runs each scene as a child process of this same
+// (modules that parse and never call gr.render). It runs each scene as a child process of this same
 // binary, in the scene's own folder, a few at a time, killing any child that outlives the
 // per-scene time limit. It reads what each child printed on stderr (errors, warnings, and the
 // --stats block, which names the era and every image written) into a SceneResult. And it
@@ -32,8 +32,10 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <lua.hpp>
 #include <map>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -199,9 +201,21 @@ std::string readFile(const fs::path& path) {
     return text.str();
 }
 
-/// True for a Lua file that is a helper, not a scene: its code never names gr.render.
+/// True when `text` compiles as a Lua chunk (it is not run).
+bool parsesAsLua(const std::string& text) {
+    lua_State* L = luaL_newstate();
+    if (L == nullptr) throw std::bad_alloc();
+    const bool parses = luaL_loadbufferx(L, text.data(), text.size(), "file", "t") == LUA_OK;
+    lua_close(L);
+    return parses;
+}
+
+/// True for a Lua file that is a helper, not a scene: it parses and its code never names
+/// gr.render. A file that does not parse is a scene that failed, whatever it holds: its child
+/// rt reports the syntax error with its line.
 bool isHelper(const fs::path& file) {
-    return stripLuaComments(readFile(file)).find("gr.render") == std::string::npos;
+    const std::string text = readFile(file);
+    return stripLuaComments(text).find("gr.render") == std::string::npos && parsesAsLua(text);
 }
 
 /// Every *.lua under `dir`, relative and '/'-separated, sorted; hidden folders and the

@@ -6,10 +6,12 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -72,11 +74,26 @@ constexpr long long kMaxComparePixels = 1LL << 26;
 /// The 8 bytes every PNG file starts with.
 constexpr char kPngSignature[] = "\x89PNG\r\n\x1a\n";
 
+/// Why a file could not be opened for reading, in words; `error` is errno after the attempt.
+std::string why_unopened(const std::filesystem::path& path, int error) {
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) return "there is no such file";
+    if (std::filesystem::is_directory(status)) return "it is a folder, not a file";
+    return std::string("it cannot be opened: ") + std::strerror(error);
+}
+
 }  // namespace
 
 Image load_png(const std::filesystem::path& path) {
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read image " + path.string() + ": cannot open it");
+    // A folder opens as a stream on Linux and fails only when read
+    if (!in || std::filesystem::is_directory(path)) {
+        const int error = errno;
+        throw std::runtime_error("cannot read image " + path.string() + ": " +
+                                 why_unopened(path, error));
+    }
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     return decode_png(bytes, path.string());
 }
@@ -113,8 +130,10 @@ Image decode_png(const std::string& bytes, const std::string& source) {
     std::unique_ptr<unsigned char, void (*)(void*)> data(
         stbi_load_from_memory(begin, size, &w, &h, &channels_in_file, 3), stbi_image_free);
     if (!data) {
+        // stb's reasons are terse ("bad zlib header", "corrupt"): say what they mean first
         const char* why = stbi_failure_reason();
-        fail(why ? why : "unknown error");
+        fail(std::string("its PNG data is damaged or of a kind rt cannot decode (stb_image: ") +
+             (why ? why : "no reason given") + ")");
     }
 
     // Convert to float in [0, 1]

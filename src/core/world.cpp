@@ -1,6 +1,7 @@
 #include "core/world.h"
 
 #include <string>
+#include <string_view>
 
 #include "core/error.h"
 #include "core/render_context.h"
@@ -44,8 +45,10 @@ std::unique_ptr<World> buildWorld(LoadedRender render, const FeatureSet& feature
         try {
             f.install(world->pipeline, scene, context);
         } catch (const InputError& e) {
-            // Point at the gr.render call whose settings were refused.
-            throw InputError(job.where.empty() ? e.what() : job.where + ": " + e.what());
+            // Point at the gr.render call whose settings were refused; a command-line option's
+            // message ("--photons: ...") is the option's, which no scene line set.
+            const bool option = std::string_view(e.what()).starts_with("--");
+            throw InputError(job.where.empty() || option ? e.what() : job.where + ": " + e.what());
         }
     }
     // A shape that only bounds a medium is no surface: chapter 17 took what it needs of it,

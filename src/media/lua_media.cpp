@@ -168,12 +168,13 @@ int grMedium(lua_State* L) {
 }
 // [lua-medium]
 
-/// A medium argument (gr.medium's result).
+/// A medium argument (gr.medium's result) at stack index `arg`, numbered as the other calls'
+/// arguments are: a method's self is argument 1.
 std::shared_ptr<const Medium> checkMedium(lua_State* L, int arg, const char* call) {
     if (auto* p = static_cast<std::shared_ptr<const Medium>*>(luaL_testudata(L, arg, kMediumType)))
         return *p;
-    throw InputError(std::string(call) + ": argument " + std::to_string(arg - 1) +
-                     " must be a medium (from gr.medium), got " + luaL_typename(L, arg));
+    throw InputError(std::string(call) + ": argument " + std::to_string(arg) +
+                     " (medium) must be a medium (from gr.medium), got " + luaL_typename(L, arg));
 }
 
 /// node:set_medium(m).

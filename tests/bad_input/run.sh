@@ -27,7 +27,8 @@
 #                 The line that must be named in the message ends with the marker "--!".
 #   cases/objs/   broken OBJ files, named by the cases that load them (resolved against the
 #                 scene's folder, since each case runs in an empty working directory).
-#   cases/cli.txt command-line cases: name | expected text | arguments.
+#   cases/cli.txt command-line cases: name | expected text | arguments. A name written
+#                 "NAME [FEATURE]" is skipped by a binary without chapter module FEATURE.
 #
 # Each case runs in its own empty folder under OUT_DIR/work/, with the scene given by its
 # absolute path; afterwards that folder must still be empty (no PNG, no *.tmp* file).
@@ -197,6 +198,16 @@ while IFS='|' read -r name expected args; do
     name=$(echo "$name" | xargs)
     [ -z "$name" ] && continue
     [[ "$name" == \#* ]] && continue
+    # "NAME [FEATURE]": the case tests that chapter module's own option; skipped by a binary
+    # without it (where the option is unknown), as a scene's needs-feature.
+    if [[ "$name" =~ ^([^ ]+)\ \[([a-z_]+)\]$ ]]; then
+        name=${BASH_REMATCH[1]}
+        if ! grep -qx "${BASH_REMATCH[2]}" <<<"$features"; then
+            echo "skip $name (this binary lacks ${BASH_REMATCH[2]}, whose option the case tests)"
+            skipped=$((skipped + 1))
+            continue
+        fi
+    fi
     expected=$(echo "$expected" | sed 's/^ *//; s/ *$//')
     args=${args//\{ok\}/$HERE/fixtures/ok.lua}
     args=${args//\{missing\}/$OUT/no-such-scene.lua}

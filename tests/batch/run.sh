@@ -146,6 +146,7 @@ card_says() {
     card "$1" | grep -qF -- "$2" && ok "$1 says '$2'" || fail "$1" "its card does not say '$2'"
 }
 card_says student06/typo.lua "unexpected symbol near '<'"
+card_says student06/unfinished.lua "unfinished.lua:9: 'end' expected (to close 'function' at line 5)"
 card_says student06/teapot.lua "cannot find 'utah-teapot.obj'"
 card_says student06/torus.lua "gr.torus is not a raybook call"
 card_says student08/scaled.lua "node:scale expects 3 arguments"

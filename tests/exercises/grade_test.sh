@@ -86,6 +86,14 @@ for e in exercises:
         expect(int(p) < int(t), f"buggy: {e} fails ({p}/{t})")
     elif e < "ex" + bug:
         expect(p == t, f"buggy: {e}, before the bug, passes ({p}/{t})")
+def counted(row):
+    return sum(int(passed(row, e)[1]) for e in exercises) + int(row["other tests"])
+expect(int(u["other tests"]) > 0 and u["other passed"] == u["other tests"],
+       f"untouched: the tests that need no exercise pass with every stub in place "
+       f"({u['other passed']}/{u['other tests']})")
+expect(s["tests passed"] == f"{counted(s)}/{counted(s)}",
+       f"solved: 'tests passed' counts every exercise's tests and the other tests "
+       f"({s['tests passed']})")
 K = len(exercises)
 expect(u["score"] == f"0/{K}" and s["score"] == f"{K}/{K}",
        f"score per exercise: untouched 0/{K}, solved {K}/{K} ({u['score']}, {s['score']})")

@@ -204,9 +204,15 @@ SCENARIO("a PNG round trip keeps every 8-bit value", "[golden]") {
         }
     }
     GIVEN("a path that holds no image") {
-        THEN("loading throws, naming the file") {
+        THEN("loading throws, naming the file and saying in words what is wrong") {
             REQUIRE_THROWS_WITH(load_png("/nonexistent/golden.png"),
-                                Contains("/nonexistent/golden.png"));
+                                Contains("/nonexistent/golden.png: there is no such file"));
+        }
+    }
+    GIVEN("a folder where an image belongs") {
+        const std::filesystem::path folder = std::filesystem::temp_directory_path();
+        THEN("loading says it is a folder, not a file") {
+            REQUIRE_THROWS_WITH(load_png(folder), Contains(": it is a folder, not a file"));
         }
     }
 }
@@ -235,6 +241,12 @@ SCENARIO("--compare reads PNG files of a size it can hold, and refuses others be
          "x.png: a chunk declares 273237057 bytes"},
         {"an image in another format stb reads (the GIF's header), whose readers stb never runs",
          std::string("GIF89a\x02\x08\xfe\xff\0\0\0", 13), "x.png: not a PNG file"},
+        {"a PNG of 4 x 3 pixels whose pixel data is not zlib data (stb says only 'bad zlib "
+         "header')",
+         std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x04\0\0\0\x03"
+                     "\x08\x02\0\0\0\0\0\0\0\0\0\0\x04IDATxyz!\0\0\0\0\0\0\0\0IEND\0\0\0\0",
+                     61),
+         "x.png: its PNG data is damaged or of a kind rt cannot decode (stb_image: "},
     };
     for (const Case& c : cases) {
         GIVEN(c.given) {

@@ -167,9 +167,11 @@ with open(table, "w") as out:
         out.write(f"| {n} | " + " | ".join(cells) + " |\n")
 PY
 
+# Point labels are plotted after every line and point, in an opaque box (set style textbox), so
+# no later series draws its dots over them.
 draw() {
     local name=$1
-    printf '%s\n' "$2" >"$data/$name.gp"
+    printf '%s\n%s\n' "set style textbox opaque noborder margins 0.5,0.5" "$2" >"$data/$name.gp"
     gnuplot -e "set terminal svg size 720,480 font 'sans,12' background rgb 'white'" \
             -e "set output '$charts/$name.svg'" "$data/$name.gp"
     gnuplot -e "set terminal pngcairo size 720,480 font 'sans,10'" \
@@ -188,14 +190,14 @@ set yrange [0.0008:0.5]
 set key top right reverse Left box opaque font ',8'
 set label sprintf('own error of the reference (estimated): %.4f', $refError) at graph 0.55, first $refError offset 0,0.7 font ',9' tc rgb 'gray40'
 plot '$data/convergence.dat' index 0 using 2:3 with linespoints pt 7 lw 2.5 lc rgb '#dd3333' title 'ratio tracking (shadows), delta tracking (camera rays)', \\
-     '' index 0 using 2:3:1 with labels offset char 0,-1 font ',8' tc rgb '#dd3333' notitle, \\
      '' index 1 using 2:3 with linespoints pt 5 lw 2 lc rgb '#e8a33d' title 'delta tracking (shadows and camera rays)', \\
      '' index 2 using 2:3 with linespoints pt 6 lc rgb '#8fb3d9' title 'ray marching, step 0.1', \\
      '' index 3 using 2:3 with linespoints pt 4 lc rgb '#4a7fbf' title 'ray marching, step 0.05', \\
      '' index 4 using 2:3 with linespoints pt 8 lc rgb '#1f4e8c' title 'ray marching, step 0.02', \\
      '' index 5 using 2:3 with linespoints pt 10 lc rgb '#0b2447' title 'ray marching, step 0.01', \\
-     '' index 5 using 2:3:1 with labels offset char 0,1 font ',8' tc rgb '#0b2447' notitle, \\
-     $refError with lines dt 2 lc rgb 'gray50' notitle
+     $refError with lines dt 2 lc rgb 'gray50' notitle, \\
+     '' index 0 using 2:3:1 with labels boxed offset char -0.8,-1 font ',8' tc rgb '#dd3333' notitle, \\
+     '' index 5 using 2:3:1 with labels boxed offset char 0.8,1 font ',8' tc rgb '#0b2447' notitle
 "
 
 # The majorant grid.
@@ -219,9 +221,9 @@ set format y '%g'
 set grid
 set key top right box opaque font ',9'
 plot '$data/majorant.dat' using 1:5 with linespoints pt 7 lw 2.5 lc rgb '#dd3333' title 'null per real collision (delta tracking)', \\
-     '' using 1:5:(sprintf('%.2f', \$5)) with labels offset char 0,1 font ',8' tc rgb '#dd3333' notitle, \\
      '' using 1:6 axes x1y2 with linespoints pt 5 lc rgb '#1f4e8c' title 'ns per free flight (right axis)', \\
-     '' using 1:8 axes x1y2 with linespoints pt 4 dt 2 lc rgb '#4a7fbf' title 'ns per ratio-tracking estimate (right axis)'
+     '' using 1:8 axes x1y2 with linespoints pt 4 dt 2 lc rgb '#4a7fbf' title 'ns per ratio-tracking estimate (right axis)', \\
+     '' using 1:5:(sprintf('%.2f', \$5)) with labels boxed offset char 0,1.1 font ',8' tc rgb '#dd3333' notitle
 "
 else
     echo "charts: $majorant not built; ch17-majorant not redrawn"
@@ -240,14 +242,14 @@ set format y '%g'
 set grid
 set key top right reverse Left box opaque font ',9'
 plot '$data/povray/povray.dat' index 1 using 3:4 with linespoints pt 5 lc rgb '#1f4e8c' title 'POV-Ray, media { intervals 1 samples N }' noenhanced, \\
-     '' index 1 using 3:4:2 with labels offset char 0,1 font ',8' tc rgb '#1f4e8c' notitle, \\
      '' index 3 using 3:4 with linespoints pt 7 lw 2 lc rgb '#dd3333' title 'raybook default, N renders at the pixel centres', \\
-     '' index 3 using 3:4:2 with labels offset char 0,-1 font ',8' tc rgb '#dd3333' notitle, \\
      '' index 4 using 3:4 with linespoints pt 9 lw 2 lc rgb '#2a9d4a' title 'raybook default, one render, N lamp points per ray', \\
-     '' index 4 using 3:4:2 with labels offset char 0,1 font ',8' tc rgb '#2a9d4a' notitle, \\
      '' index 0 using 3:4 with linespoints pt 4 lw 1 dt 2 lc rgb '#aa5555' title 'raybook default, N spp jittered (antialiased)', \\
      '' index 2 using 3:4 with linespoints pt 6 lw 2 lc rgb '#e8a33d' title 'raybook ray marching, step S, 1 spp', \\
-     '' index 2 using 3:4:2 with labels offset char 0,-1 font ',8' tc rgb '#e8a33d' notitle
+     '' index 1 using 3:4:2 with labels boxed offset char 0,1 font ',8' tc rgb '#1f4e8c' notitle, \\
+     '' index 3 using 3:4:2 with labels boxed offset char 1.2,0.9 font ',8' tc rgb '#dd3333' notitle, \\
+     '' index 4 using 3:4:2 with labels boxed offset char -1.2,-0.9 font ',8' tc rgb '#2a9d4a' notitle, \\
+     '' index 2 using 3:4:2 with labels boxed offset char -1.4,-0.8 font ',8' tc rgb '#e8a33d' notitle
 "
 else
     echo "charts: povray is not installed; ch17-povray not redrawn (make charts installs it)"
