@@ -499,6 +499,8 @@ record_row "  the same, raybook's ray marching (x)" "$(target_line media_povray_
            "(no target; n/a where no error level is shared)"
 target_row "smoke plume vs POV-Ray media, equal error (x)" "$(target_line media_povray_plume "$ch17povray")" "<=" 0.5 \
            "(issue 36; the plume's density as a df3 file, pixel centres, 1 thread)"
+target_row "  the same, N lamp points in one render (x)" "$(target_line media_povray_plume_points "$ch17povray")" "<=" 0.5 \
+           "(raybook's --media-points N against POV-Ray's samples N)"
 record_row "null per real collision, global majorant" "$(target_line null_per_real_global "$ch17speed")" "(no target; ch17_majorant, plume)"
 record_row "null per real collision, 16^3 majorant grid" "$(target_line null_per_real_16 "$ch17speed")" "(no target; the default --media-majorant)"
 say ""
