@@ -1404,3 +1404,66 @@ SCENARIO("a mesh is built once, however many nodes show it, with the layout --bv
         }
     }
 }
+
+SCENARIO("a mesh counts the work of its queries: nodes visited, packs filtered, exact tests",
+         "[ch03]") {
+    // The benchmarks (tests/perf/bvh_vs_embree --counts) report this work per ray. One triangle,
+    // (0,0,0), (1,0,0), (0,1,0), makes a wide tree of one node whose one child is a leaf of one
+    // pack, so every count is known from the construction: a query visits the root, tests the
+    // leaf's box, and filters the pack if the box is entered. A ray down the z axis through the
+    // triangle's interior point (1/4, 1/4) is a certain hit for the float test: its edge
+    // functions are 1/4, 1/4 and 1/2 (twice the areas the point makes with the edges), far above
+    // their error bound (of order 2⁻²⁰). So a closest-hit query runs the exact test once (it
+    // must measure the hit), and a shadow query never (the float test answers).
+    GIVEN("a mesh of one triangle, in every wide layout") {
+        rb::ObjData data;
+        data.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+        data.triangles.push_back({rb::ObjCorner{0}, rb::ObjCorner{1}, rb::ObjCorner{2}});
+        for (const NamedLayout& layout : wideLayoutsHere()) {
+            const rb::Mesh mesh(data, "triangle", layout.layout);
+            CAPTURE(layout.name);
+            REQUIRE(mesh.bvh().nodeCount() == 1);
+            const rb::Ray through{Vec3(0.25, 0.25, 1.0), Vec3(0, 0, -1)};
+            const rb::Ray beside{Vec3(5.0, 5.0, 1.0), Vec3(0, 0, -1)};
+            WHEN("one closest-hit ray passes beside its box, another through the triangle") {
+                rb::TraversalCounts besideCounts, throughCounts;
+                rb::ObjectHit hit;
+                const bool besideHits = mesh.intersect(beside, kInf, hit, besideCounts);
+                const bool throughHits = mesh.intersect(through, kInf, hit, throughCounts);
+                THEN(
+                    "the first visits the root and filters nothing; the second visits the root, "
+                    "filters the pack and measures the hit once") {
+                    CHECK_FALSE(besideHits);
+                    CHECK(besideCounts.nodes == 1);
+                    CHECK(besideCounts.packs == 0);
+                    CHECK(besideCounts.exactTests == 0);
+                    CHECK(throughHits);
+                    CHECK(hit.t == 1.0);
+                    CHECK(throughCounts.nodes == 1);
+                    CHECK(throughCounts.packs == 1);
+                    CHECK(throughCounts.exactTests == 1);
+                }
+            }
+            WHEN("a shadow ray passes through the triangle") {
+                rb::TraversalCounts counts;
+                THEN("the float test answers it: no exact test") {
+                    CHECK(mesh.occluded(through, 2.0, counts));
+                    CHECK(counts.nodes == 1);
+                    CHECK(counts.packs == 1);
+                    CHECK(counts.exactTests == 0);
+                }
+            }
+            WHEN("both queries are counted into one tally") {
+                rb::TraversalCounts counts;
+                rb::ObjectHit hit;
+                mesh.intersect(through, kInf, hit, counts);
+                mesh.occluded(through, 2.0, counts);
+                THEN("the tally is their sum") {
+                    CHECK(counts.nodes == 2);
+                    CHECK(counts.packs == 2);
+                    CHECK(counts.exactTests == 1);
+                }
+            }
+        }
+    }
+}

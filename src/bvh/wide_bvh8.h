@@ -89,10 +89,10 @@ struct WideRay8 {
 // [wide8-traverse]
 /// closestWide over eight-wide nodes: the same walk (children hit visited nearest first, the
 /// others waiting on the stack with their entry distance), eight boxes per node.
-template <class LeafTest>
+template <class LeafTest, class Counts>
 [[gnu::always_inline, RB_AVX2]] inline bool closestWide8(const std::vector<WideNode8>& nodes,
                                                          const Ray& ray, double& tMax,
-                                                         LeafTest&& leaf) {
+                                                         LeafTest&& leaf, Counts& counts) {
     if (nodes.empty()) return false;
     const WideRay8 r{WideRay(ray)};
     __m256 tMaxF = wideTMax8(tMax);
@@ -109,6 +109,7 @@ template <class LeafTest>
         } else {
             // A node: which children does the ray enter, and where?
             const WideNode8& n = nodes[ref];
+            counts.node();
             __m256 tEntry;
             int mask = intersectChildren8(n, r, tMaxF, tEntry);
             if (mask != 0) {
@@ -153,9 +154,10 @@ template <class LeafTest>
 
 /// anyWide over eight-wide nodes: stops at the first leaf for which leaf(first, count, tMax)
 /// returns true.
-template <class LeafTest>
+template <class LeafTest, class Counts>
 [[gnu::always_inline, RB_AVX2]] inline bool anyWide8(const std::vector<WideNode8>& nodes,
-                                                     const Ray& ray, double tMax, LeafTest&& leaf) {
+                                                     const Ray& ray, double tMax, LeafTest&& leaf,
+                                                     Counts& counts) {
     if (nodes.empty()) return false;
     const WideRay8 r{WideRay(ray)};
     const __m256 tMaxF = wideTMax8(tMax);
@@ -163,6 +165,7 @@ template <class LeafTest>
     std::uint32_t ref = 0, count = 0;  // start at the root node
     for (;;) {
         const WideNode8& n = nodes[ref];
+        counts.node();
         __m256 tEntry;
         for (int mask = intersectChildren8(n, r, tMaxF, tEntry); mask; mask &= mask - 1) {
             const int c = __builtin_ctz(mask);
@@ -178,18 +181,19 @@ template <class LeafTest>
 
 /// closestWide8 as a function of its own, compiled for AVX2, that a caller compiled for any
 /// x86-64 may call (a function cannot be inlined into one with fewer instructions). The leaf
-/// test is inlined into it.
-template <class LeafTest>
+/// test is inlined into it. `counts` counts the nodes visited (TraversalCounts), or nothing.
+template <class LeafTest, class Counts>
 [[gnu::noinline, RB_AVX2]] bool closestWide8Call(const std::vector<WideNode8>& nodes,
-                                                 const Ray& ray, double& tMax, LeafTest& leaf) {
-    return closestWide8(nodes, ray, tMax, leaf);
+                                                 const Ray& ray, double& tMax, LeafTest& leaf,
+                                                 Counts& counts) {
+    return closestWide8(nodes, ray, tMax, leaf, counts);
 }
 
 /// anyWide8 as a function of its own, compiled for AVX2 (see closestWide8Call).
-template <class LeafTest>
+template <class LeafTest, class Counts>
 [[gnu::noinline, RB_AVX2]] bool anyWide8Call(const std::vector<WideNode8>& nodes, const Ray& ray,
-                                             double tMax, LeafTest& leaf) {
-    return anyWide8(nodes, ray, tMax, leaf);
+                                             double tMax, LeafTest& leaf, Counts& counts) {
+    return anyWide8(nodes, ray, tMax, leaf, counts);
 }
 
 }  // namespace rb
