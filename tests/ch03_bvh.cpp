@@ -16,6 +16,7 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -801,7 +802,7 @@ rb::WideNodeN<N> wideNodeOf(const rb::AABB& b) {
 #if RB_HAVE_WIDE8
 [[gnu::target("avx2")]] int childrenEntered8(const rb::WideNode8& n, const rb::Ray& ray) {
     __m256 tEntry;
-    return rb::intersectChildren8(n, rb::WideRay8(rb::WideRay(ray)), rb::wideTMax8(kInf), tEntry);
+    return rb::intersectChildren8(n, rb::WideRay8(ray), rb::wideTMax8(kInf), tEntry);
 }
 #endif
 int childrenEntered8IfAvailable(const rb::WideNode8& n, const rb::Ray& ray) {
@@ -906,7 +907,8 @@ SCENARIO("the float slab test keeps a ray whose origin rounds onto a far face of
     // No widening can stretch 0; only moving the float origin outwards (away from the far face,
     // by more than rounding moved it: WideRay's err) keeps the ray. Without that move (err = 0),
     // all 2 000 of these rays miss their box (planted and run), in the four-wide test and in
-    // the eight-wide one alike (WideRay8 takes its origins from WideRay).
+    // the eight-wide one alike (WideRay8 moves its origins by the same err, computed again for
+    // itself, and this test counts its misses apart).
     GIVEN("2 000 boxes with a float face X, and rays from 10⁻¹²·|X| inside it, nearly parallel") {
         rbtest::Rng rng(2015);
         int misses = 0, misses8 = 0;
@@ -1401,6 +1403,133 @@ SCENARIO("a mesh is built once, however many nodes show it, with the layout --bv
                     CHECK(mesh->bvh().layout() == expected);
                 }
             }
+        }
+    }
+}
+
+SCENARIO("a mesh counts the work of its queries: nodes visited, packs filtered, exact tests",
+         "[ch03]") {
+    // The benchmarks (tests/perf/bvh_vs_embree --counts) report this work per ray. One triangle,
+    // (0,0,0), (1,0,0), (0,1,0), makes a wide tree of one node whose one child is a leaf of one
+    // pack, so every count is known from the construction: a query visits the root, tests the
+    // leaf's box, and filters the pack if the box is entered. A ray down the z axis through the
+    // triangle's interior point (1/4, 1/4) is a certain hit for the float test: its edge
+    // functions are 1/4, 1/4 and 1/2 (twice the areas the point makes with the edges), far above
+    // their error bound (of order 2⁻²⁰). So a closest-hit query runs the exact test once (it
+    // must measure the hit), and a shadow query never (the float test answers).
+    GIVEN("a mesh of one triangle, in every wide layout") {
+        rb::ObjData data;
+        data.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+        data.triangles.push_back({rb::ObjCorner{0}, rb::ObjCorner{1}, rb::ObjCorner{2}});
+        for (const NamedLayout& layout : wideLayoutsHere()) {
+            const rb::Mesh mesh(data, "triangle", layout.layout);
+            CAPTURE(layout.name);
+            REQUIRE(mesh.bvh().nodeCount() == 1);
+            const rb::Ray through{Vec3(0.25, 0.25, 1.0), Vec3(0, 0, -1)};
+            const rb::Ray beside{Vec3(5.0, 5.0, 1.0), Vec3(0, 0, -1)};
+            WHEN("one closest-hit ray passes beside its box, another through the triangle") {
+                rb::TraversalCounts besideCounts, throughCounts;
+                rb::ObjectHit hit;
+                const bool besideHits = mesh.intersect(beside, kInf, hit, besideCounts);
+                const bool throughHits = mesh.intersect(through, kInf, hit, throughCounts);
+                THEN(
+                    "the first visits the root and filters nothing; the second visits the root, "
+                    "filters the pack and measures the hit once") {
+                    CHECK_FALSE(besideHits);
+                    CHECK(besideCounts.nodes == 1);
+                    CHECK(besideCounts.packs == 0);
+                    CHECK(besideCounts.exactTests == 0);
+                    CHECK(throughHits);
+                    CHECK(hit.t == 1.0);
+                    CHECK(throughCounts.nodes == 1);
+                    CHECK(throughCounts.packs == 1);
+                    CHECK(throughCounts.exactTests == 1);
+                }
+            }
+            WHEN("a shadow ray passes through the triangle") {
+                rb::TraversalCounts counts;
+                THEN("the float test answers it: no exact test") {
+                    CHECK(mesh.occluded(through, 2.0, counts));
+                    CHECK(counts.nodes == 1);
+                    CHECK(counts.packs == 1);
+                    CHECK(counts.exactTests == 0);
+                }
+            }
+            WHEN("both queries are counted into one tally") {
+                rb::TraversalCounts counts;
+                rb::ObjectHit hit;
+                mesh.intersect(through, kInf, hit, counts);
+                mesh.occluded(through, 2.0, counts);
+                THEN("the tally is their sum") {
+                    CHECK(counts.nodes == 2);
+                    CHECK(counts.packs == 2);
+                    CHECK(counts.exactTests == 1);
+                }
+            }
+        }
+    }
+}
+
+#if RB_HAVE_WIDE8
+/// How many of `rays` WideRay8 prepares with other bits than WideRay (every value of every
+/// lane, and the plane offsets, twice WideRay's). Compiled for AVX2; run only after the check.
+[[gnu::target("avx2")]] int wideRay8Differences(const std::vector<rb::Ray>& rays) {
+    int differences = 0;
+    for (const rb::Ray& ray : rays) {
+        const rb::WideRay w(ray);
+        const rb::WideRay8 w8(ray);
+        bool same = true;
+        for (int axis = 0; axis < 3; ++axis) {
+            const __m128* four[] = {&w.oNear[axis], &w.oFar[axis], &w.invDNear[axis],
+                                    &w.invDFar[axis]};
+            const __m256* eight[] = {&w8.oNear[axis], &w8.oFar[axis], &w8.invDNear[axis],
+                                     &w8.invDFar[axis]};
+            for (int value = 0; value < 4; ++value) {
+                alignas(32) float a[4], b[8];
+                _mm_store_ps(a, *four[value]);
+                _mm256_store_ps(b, *eight[value]);
+                for (int lane = 0; lane < 8; ++lane)
+                    same &= std::memcmp(&a[lane % 4], &b[lane], sizeof(float)) == 0;
+            }
+            same &= w8.nearPlane[axis] == 2 * w.nearPlane[axis] &&
+                    w8.farPlane[axis] == 2 * w.farPlane[axis];
+        }
+        differences += !same;
+    }
+    return differences;
+}
+#endif
+
+SCENARIO("the eight-wide traversal prepares a ray exactly as the four-wide one does",
+         "[ch03][stability]") {
+    // WideRay8 computes the values of WideRay (origins moved outwards, reciprocals, the far
+    // ones stretched, plane offsets by the direction's signs) for x, y and z at once instead of
+    // axis by axis, with the same operations on the same numbers. So they must agree to the
+    // bit, lane by lane, or the two paths could enter different boxes. The rays: origins and
+    // directions of every size from 2⁻⁴⁰ to 2⁴⁰ and both signs, and directions with zero
+    // components of either sign (infinite reciprocals), which pick their planes by the sign
+    // of the zero.
+    GIVEN("rays of every size and sign, some with ±0 direction components") {
+        rbtest::Rng rng(41);
+        std::vector<rb::Ray> rays;
+        const auto any = [&] {
+            const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
+            return sign * std::ldexp(rng.uniform(1.0, 2.0), static_cast<int>(rng.uniform(-40, 40)));
+        };
+        for (int k = 0; k < 20000; ++k) {
+            Vec3 d(any(), any(), any());
+            if (k % 4 == 1) d[k % 3] = (k / 4) % 2 ? -0.0 : 0.0;
+            rays.push_back({Vec3(any(), any(), any()), d});
+        }
+        THEN("every value of every lane is WideRay's, bit for bit") {
+#if RB_HAVE_WIDE8
+            if (!rb::wide8Available())
+                WARN("this CPU has no AVX2: WideRay8 is not checked here");
+            else
+                CHECK(wideRay8Differences(rays) == 0);
+#else
+            WARN("this build has no eight-wide path: WideRay8 is not checked here");
+#endif
         }
     }
 }

@@ -156,23 +156,26 @@ class BVH {
     /// Closest-hit query: the traversal of the layout the tree was built with (the binary one
     /// of the lesson, four-wide inlined here, or eight-wide in an AVX2 function of its own
     /// with the leaf test inlined into it). leaf(first, count, tMax) tests a leaf's primitives
-    /// and returns true after shrinking tMax to a closer hit.
-    template <class LeafTest>
-    [[gnu::always_inline]] bool closest(const Ray& ray, double& tMax, LeafTest&& leaf) const {
+    /// and returns true after shrinking tMax to a closer hit. `counts` counts the wide nodes
+    /// visited (TraversalCounts; the binary lesson's traversal counts none), or nothing.
+    template <class LeafTest, class Counts = NoCounts>
+    [[gnu::always_inline]] bool closest(const Ray& ray, double& tMax, LeafTest&& leaf,
+                                        Counts&& counts = {}) const {
 #if RB_HAVE_WIDE8
-        if (layout_ == BVHLayout::Wide8) return closestWide8Call(wide8_, ray, tMax, leaf);
+        if (layout_ == BVHLayout::Wide8) return closestWide8Call(wide8_, ray, tMax, leaf, counts);
 #endif
-        return layout_ == BVHLayout::Wide4 ? closestWide(wide_, ray, tMax, leaf)
+        return layout_ == BVHLayout::Wide4 ? closestWide(wide_, ray, tMax, leaf, counts)
                                            : closestSimple(ray, tMax, leaf);
     }
     /// Any-hit query for shadow rays: stops at the first leaf for which leaf(first, count,
-    /// tMax) returns true.
-    template <class LeafTest>
-    [[gnu::always_inline]] bool any(const Ray& ray, double tMax, LeafTest&& leaf) const {
+    /// tMax) returns true. `counts` as for closest().
+    template <class LeafTest, class Counts = NoCounts>
+    [[gnu::always_inline]] bool any(const Ray& ray, double tMax, LeafTest&& leaf,
+                                    Counts&& counts = {}) const {
 #if RB_HAVE_WIDE8
-        if (layout_ == BVHLayout::Wide8) return anyWide8Call(wide8_, ray, tMax, leaf);
+        if (layout_ == BVHLayout::Wide8) return anyWide8Call(wide8_, ray, tMax, leaf, counts);
 #endif
-        return layout_ == BVHLayout::Wide4 ? anyWide(wide_, ray, tMax, leaf)
+        return layout_ == BVHLayout::Wide4 ? anyWide(wide_, ray, tMax, leaf, counts)
                                            : anySimple(ray, tMax, leaf);
     }
 

@@ -118,7 +118,8 @@ std::vector<Mesh::Triangle> Mesh::triangles() const {
 }
 
 // [mesh-intersect]
-bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
+template <class Counts>
+bool Mesh::intersectCounting(const Ray& ray, double tMax, ObjectHit& hit, Counts& counts) const {
     if (isDegenerateDirection(ray.d)) return false;
     const WatertightRay wray(ray);
     const FilterRay fray(wray);
@@ -135,7 +136,7 @@ bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
                 for (std::uint32_t k = 0; k < count; k += 4) {
                     const Triangle4& pack = packs_[first + k / 4];
                     const int lane = intersectTriangle4(wray, fray, pack, std::min(count - k, 4u),
-                                                        positions_, nearest, best);
+                                                        positions_, nearest, best, counts);
                     if (lane < 0) continue;
                     tClosest = best.t;
                     bestPack = &pack;
@@ -143,7 +144,8 @@ bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
                     foundHere = true;
                 }
                 return foundHere;
-            });
+            },
+        counts);
     if (!found) return false;
     const std::array<Vec3, 3> v = vertices(*bestPack, bestLane, positions_);
     hit.t = best.t;
@@ -154,7 +156,8 @@ bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
 }
 // [mesh-intersect]
 
-bool Mesh::occluded(const Ray& ray, double tMax) const {
+template <class Counts>
+bool Mesh::occludedCounting(const Ray& ray, double tMax, Counts& counts) const {
     if (isDegenerateDirection(ray.d)) return false;
     const WatertightRay wray(ray);
     const FilterRay fray(wray);
@@ -164,10 +167,29 @@ bool Mesh::occluded(const Ray& ray, double tMax) const {
         [&](std::uint32_t first, std::uint32_t count, double t) __attribute__((always_inline)) {
             for (std::uint32_t k = 0; k < count; k += 4)
                 if (occludedTriangle4(wray, fray, packs_[first + k / 4], std::min(count - k, 4u),
-                                      positions_, t, limit))
+                                      positions_, t, limit, counts))
                     return true;
             return false;
-        });
+        },
+        counts);
+}
+
+bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit) const {
+    NoCounts none;
+    return intersectCounting(ray, tMax, hit, none);
+}
+
+bool Mesh::intersect(const Ray& ray, double tMax, ObjectHit& hit, TraversalCounts& counts) const {
+    return intersectCounting(ray, tMax, hit, counts);
+}
+
+bool Mesh::occluded(const Ray& ray, double tMax) const {
+    NoCounts none;
+    return occludedCounting(ray, tMax, none);
+}
+
+bool Mesh::occluded(const Ray& ray, double tMax, TraversalCounts& counts) const {
+    return occludedCounting(ray, tMax, counts);
 }
 
 }  // namespace rb

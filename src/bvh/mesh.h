@@ -30,6 +30,10 @@ class Mesh final : public Shape {
     Mesh(const ObjData& data, const std::string& name, BVHLayout layout = bestWideLayout());
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
+    /// intersect(), adding the work it did to `counts` (for the benchmarks).
+    bool intersect(const Ray& ray, double tMax, ObjectHit& hit, TraversalCounts& counts) const;
+    /// occluded(), adding the work it did to `counts` (for the benchmarks).
+    bool occluded(const Ray& ray, double tMax, TraversalCounts& counts) const;
     AABB bounds() const override { return bounds_; }
     const Mesh* triangleMesh() const override { return this; }
 
@@ -53,6 +57,12 @@ class Mesh final : public Shape {
     const TriangleTexcoords* texcoords(std::uint32_t triangle) const;
 
   private:
+    /// intersect() and occluded(), counting their work in `counts` (NoCounts: none).
+    template <class Counts>
+    bool intersectCounting(const Ray& ray, double tMax, ObjectHit& hit, Counts& counts) const;
+    template <class Counts>
+    bool occludedCounting(const Ray& ray, double tMax, Counts& counts) const;
+
     /// Triangle packs: a BVH leaf of n triangles points at ⌈n/4⌉ consecutive packs.
     std::vector<Triangle4> packs_;
     std::vector<Vec3> positions_;  ///< The OBJ vertices, in double.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bvh/float_rounding.h"
+#include "bvh/traversal_counts.h"
 #include "bvh/triangle.h"
 
 namespace rb {
@@ -221,13 +222,18 @@ struct NearestTriangle {
 /// exact test's, to the last bit). Returns the lane of the new nearest hit, or -1. Two
 /// triangles hit at exactly the same distance (a ray through their shared edge) go to the lower
 /// OBJ index, so the answer depends neither on the tree nor on the order of the visit.
+/// `counts` counts the pack and its exact tests (TraversalCounts), or nothing.
+template <class Counts = NoCounts>
 [[gnu::always_inline]] inline int intersectTriangle4(const WatertightRay& ray, const FilterRay& r,
                                                      const Triangle4& tri, int count,
                                                      const std::vector<Vec3>& positions,
-                                                     NearestTriangle& nearest, TriangleHit& hit) {
+                                                     NearestTriangle& nearest, TriangleHit& hit,
+                                                     Counts&& counts = {}) {
     int best = -1;
+    counts.pack();
     for (int mask = filterTriangle4(r, tri, count); mask != 0; mask &= mask - 1) {
         const int lane = __builtin_ctz(mask);
+        counts.exact();
         const std::array<Vec3, 3> v = vertices(tri, lane, positions);
         // After a hit, a tie at exactly its distance is considered too.
         const double tLimit = nearest.found ? nextUp(nearest.t) : nearest.t;
@@ -244,15 +250,19 @@ struct NearestTriangle {
 
 /// Does the ray hit any of the first `count` lanes of `tri` in (0, tMax)? `limit` is
 /// FloatLimit(tMax). A certain hit of the float test answers; the exact test runs only on the
-/// lanes the float test could not decide.
+/// lanes the float test could not decide. `counts` as for intersectTriangle4().
+template <class Counts = NoCounts>
 [[gnu::always_inline]] inline bool occludedTriangle4(const WatertightRay& ray, const FilterRay& r,
                                                      const Triangle4& tri, int count,
                                                      const std::vector<Vec3>& positions,
-                                                     double tMax, const FloatLimit& limit) {
+                                                     double tMax, const FloatLimit& limit,
+                                                     Counts&& counts = {}) {
+    counts.pack();
     const Triangle4Verdict verdict = testTriangle4(r, tri, count, limit);
     if (verdict.hit != 0) return true;
     for (int mask = verdict.maybe; mask != 0; mask &= mask - 1) {
         const int lane = __builtin_ctz(mask);
+        counts.exact();
         const std::array<Vec3, 3> v = vertices(tri, lane, positions);
         TriangleHit unused;
         if (intersectTriangle(ray, v[0], v[1], v[2], tMax, unused)) return true;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bvh/float_rounding.h"
+#include "bvh/traversal_counts.h"
 #include "core/aabb.h"
 
 namespace rb {
@@ -171,10 +172,12 @@ inline __m128 wideTMax(double tMax) {
 /// Closest-hit traversal of a wide BVH: the boxes of a node's four children are tested at once;
 /// the children hit are visited nearest first (the others wait on the stack with their entry
 /// distance, and are dropped when a closer hit has been found by then). leaf(first, count,
-/// tMax) tests a leaf's primitives and returns true after shrinking tMax to a closer hit.
-template <class LeafTest>
+/// tMax) tests a leaf's primitives and returns true after shrinking tMax to a closer hit;
+/// `counts` counts the nodes visited (TraversalCounts), or nothing.
+template <class LeafTest, class Counts = NoCounts>
 [[gnu::always_inline]] inline bool closestWide(const std::vector<WideNode>& nodes, const Ray& ray,
-                                               double& tMax, LeafTest&& leaf) {
+                                               double& tMax, LeafTest&& leaf,
+                                               Counts&& counts = {}) {
     if (nodes.empty()) return false;
     const WideRay r(ray);
     __m128 tMaxF = wideTMax(tMax);
@@ -191,6 +194,7 @@ template <class LeafTest>
         } else {
             // A node: which children does the ray enter, and where?
             const WideNode& n = nodes[ref];
+            counts.node();
             __m128 tEntry;
             int mask = intersectChildren4(n, r, tMaxF, tEntry);
             if (mask != 0) {
@@ -236,9 +240,9 @@ template <class LeafTest>
 /// Any-hit traversal of a wide BVH for shadow rays: stops at the first leaf for which
 /// leaf(first, count, tMax) returns true. Order does not matter here, so the leaves among a
 /// node's children are tested at once and only nodes wait on the stack.
-template <class LeafTest>
+template <class LeafTest, class Counts = NoCounts>
 [[gnu::always_inline]] inline bool anyWide(const std::vector<WideNode>& nodes, const Ray& ray,
-                                           double tMax, LeafTest&& leaf) {
+                                           double tMax, LeafTest&& leaf, Counts&& counts = {}) {
     if (nodes.empty()) return false;
     const WideRay r(ray);
     const __m128 tMaxF = wideTMax(tMax);
@@ -246,6 +250,7 @@ template <class LeafTest>
     std::uint32_t ref = 0, count = 0;  // start at the root node
     for (;;) {
         const WideNode& n = nodes[ref];
+        counts.node();
         __m128 tEntry;
         for (int mask = intersectChildren4(n, r, tMaxF, tEntry); mask; mask &= mask - 1) {
             const int c = __builtin_ctz(mask);

@@ -1,13 +1,24 @@
 // bvh_vs_embree: raybook's mesh BVH against Embree 3 on the same OBJ and the same rays, in one
 // process. Single-ray APIs on both sides (rb::Mesh::intersect / occluded against rtcIntersect1 /
 // rtcOccluded1), medians of alternating runs, and a per-ray check that both find the same hits.
-// A benchmark for `make bench`, not a test.
+// A benchmark for `make bench`, not a test. Embree is traced twice: in its default mode (the
+// target) and in its robust mode (RTC_SCENE_FLAG_ROBUST), which, like raybook, never lets a ray
+// slip between two triangles: the like-for-like comparison.
 //
 // usage: bvh_vs_embree file.obj [--threads N] [--runs N] [--bvh LAYOUT[,LAYOUT...]]
 //        (defaults: 1 thread, 5 runs, wide: the widest layout this CPU runs). With several
-//        layouts (e.g. --bvh wide4,wide8), each run traces every layout, then Embree, in turn, so
-//        each layout is compared with the same Embree under the same load; the "target" lines
-//        are the first layout's.
+//        layouts (e.g. --bvh wide4,wide8), each run traces every layout, then Embree, then
+//        Embree robust, in turn, so each layout is compared with the same Embree under the same
+//        load; the "target" lines are the first layout's.
+//        bvh_vs_embree file.obj --profile SIDE KIND [--rays N] [--passes P]
+//        traces one ray set on one side only, for valgrind (tests/perf/bvh_callgrind.sh): SIDE
+//        is raybook, embree or embree-robust, KIND coherent, incoherent or shadow; N rays
+//        (default 65536; coherent: a √N × √N camera), P passes over them (default 2). Under
+//        callgrind (--instr-atstart=no --collect-atstart=no) the setup is not instrumented, the
+//        first passes warm the caches, and only the last is collected.
+//        bvh_vs_embree file.obj --counts [--rays N]
+//        prints raybook's work per ray on those ray sets: wide nodes visited, packs of four
+//        triangles filtered, exact tests run.
 //
 // The ray sets (tests/perf/ray_sets.h): (a) coherent camera rays, 1024x1024, 45° fov, from 1.6
 // bounding radii, looking at the box centre along -z; (b) incoherent rays from a sphere of 2
@@ -32,6 +43,13 @@
 #include "bvh/obj.h"
 #include "core/error.h"
 #include "ray_sets.h"
+
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define RB_HAVE_CALLGRIND 1
+#else
+#define RB_HAVE_CALLGRIND 0
+#endif
 
 namespace {
 
@@ -80,12 +98,14 @@ std::vector<rbperf::BenchRay> toFloatPrecision(std::vector<rbperf::BenchRay> ray
 struct EmbreeScene {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
-    /// Build from OBJ data with `threads` build threads.
-    EmbreeScene(const rb::ObjData& data, int threads) {
+    /// Build from OBJ data with `threads` build threads; `robust` sets RTC_SCENE_FLAG_ROBUST
+    /// (Embree's watertight mode: no ray slips between triangles or past a box it grazes).
+    EmbreeScene(const rb::ObjData& data, int threads, bool robust) {
         const std::string config = "threads=" + std::to_string(threads);
         device = rtcNewDevice(config.c_str());
         if (!device) throw std::runtime_error("rtcNewDevice failed");
         scene = rtcNewScene(device);
+        if (robust) rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
         rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
         RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_MEDIUM);
@@ -227,7 +247,11 @@ struct Settings {
     std::string obj;
     int threads = 1;
     int runs = 5;
-    std::vector<rb::BVHLayout> layouts;  ///< Empty: the default, rb::bestWideLayout().
+    std::vector<rb::BVHLayout> layouts;    ///< Empty: the default, rb::bestWideLayout().
+    std::string profileSide, profileKind;  ///< --profile SIDE KIND; empty: the benchmark.
+    bool counts = false;                   ///< --counts.
+    int rays = 1 << 16;                    ///< Rays per set for --profile and --counts.
+    int passes = 2;                        ///< Passes over the rays for --profile.
 };
 
 /// Parse `file.obj [--threads N] [--runs N] [--bvh L1,L2...]` (a bare number is the run count).
@@ -242,9 +266,22 @@ Settings parse(int argc, char** argv) {
                 s.layouts.push_back(rb::bvhLayoutNamed(list.substr(start, comma - start)));
                 start = comma + 1;
             }
-        } else if ((a == "--threads" || a == "--runs") && i + 1 < argc) {
+        } else if ((a == "--threads" || a == "--runs" || a == "--rays" || a == "--passes") &&
+                   i + 1 < argc) {
             const int v = std::max(1, std::atoi(argv[++i]));
-            (a == "--threads" ? s.threads : s.runs) = v;
+            (a == "--threads" ? s.threads
+             : a == "--runs"  ? s.runs
+             : a == "--rays"  ? s.rays
+                              : s.passes) = v;
+        } else if (a == "--profile" && i + 2 < argc) {
+            s.profileSide = argv[++i];
+            s.profileKind = argv[++i];
+            if (s.profileSide != "raybook" && s.profileSide != "embree" &&
+                s.profileSide != "embree-robust")
+                throw rb::InputError("--profile: no side '" + s.profileSide +
+                                     "' (raybook, embree or embree-robust)");
+        } else if (a == "--counts") {
+            s.counts = true;
         } else if (!a.empty() && std::isdigit(static_cast<unsigned char>(a[0])) && !s.obj.empty()) {
             s.runs = std::max(1, std::atoi(a.c_str()));
         } else if (s.obj.empty() && a[0] != '-') {
@@ -258,8 +295,89 @@ Settings parse(int argc, char** argv) {
     return s;
 }
 
+/// The ray set `kind` (coherent, incoherent or shadow) of --profile and --counts: the first
+/// `count` rays of the benchmark's incoherent and shadow sets, or a ⌊√count⌋² camera of the
+/// coherent set's field of view. `anyHit` says whether it is the shadow set.
+std::vector<rbperf::BenchRay> raysOfKind(const std::string& kind, const rb::AABB& box, int count,
+                                         bool& anyHit) {
+    anyHit = kind == "shadow";
+    if (kind == "coherent") {
+        const int side = static_cast<int>(std::sqrt(static_cast<double>(count)));
+        return toFloatPrecision(rbperf::cameraRays(box, side));
+    }
+    if (kind != "incoherent" && kind != "shadow")
+        throw rb::InputError("no ray kind '" + kind + "' (coherent, incoherent or shadow)");
+    auto rays = toFloatPrecision(rbperf::incoherentRays(box, count, 7));
+    return anyHit ? rays : rbperf::unbounded(std::move(rays));
+}
+
+/// --profile: trace one ray set on one side, `passes` times, collecting only the last pass
+/// under callgrind (started with --instr-atstart=no --collect-atstart=no).
+int profile(const Settings& s, const rb::ObjData& data) {
+#if RB_HAVE_CALLGRIND
+    omp_set_num_threads(1);
+    const rb::AABB box = rb::Mesh(data, s.obj, s.layouts[0]).bounds();  // the benchmark's box
+    bool anyHit = false;
+    const auto rays = raysOfKind(s.profileKind, box, s.rays, anyHit);
+    std::unique_ptr<rb::Mesh> mesh;
+    std::unique_ptr<EmbreeScene> embree;
+    if (s.profileSide == "raybook")
+        mesh = std::make_unique<rb::Mesh>(data, s.obj, s.layouts[0]);
+    else
+        embree = std::make_unique<EmbreeScene>(data, 1, s.profileSide == "embree-robust");
+    const void* target = mesh ? static_cast<const void*>(mesh.get()) : embree.get();
+    const Query query =
+        mesh ? (anyHit ? raybookAny : raybookClosest) : (anyHit ? embreeAny : embreeClosest);
+    std::vector<float> out(rays.size());
+    CALLGRIND_START_INSTRUMENTATION;
+    for (int pass = 0; pass < s.passes; ++pass) {
+        if (pass == s.passes - 1) CALLGRIND_TOGGLE_COLLECT;
+        query(target, rays, 1, out);
+        if (pass == s.passes - 1) CALLGRIND_TOGGLE_COLLECT;
+    }
+    CALLGRIND_STOP_INSTRUMENTATION;
+    const size_t hits = static_cast<size_t>(std::count_if(
+        out.begin(), out.end(), [&](float v) { return anyHit ? v != 0.0f : v != kMiss; }));
+    std::printf("profile %s%s%s %s rays %zu passes %d hits %zu\n", s.profileSide.c_str(),
+                mesh ? " " : "", mesh ? rb::bvhLayoutDescription(mesh->bvh().layout()) : "",
+                s.profileKind.c_str(), rays.size(), s.passes, hits);
+    return 0;
+#else
+    (void)s;
+    (void)data;
+    throw rb::InputError("--profile needs valgrind/callgrind.h (apt-get install valgrind)");
+#endif
+}
+
+/// --counts: raybook's work per ray on the ray sets of --profile.
+int counts(const Settings& s, const rb::ObjData& data) {
+    const rb::Mesh mesh(data, s.obj, s.layouts[0]);
+    std::printf(
+        "# raybook %s on %s, %d rays per set: per ray, wide nodes visited, packs of four "
+        "triangles through the float test, exact double tests\n",
+        rb::bvhLayoutDescription(mesh.bvh().layout()), s.obj.c_str(), s.rays);
+    for (const char* kind : {"coherent", "incoherent", "shadow"}) {
+        bool anyHit = false;
+        const auto rays = raysOfKind(kind, mesh.bounds(), s.rays, anyHit);
+        rb::TraversalCounts c;
+        for (const auto& r : rays) {
+            rb::ObjectHit h;
+            if (anyHit)
+                mesh.occluded(rb::Ray{r.o, r.d}, r.tMax, c);
+            else
+                mesh.intersect(rb::Ray{r.o, r.d}, r.tMax, h, c);
+        }
+        const double n = static_cast<double>(rays.size());
+        std::printf("counts %s nodes %.2f packs %.2f exact %.2f\n", kind, c.nodes / n, c.packs / n,
+                    c.exactTests / n);
+    }
+    return 0;
+}
+
 int run(const Settings& s) {
     const rb::ObjData data = rb::loadObj(s.obj);
+    if (!s.profileSide.empty()) return profile(s, data);
+    if (s.counts) return counts(s, data);
     // raybook's build splits big ranges as OpenMP tasks: give it the same threads as Embree.
     omp_set_num_threads(s.threads);
 
@@ -268,7 +386,7 @@ int run(const Settings& s) {
     std::vector<double> rbBuild, emBuild;
     std::vector<std::unique_ptr<rb::Mesh>> meshes(s.layouts.size());
     std::unique_ptr<rb::Mesh>& mesh = meshes[0];
-    std::unique_ptr<EmbreeScene> embree;
+    std::unique_ptr<EmbreeScene> embree, robust;
     for (int i = 0; i < s.runs; ++i) {
         mesh.reset();
         auto t0 = Clock::now();
@@ -276,9 +394,10 @@ int run(const Settings& s) {
         rbBuild.push_back(seconds(t0));
         embree.reset();
         t0 = Clock::now();
-        embree = std::make_unique<EmbreeScene>(data, s.threads);
+        embree = std::make_unique<EmbreeScene>(data, s.threads, false);
         emBuild.push_back(seconds(t0));
     }
+    robust = std::make_unique<EmbreeScene>(data, s.threads, true);
     const Spread rbB = spread(rbBuild), emB = spread(emBuild);
     for (size_t l = 1; l < s.layouts.size(); ++l)
         meshes[l] = std::make_unique<rb::Mesh>(data, s.obj, s.layouts[l]);
@@ -310,8 +429,9 @@ int run(const Settings& s) {
             static_cast<double>(m->triangleBytes() + m->bvh().nodeBytes()) / n,
             static_cast<double>(m->triangleBytes()) / n,
             static_cast<double>(m->bvh().nodeBytes()) / n);
-    std::printf("  %-36s %-24s %-24s %-8s %s\n", "rays", "raybook Mrays/s", "Embree Mrays/s",
-                "rb/Embree", "agreement (hits raybook/Embree, hit-miss mismatches)");
+    std::printf("  %-36s %-24s %-24s %-24s %-8s %-9s %s\n", "rays", "raybook Mrays/s",
+                "Embree Mrays/s", "Embree robust Mrays/s", "rb/Embree", "rb/robust",
+                "agreement (hits raybook/Embree, hit-miss mismatches; the same against robust)");
     struct Set {
         const char* name;
         const char* key;  ///< For the machine-readable "target" lines.
@@ -326,46 +446,61 @@ int run(const Settings& s) {
         const Query emQuery = set.anyHit ? embreeAny : embreeClosest;
         const size_t layouts = meshes.size();
         std::vector<std::vector<float>> outA(layouts, std::vector<float>(set.rays->size()));
-        std::vector<float> outB(set.rays->size());
+        std::vector<float> outB(set.rays->size()), outC(set.rays->size());
         std::vector<std::vector<double>> a(layouts);
-        std::vector<double> b;
+        std::vector<double> b, c;
         for (int i = 0; i < s.runs; ++i) {
             for (size_t l = 0; l < layouts; ++l)
                 a[l].push_back(rbQuery(meshes[l].get(), *set.rays, s.threads, outA[l]));
             b.push_back(emQuery(embree.get(), *set.rays, s.threads, outB));
+            c.push_back(emQuery(robust.get(), *set.rays, s.threads, outC));
         }
-        const Spread sb = spread(b);
+        const Spread sb = spread(b), sc = spread(c);
         for (size_t l = 0; l < layouts; ++l) {
             const Spread sa = spread(a[l]);
             // The first layout's ratio under the set's own name; every layout's under
             // name_layout (coherent_wide4, ...).
-            if (l == 0) ratios.emplace_back(set.key, sa.median / sb.median);
-            ratios.emplace_back(std::string(set.key) + "_" + layoutKey(meshes[l]->bvh().layout()),
-                                sa.median / sb.median);
+            // Against robust mode: name_robust (coherent_robust, ...) and name_layout_robust.
+            const std::string layoutName =
+                std::string(set.key) + "_" + layoutKey(meshes[l]->bvh().layout());
+            if (l == 0) {
+                ratios.emplace_back(set.key, sa.median / sb.median);
+                ratios.emplace_back(std::string(set.key) + "_robust", sa.median / sc.median);
+            }
+            ratios.emplace_back(layoutName, sa.median / sb.median);
+            ratios.emplace_back(layoutName + "_robust", sa.median / sc.median);
             // Every layout must find exactly the same hits.
             if (outA[l] != outA[0])
                 std::printf("  (%s and %s DISAGREE on some rays)\n",
                             rb::bvhLayoutDescription(meshes[l]->bvh().layout()),
                             rb::bvhLayoutDescription(meshes[0]->bvh().layout()));
             const Agreement g = compare(outA[l], outB, set.anyHit);
-            char agreement[160];
-            std::snprintf(agreement, sizeof agreement, "%zu/%zu, %zu mismatch%s (%.1f ppm)",
-                          g.hitsA, g.hitsB, g.hitMissMismatches,
-                          g.hitMissMismatches == 1 ? "" : "es",
-                          1e6 * g.hitMissMismatches / set.rays->size());
+            const Agreement gr = compare(outA[l], outC, set.anyHit);
+            // "hits raybook/Embree, mismatches[, distances off]; the same against robust".
+            const auto agree = [&](const Agreement& x) {
+                char text[160];
+                int n = std::snprintf(text, sizeof text, "%zu/%zu, %zu mismatch%s (%.1f ppm)",
+                                      x.hitsA, x.hitsB, x.hitMissMismatches,
+                                      x.hitMissMismatches == 1 ? "" : "es",
+                                      1e6 * x.hitMissMismatches / set.rays->size());
+                if (!set.anyHit)
+                    std::snprintf(text + n, sizeof text - n, ", %zu distance%s off by >1e-4",
+                                  x.distanceMismatches, x.distanceMismatches == 1 ? "" : "s");
+                return std::string(text);
+            };
+            const std::string agreement = agree(g) + "; robust " + agree(gr);
             const std::string name =
                 std::string(set.name) + ", " + rb::bvhLayoutDescription(meshes[l]->bvh().layout());
-            std::printf("  %-36s %-24s %-24s %-8.2f %s", name.c_str(), show(sa, 1e-6).c_str(),
-                        show(sb, 1e-6).c_str(), sa.median / sb.median, agreement);
-            if (!set.anyHit)
-                std::printf(", %zu distance%s off by >1e-4", g.distanceMismatches,
-                            g.distanceMismatches == 1 ? "" : "s");
+            std::printf("  %-36s %-24s %-24s %-24s %-8.2f %-9.2f %s", name.c_str(),
+                        show(sa, 1e-6).c_str(), show(sb, 1e-6).c_str(), show(sc, 1e-6).c_str(),
+                        sa.median / sb.median, sa.median / sc.median, agreement.c_str());
             std::printf("\n");
         }
     }
     std::printf(
         "  targets (issue 12): raybook/Embree >= 1.0 coherent, >= 0.7 incoherent, >= 0.8 shadow; "
-        "build <= 1.5x Embree's time (1 thread); <= 100 bytes/triangle\n");
+        "build <= 1.5x Embree's time (1 thread); <= 100 bytes/triangle; (issue 41) "
+        "raybook/Embree robust >= 1.0 on all three\n");
     // Machine-readable lines for bench.sh's summary: "target <name> <value>".
     for (const auto& [key, ratio] : ratios) std::printf("target %s %.2f\n", key.c_str(), ratio);
     std::printf("target build %.2f\n", rbB.median / emB.median);
