@@ -243,7 +243,8 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
         try {
             const std::string path = journalPath(work.identity.output);
             std::vector<JournalTile> kept;
-            if (work.resume && std::filesystem::exists(path))
+            const bool resumed = work.resume && std::filesystem::exists(path);
+            if (resumed)
                 kept = readJournal(path, work.identity);
             else if (work.resume)
                 std::fprintf(stderr, "rt: --resume: no journal %s; rendering the whole image\n",
@@ -263,6 +264,11 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
             journal_ = std::make_unique<JournalWriter>(path, work.identity, kept);
             for (std::size_t k = 0; k < work.tiles.size(); ++k)
                 if (!done[k]) todo.push_back(static_cast<int>(k));
+            if (resumed)
+                std::fprintf(stderr,
+                             "rt: --resume: reused %zu of %zu tiles from %s; rendering the other "
+                             "%zu\n",
+                             kept.size(), work.tiles.size(), path.c_str(), todo.size());
             // A static split deals contiguous bands of the image: scanline order.
             if (policy_ == LeasePolicy::Static)
                 std::stable_sort(todo.begin(), todo.end(), [&](int a, int b) {
