@@ -42,12 +42,6 @@ double peakMemoryMiB() {
     return usage.ru_maxrss / 1024.0;  // Linux reports KiB
 }
 
-/// Where --partial puts a stopped render: "out.png" becomes "out.partial.png".
-std::string partialPath(const std::string& output) {
-    std::filesystem::path path(output);
-    return path.replace_extension(".partial.png").string();
-}
-
 /// Where --output-dir DIR puts an image named `path`: DIR/path, or DIR/its file name when the
 /// path is absolute or climbs out of its folder with "..", so nothing lands outside DIR. The
 /// folders under DIR are made here (DIR is the caller's; --batch owns its report folder).
@@ -166,8 +160,11 @@ int run(int argc, char** argv, Cluster& cluster) {
     // From here on Ctrl-C and SIGTERM wait, pending, until the render loop looks for them.
     holdInterrupts();
     const auto runStart = Clock::now();
+    // Under MPI, Ctrl-C and SIGTERM are the cluster's: mpirun kills every rank a second after
+    // them, and the cluster's watcher speaks and exits before that (src/mpi/mpi_cluster.h).
     const auto stopRequested = [&] {
-        return pendingInterrupt() != 0 || (cl.timeLimit > 0 && since(runStart) > cl.timeLimit);
+        return (!cluster.distributed() && pendingInterrupt() != 0) ||
+               (cl.timeLimit > 0 && since(runStart) > cl.timeLimit);
     };
 
     // Start the render threads once per process, before anything else, as POV-Ray and pbrt
@@ -320,20 +317,18 @@ int run(int argc, char** argv, Cluster& cluster) {
         try {
             rendered.emplace(render(scene, pipeline, camera, world->source.job.width,
                                     world->source.job.height, settings, counters));
-        } catch (const RenderStopped&) {
+        } catch (const RenderStopped& stopped) {
             // Under --partial, keep what was rendered, under a name that says so.
-            if (partial.image) {
-                const std::string path = partialPath(output);
-                writePng(*partial.image, path);
-                std::fprintf(stderr, "rt: wrote the %zu of %zu tiles rendered so far to %s\n",
-                             partial.tilesDone, partial.tiles, path.c_str());
-            }
-            // Say why: a pending signal, else the time limit. The image itself is not written.
+            if (partial.image) writePartial(partial, output, stderr);
+            // Say why: a pending signal, else the time limit. The image itself is not written;
+            // under MPI the cluster says what the journal holds and how to resume.
             if (const int signal = pendingInterrupt()) throw interruptedBy(signal);
-            throw RenderStopped("stopped after the time limit of " +
-                                    std::to_string(static_cast<long long>(cl.timeLimit)) +
-                                    " s (--time-limit), without writing an image",
-                                124);
+            throw RenderStopped(
+                "stopped after the time limit of " +
+                    std::to_string(static_cast<long long>(cl.timeLimit)) +
+                    " s (--time-limit), without writing an image" +
+                    (cluster.distributed() ? "; " + std::string(stopped.what()) : std::string()),
+                124);
         }
         Image& image = *rendered;
         const double renderSeconds = since(t0);
