@@ -25,6 +25,7 @@
 #include "core/render.h"
 #include "core/world.h"
 #include "lab/warp_test.h"
+#include "mpi/journal.h"
 #include "scene/lua_scene.h"
 
 namespace rb {
@@ -106,11 +107,24 @@ std::string sampleMapPath(const std::string& output) {
     return path.replace_extension(".samples.png").string();
 }
 
+/// "N bytes, hash H" of the file at `path`: its content, for a render's identity.
+std::string contentOf(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx",
+                  static_cast<unsigned long long>(fnv1a64(
+                      {reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()})));
+    return std::to_string(bytes.size()) + " bytes, hash " + hash;
+}
+
 /// What makes render `job` of the command line `cl` the same render: rt's version, the scene
-/// file's bytes, the size, the seed and the sampling options. A journal (--resume) written under
-/// other values is refused, and so are ranks that disagree.
+/// file's bytes, the size, the seed, the sampling options and every file the scene read
+/// (`files`, as SceneLoadReport::files), by content. A journal (--resume) written under other
+/// values is refused, and so are ranks that disagree.
 RenderIdentity renderIdentity(const CommandLine& cl, const RenderJob& job,
-                              const std::string& output) {
+                              const std::string& output,
+                              const std::vector<std::pair<std::string, std::string>>& files) {
     std::ifstream in(cl.scene, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::string sampling =
@@ -122,14 +136,18 @@ RenderIdentity renderIdentity(const CommandLine& cl, const RenderJob& job,
         (cl.maxSpp > 0 ? ", max-spp " + std::to_string(cl.maxSpp) : "");
     for (const auto& [name, value] : cl.featureOptions) sampling += ", " + name + " " + value;
     for (const std::string& dialect : cl.dialects) sampling += ", dialect " + dialect;
-    return {output,
-            {{"version", std::string(versionNumber()) + " (" + gitCommit() + ")"},
-             {"scene", std::filesystem::path(cl.scene).filename().string() + " (" +
-                           std::to_string(bytes.size()) + " bytes, hash " +
-                           std::to_string(std::hash<std::string>{}(bytes)) + ")"},
-             {"size", std::to_string(job.width) + "x" + std::to_string(job.height)},
-             {"seed", std::to_string(cl.seed)},
-             {"sampling", sampling}}};
+    RenderIdentity identity{output,
+                            {{"version", std::string(versionNumber()) + " (" + gitCommit() + ")"},
+                             {"scene", std::filesystem::path(cl.scene).filename().string() + " (" +
+                                           std::to_string(bytes.size()) + " bytes, hash " +
+                                           std::to_string(std::hash<std::string>{}(bytes)) + ")"},
+                             {"size", std::to_string(job.width) + "x" + std::to_string(job.height)},
+                             {"seed", std::to_string(cl.seed)},
+                             {"sampling", sampling}}};
+    // Named as the scene names them, so a resume from another folder still matches.
+    for (const auto& [name, path] : files)
+        identity.fields.emplace_back("file " + name, contentOf(path));
+    return identity;
 }
 
 int run(int argc, char** argv, Cluster& cluster) {
@@ -290,7 +308,10 @@ int run(int argc, char** argv, Cluster& cluster) {
         settings.shouldStop = stopRequested;
         settings.memory = &cl.memory;
         settings.cluster = &cluster;
-        const RenderIdentity identity = renderIdentity(cl, world->source.job, output);
+        // Only MPI renders keep a journal or compare ranks: one process reads no file twice.
+        const RenderIdentity identity =
+            cluster.distributed() ? renderIdentity(cl, world->source.job, output, load.files)
+                                  : RenderIdentity{output, {}};
         settings.identity = &identity;
         settings.resume = cl.resume;
         settings.target = targetErrorFor(cl, world->source.job);
