@@ -25,6 +25,7 @@
 #include "core/render.h"
 #include "core/world.h"
 #include "lab/warp_test.h"
+#include "mpi/journal.h"
 #include "scene/lua_scene.h"
 
 namespace rb {
@@ -40,12 +41,6 @@ double peakMemoryMiB() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return usage.ru_maxrss / 1024.0;  // Linux reports KiB
-}
-
-/// Where --partial puts a stopped render: "out.png" becomes "out.partial.png".
-std::string partialPath(const std::string& output) {
-    std::filesystem::path path(output);
-    return path.replace_extension(".partial.png").string();
 }
 
 /// Where --output-dir DIR puts an image named `path`: DIR/path, or DIR/its file name when the
@@ -112,11 +107,24 @@ std::string sampleMapPath(const std::string& output) {
     return path.replace_extension(".samples.png").string();
 }
 
+/// "N bytes, hash H" of the file at `path`: its content, for a render's identity.
+std::string contentOf(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx",
+                  static_cast<unsigned long long>(fnv1a64(
+                      {reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()})));
+    return std::to_string(bytes.size()) + " bytes, hash " + hash;
+}
+
 /// What makes render `job` of the command line `cl` the same render: rt's version, the scene
-/// file's bytes, the size, the seed and the sampling options. A journal (--resume) written under
-/// other values is refused, and so are ranks that disagree.
+/// file's bytes, the size, the seed, the sampling options and every file the scene read
+/// (`files`, as SceneLoadReport::files), by content. A journal (--resume) written under other
+/// values is refused, and so are ranks that disagree.
 RenderIdentity renderIdentity(const CommandLine& cl, const RenderJob& job,
-                              const std::string& output) {
+                              const std::string& output,
+                              const std::vector<std::pair<std::string, std::string>>& files) {
     std::ifstream in(cl.scene, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::string sampling =
@@ -128,14 +136,18 @@ RenderIdentity renderIdentity(const CommandLine& cl, const RenderJob& job,
         (cl.maxSpp > 0 ? ", max-spp " + std::to_string(cl.maxSpp) : "");
     for (const auto& [name, value] : cl.featureOptions) sampling += ", " + name + " " + value;
     for (const std::string& dialect : cl.dialects) sampling += ", dialect " + dialect;
-    return {output,
-            {{"version", std::string(versionNumber()) + " (" + gitCommit() + ")"},
-             {"scene", std::filesystem::path(cl.scene).filename().string() + " (" +
-                           std::to_string(bytes.size()) + " bytes, hash " +
-                           std::to_string(std::hash<std::string>{}(bytes)) + ")"},
-             {"size", std::to_string(job.width) + "x" + std::to_string(job.height)},
-             {"seed", std::to_string(cl.seed)},
-             {"sampling", sampling}}};
+    RenderIdentity identity{output,
+                            {{"version", std::string(versionNumber()) + " (" + gitCommit() + ")"},
+                             {"scene", std::filesystem::path(cl.scene).filename().string() + " (" +
+                                           std::to_string(bytes.size()) + " bytes, hash " +
+                                           std::to_string(std::hash<std::string>{}(bytes)) + ")"},
+                             {"size", std::to_string(job.width) + "x" + std::to_string(job.height)},
+                             {"seed", std::to_string(cl.seed)},
+                             {"sampling", sampling}}};
+    // Named as the scene names them, so a resume from another folder still matches.
+    for (const auto& [name, path] : files)
+        identity.fields.emplace_back("file " + name, contentOf(path));
+    return identity;
 }
 
 int run(int argc, char** argv, Cluster& cluster) {
@@ -166,8 +178,11 @@ int run(int argc, char** argv, Cluster& cluster) {
     // From here on Ctrl-C and SIGTERM wait, pending, until the render loop looks for them.
     holdInterrupts();
     const auto runStart = Clock::now();
+    // Under MPI, Ctrl-C and SIGTERM are the cluster's: mpirun kills every rank a second after
+    // them, and the cluster's watcher speaks and exits before that (src/mpi/mpi_cluster.h).
     const auto stopRequested = [&] {
-        return pendingInterrupt() != 0 || (cl.timeLimit > 0 && since(runStart) > cl.timeLimit);
+        return (!cluster.distributed() && pendingInterrupt() != 0) ||
+               (cl.timeLimit > 0 && since(runStart) > cl.timeLimit);
     };
 
     // Start the render threads once per process, before anything else, as POV-Ray and pbrt
@@ -293,7 +308,10 @@ int run(int argc, char** argv, Cluster& cluster) {
         settings.shouldStop = stopRequested;
         settings.memory = &cl.memory;
         settings.cluster = &cluster;
-        const RenderIdentity identity = renderIdentity(cl, world->source.job, output);
+        // Only MPI renders keep a journal or compare ranks: one process reads no file twice.
+        const RenderIdentity identity =
+            cluster.distributed() ? renderIdentity(cl, world->source.job, output, load.files)
+                                  : RenderIdentity{output, {}};
         settings.identity = &identity;
         settings.resume = cl.resume;
         settings.target = targetErrorFor(cl, world->source.job);
@@ -320,20 +338,18 @@ int run(int argc, char** argv, Cluster& cluster) {
         try {
             rendered.emplace(render(scene, pipeline, camera, world->source.job.width,
                                     world->source.job.height, settings, counters));
-        } catch (const RenderStopped&) {
+        } catch (const RenderStopped& stopped) {
             // Under --partial, keep what was rendered, under a name that says so.
-            if (partial.image) {
-                const std::string path = partialPath(output);
-                writePng(*partial.image, path);
-                std::fprintf(stderr, "rt: wrote the %zu of %zu tiles rendered so far to %s\n",
-                             partial.tilesDone, partial.tiles, path.c_str());
-            }
-            // Say why: a pending signal, else the time limit. The image itself is not written.
+            if (partial.image) writePartial(partial, output, stderr);
+            // Say why: a pending signal, else the time limit. The image itself is not written;
+            // under MPI the cluster says what the journal holds and how to resume.
             if (const int signal = pendingInterrupt()) throw interruptedBy(signal);
-            throw RenderStopped("stopped after the time limit of " +
-                                    std::to_string(static_cast<long long>(cl.timeLimit)) +
-                                    " s (--time-limit), without writing an image",
-                                124);
+            throw RenderStopped(
+                "stopped after the time limit of " +
+                    std::to_string(static_cast<long long>(cl.timeLimit)) +
+                    " s (--time-limit), without writing an image" +
+                    (cluster.distributed() ? "; " + std::string(stopped.what()) : std::string()),
+                124);
         }
         Image& image = *rendered;
         const double renderSeconds = since(t0);

@@ -51,6 +51,8 @@ struct TileWork {
     /// and finished having traced `rays` rays (a remote lease's rays go to its first tile).
     std::function<void(int k)> tileStarted;
     std::function<void(int k, std::uint64_t rays)> tileFinished;
+    /// --partial: a render ended by a signal writes its finished tiles (render.h, writePartial).
+    bool partial = false;
 };
 
 /// The processes of one run. Every call below is collective: each process makes it, in the

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <mutex>
 #include <span>
 #include <string>
@@ -379,6 +380,18 @@ void startRenderThreads(int threads) {
     ++started;  // a body, so the region is not optimised away
 }
 
+std::string partialPath(const std::string& output) {
+    std::filesystem::path path(output);
+    return path.replace_extension(".partial.png").string();
+}
+
+void writePartial(const PartialImage& partial, const std::string& output, std::FILE* log) {
+    const std::string path = partialPath(output);
+    writePng(*partial.image, path);
+    std::fprintf(log, "rt: wrote the %zu of %zu tiles rendered so far to %s\n", partial.tilesDone,
+                 partial.tiles, path.c_str());
+}
+
 // [render-loop]
 Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& camera, int width,
              int height, const RenderSettings& settings, RayCounters& counters) {
@@ -415,12 +428,22 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
             renderImageTile(tiles[k], pipeline, integrator, camera, width, height, settings, plan,
                             nullptr, film, rays);
         };
+        std::atomic<std::size_t> tilesDone{0};  // in this film (rank 0: every rank's)
         const auto started = [&](int k) { progress.tileStarted(k); };
-        const auto finished = [&](int k, std::uint64_t rays) { progress.tileDone(k, rays); };
+        const auto finished = [&](int k, std::uint64_t rays) {
+            progress.tileDone(k, rays);
+            ++tilesDone;
+        };
         try {
-            settings.cluster->renderTiles({tiles, threads, settings.resume, *settings.identity,
-                                           renderOne, settings.shouldStop, started, finished},
-                                          image, counters);
+            settings.cluster->renderTiles(
+                {tiles, threads, settings.resume, *settings.identity, renderOne,
+                 settings.shouldStop, started, finished, settings.partial != nullptr},
+                image, counters);
+        } catch (const RenderStopped&) {
+            // Stopped (--time-limit): every lease came back, so the film holds what is done.
+            progress.finish();
+            if (settings.partial) *settings.partial = {std::move(image), tilesDone, tiles.size()};
+            throw;
         } catch (...) {
             progress.finish();
             throw;

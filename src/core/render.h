@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/camera.h"
@@ -22,6 +24,13 @@ struct PartialImage {
     std::size_t tilesDone = 0;   ///< Tiles rendered completely.
     std::size_t tiles = 0;       ///< Tiles in the whole image.
 };
+
+/// Where --partial puts a stopped render: "out.png" becomes "out.partial.png".
+std::string partialPath(const std::string& output);
+
+/// Write `partial`'s image (the film's linear values, clamped as a PNG) beside `output` at
+/// partialPath, and say so on `log`.
+void writePartial(const PartialImage& partial, const std::string& output, std::FILE* log);
 
 /// How to sample the image.
 struct RenderSettings {

@@ -98,7 +98,7 @@ std::shared_ptr<const DensityField> checkDensityTable(lua_State* L, int index) {
         if (lua_getfield(L, index, "grid") != LUA_TNIL)
             grid = checkString(L, lua_gettop(L), call.c_str(), "grid");
         lua_pop(L, 1);
-        const SceneBuilder& builder = sceneBuilder(L);
+        SceneBuilder& builder = sceneBuilder(L);
         const std::string path = findSceneFile(builder, name, "gr.medium");
         return loadVdbDensity(path, grid, &builder.options.memory);
     }

@@ -124,6 +124,16 @@ std::vector<JournalTile> readJournalBytes(const std::string& bytes, const std::s
         std::string found = "(missing)";
         if (std::getline(header, line) && line.rfind(name + "=", 0) == 0)
             found = line.substr(name.size() + 1);
+        // A file the scene reads: say which, and that it changed.
+        if (found != value && name.rfind("file ", 0) == 0) {
+            const std::string file = name.substr(5);
+            throw InputError("--resume: " +
+                             (found == "(missing)"
+                                  ? file + " was not read by the render that wrote " + path
+                                  : file + " changed since the journal " + path + " was written (" +
+                                        found + "; now " + value + ")") +
+                             "; render without --resume to start again");
+        }
         if (found != value)
             throw InputError(
                 "--resume: the journal " + path + " was written for another render: " + name + " " +

@@ -3,14 +3,18 @@
 #include <fcntl.h>
 #include <mpi.h>
 #include <omp.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <deque>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -122,6 +126,32 @@ std::uint64_t send(const std::vector<std::byte>& bytes, int dest, int tag) {
     return bytes.size();
 }
 
+/// True when the process `pid` (of this machine) is gone: no such process, or a zombie.
+bool processGone(int pid) {
+    if (kill(pid, 0) != 0 && errno == ESRCH) return true;
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    std::getline(stat, line);
+    const std::size_t state = line.rfind(") ");  // the state follows the command's name
+    return state != std::string::npos && state + 2 < line.size() && line[state + 2] == 'Z';
+}
+
+/// Every rank's machine and process id, on every rank.
+std::vector<RankPlace> gatherPlaces(int size) {
+    struct Place {
+        int pid;
+        char host[256];
+    };
+    Place mine{static_cast<int>(getpid()), {}};
+    gethostname(mine.host, sizeof mine.host - 1);
+    std::vector<Place> all(static_cast<std::size_t>(size));
+    MPI_Allgather(&mine, sizeof(Place), MPI_BYTE, all.data(), sizeof(Place), MPI_BYTE,
+                  MPI_COMM_WORLD);
+    std::vector<RankPlace> places;
+    for (const Place& p : all) places.push_back({p.host, p.pid});
+    return places;
+}
+
 /// A lease: its tile count, then the positions.
 std::vector<std::byte> leaseMessage(const std::vector<int>& positions) {
     std::vector<std::byte> bytes;
@@ -180,6 +210,10 @@ std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& pos
 }  // namespace
 
 MpiCluster::MpiCluster(int argc, char** argv, LeasePolicy policy) : policy_(policy) {
+    // Ctrl-C and SIGTERM wait, pending, for the watcher. They are held before MPI_Init: the
+    // threads Open MPI starts there inherit the mask, and one that did not hold them would take
+    // the signal and end the rank at once, silently.
+    holdInterrupts();
     int provided = 0;
     // Only the main thread calls MPI (between its own tiles), so FUNNELED is enough.
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
@@ -199,13 +233,94 @@ MpiCluster::MpiCluster(int argc, char** argv, LeasePolicy policy) : policy_(poli
             close(null);
         }
     }
+    places_ = gatherPlaces(size_);
+    resumeCommand_ = resumeCommand(size_, std::vector<std::string>(argv, argv + argc));
+    watcher_ = std::thread([this] { watch(); });
 }
 
 MpiCluster::~MpiCluster() {
+    {
+        std::lock_guard lock(mutex_);
+        closing_ = true;
+    }
+    wake_.notify_all();
+    watcher_.join();
     MPI_Finalize();
 }
 
+void MpiCluster::watch() {
+    std::unique_lock lock(mutex_);
+    while (!closing_) {
+        if (pendingInterrupt()) {
+            lock.unlock();
+            endJob();
+        }
+        wake_.wait_for(lock, std::chrono::milliseconds(10));
+    }
+}
+
+void MpiCluster::endJob() {
+    ending_ = true;
+    // Step 1: the ranks of this machine that are gone; the rank that speaks says why, with
+    // the journal locked, so rank 0 journals nothing after the count it gives.
+    const std::string& host = places_[static_cast<std::size_t>(rank_)].host;
+    const std::vector<int> gone = goneRanks(places_, host, processGone);
+    std::unique_lock lock(mutex_, std::defer_lock);
+    if (speaksForJob(rank_, places_, gone)) {
+        lock.lock();
+        if (rank_ == 0 && rendering_ && rendering_->partial) {
+            // --partial: the finished tiles are the journal's (the film is still being
+            // written by the render threads).
+            try {
+                const Rendering& r = *rendering_;
+                PartialImage partial{Image(r.width, r.height), 0, r.tiles.size()};
+                for (const JournalTile& t : readJournal(journalPath(r.identity.output), r.identity))
+                    if (const auto k = static_cast<std::size_t>(t.position); k < r.tiles.size()) {
+                        placeTile(*partial.image, r.tiles[k], t.pixels.data());
+                        ++partial.tilesDone;
+                    }
+                writePartial(partial, r.identity.output, errors_);
+            } catch (const std::exception& e) {
+                std::fprintf(errors_, "rt: --partial: %s\n", e.what());
+            }
+        }
+        std::fprintf(errors_, "rt: %s\n",
+                     jobEndMessage(gone, places_, host, journalNote(), resumeCommand_).c_str());
+        std::fflush(errors_);
+    }
+    // Step 2: stay until mpirun's SIGKILL (a second after its SIGTERM), so that no other rank,
+    // looking for the lost one, finds this one gone. Alone, no one else is looking.
+    if (size_ > 1) std::this_thread::sleep_for(std::chrono::seconds(5));
+    std::_Exit(1);
+}
+
+std::optional<JournalNote> MpiCluster::journalNote() const {
+    if (!rendering_) return std::nullopt;
+    JournalNote note{journalPath(rendering_->identity.output), std::nullopt,
+                     rendering_->tiles.size()};
+    if (rank_ == 0) {
+        note.tiles = journaled_;
+    } else {
+        try {  // rank 0 is gone: its journal, if it got as far as writing one, says
+            note.tiles = readJournal(note.journal, rendering_->identity).size();
+        } catch (const InputError&) {
+        }
+    }
+    return note;
+}
+
+void MpiCluster::journalTile(int position, std::span<const float> pixels) {
+    std::lock_guard lock(mutex_);
+    journal_->append(position, pixels);
+    ++journaled_;
+}
+
+void MpiCluster::parkIfEnding() const {
+    while (ending_ || pendingInterrupt()) std::this_thread::sleep_for(std::chrono::seconds(1));
+}
+
 void MpiCluster::agree(std::exception_ptr failure) {
+    parkIfEnding();
     // Step 1: the lowest rank that failed (size_: none).
     const int mine = failure ? rank_ : size_;
     int first = size_;
@@ -243,7 +358,8 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
         try {
             const std::string path = journalPath(work.identity.output);
             std::vector<JournalTile> kept;
-            if (work.resume && std::filesystem::exists(path))
+            const bool resumed = work.resume && std::filesystem::exists(path);
+            if (resumed)
                 kept = readJournal(path, work.identity);
             else if (work.resume)
                 std::fprintf(stderr, "rt: --resume: no journal %s; rendering the whole image\n",
@@ -261,8 +377,19 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
                 work.tileFinished(t.position, 0);
             }
             journal_ = std::make_unique<JournalWriter>(path, work.identity, kept);
+            {
+                std::lock_guard lock(mutex_);
+                rendering_ = Rendering{work.identity, work.tiles, image.width(), image.height(),
+                                       work.partial};
+                journaled_ = kept.size();
+            }
             for (std::size_t k = 0; k < work.tiles.size(); ++k)
                 if (!done[k]) todo.push_back(static_cast<int>(k));
+            if (resumed)
+                std::fprintf(stderr,
+                             "rt: --resume: reused %zu of %zu tiles from %s; rendering the other "
+                             "%zu\n",
+                             kept.size(), work.tiles.size(), path.c_str(), todo.size());
             // A static split deals contiguous bands of the image: scanline order.
             if (policy_ == LeasePolicy::Static)
                 std::stable_sort(todo.begin(), todo.end(), [&](int a, int b) {
@@ -272,6 +399,9 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
         } catch (...) {
             failure = std::current_exception();
         }
+    } else {
+        std::lock_guard lock(mutex_);
+        rendering_ = Rendering{work.identity, work.tiles, image.width(), image.height(), false};
     }
     std::vector<int> threads(static_cast<std::size_t>(size_));
     try {
@@ -355,8 +485,7 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
             at += static_cast<std::size_t>(tile.pixels()) * 3 * sizeof(float);
             // A journal that cannot be written fails the render, which still ends in order.
             try {
-                if (!failure)
-                    journal_->append(p, {pixels, static_cast<std::size_t>(tile.pixels()) * 3});
+                if (!failure) journalTile(p, {pixels, static_cast<std::size_t>(tile.pixels()) * 3});
             } catch (...) {
                 failure = std::current_exception();
             }
@@ -388,7 +517,7 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
         if (failure) break;
         try {
             for (int p : lease)
-                journal_->append(p, tilePixels(image, work.tiles[static_cast<std::size_t>(p)]));
+                journalTile(p, tilePixels(image, work.tiles[static_cast<std::size_t>(p)]));
         } catch (...) {
             failure = std::current_exception();
         }
@@ -402,7 +531,10 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
     work_[0].bytesSent = sentByRank0;
     if (failure) std::rethrow_exception(failure);
     if (remoteFailed) return;  // the failing worker says why at the agreement that follows
-    if (stopping) throw RenderStopped("the render was stopped before it finished", 1);
+    if (stopping) {
+        std::lock_guard lock(mutex_);
+        throw RenderStopped(journalSentence(*journalNote(), resumeCommand_), 1);
+    }
 }
 
 void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counters) {
@@ -473,12 +605,14 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
 }
 
 void MpiCluster::imageWritten() {
+    std::lock_guard lock(mutex_);
     if (journal_) journal_->discard();
     journal_.reset();
+    rendering_.reset();
 }
 
 std::vector<std::byte> MpiCluster::joinInOrder(std::span<const std::byte> mine) {
-    agree(nullptr);
+    agree(nullptr);  // parks if the job is ending
     // Step 1: every rank's size, then every rank's bytes at its offset.
     const long long size = static_cast<long long>(mine.size());
     std::vector<long long> sizes(static_cast<std::size_t>(size_));

@@ -4,11 +4,18 @@
 /// them beside the output as they arrive.
 #pragma once
 
+#include <atomic>
+#include <condition_variable>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/cluster.h"
+#include "core/render.h"
+#include "mpi/job_end.h"
 #include "mpi/journal.h"
 #include "mpi/lease_schedule.h"
 
@@ -23,6 +30,12 @@ struct RankWork {
 
 /// The ranks of MPI_COMM_WORLD. Constructed once per process (it calls MPI_Init_thread) and
 /// destroyed at exit (MPI_Finalize).
+///
+/// Ctrl-C and SIGTERM are the cluster's: Open MPI 4.1 has no fault tolerance, so when a rank
+/// dies mpirun sends SIGTERM to the others and SIGKILL a second later, and Ctrl-C to mpirun does
+/// the same. A watcher thread on every rank sees the pending signal (rt holds it from before
+/// MPI_Init), and the rank that speaks for the job (job_end.h) says which rank was lost, what the
+/// journal holds and how to resume, writes --partial's image from the journal, and exits 1.
 class MpiCluster final : public Cluster {
   public:
     /// Join the job; `policy` deals the tiles (--mpi-lease).
@@ -43,6 +56,25 @@ class MpiCluster final : public Cluster {
     std::FILE* errorStream() const override { return errors_; }
 
   private:
+    /// The image being rendered, as the watcher needs it: its journal, what --partial writes.
+    struct Rendering {
+        RenderIdentity identity;
+        std::vector<ImageTile> tiles;
+        int width = 0, height = 0;
+        bool partial = false;
+    };
+    /// The watcher thread: wait for SIGINT or SIGTERM, then end the job (endJob).
+    void watch();
+    /// Say why the job ends (if this rank speaks for it), write --partial's image, exit 1.
+    [[noreturn]] void endJob();
+    /// The journal's note for the end message; rank 0 counts its own, the others read it.
+    std::optional<JournalNote> journalNote() const;
+    /// Rank 0: journal one finished tile (under the watcher's lock, so the count it says is
+    /// what the journal holds).
+    void journalTile(int position, std::span<const float> pixels);
+    /// Wait for the watcher to end the process once a signal is pending: no collective call
+    /// may start then, since the ranks are being killed.
+    void parkIfEnding() const;
     /// Rank 0's part: lease `todo` to ranks of threads[r] threads, render its own batches,
     /// take the others' tiles back.
     void lead(const TileWork& work, Image& image, RayCounters& counters,
@@ -59,6 +91,15 @@ class MpiCluster final : public Cluster {
     std::vector<RankWork> work_;              // rank 0: each rank's share of the last image
     std::uint64_t filmBytes_ = 0, joinBytes_ = 0;
     int threads_ = 1;
+    std::vector<RankPlace> places_;  // every rank's machine and pid
+    std::string resumeCommand_;      // this run's command with --resume
+    mutable std::mutex mutex_;       // guards rendering_, journaled_ and the journal's appends
+    std::optional<Rendering> rendering_;
+    std::size_t journaled_ = 0;        // rank 0: tiles the journal holds
+    std::atomic<bool> ending_{false};  // the watcher saw a signal
+    bool closing_ = false;             // the destructor stops the watcher (under mutex_)
+    std::condition_variable wake_;
+    std::thread watcher_;
 };
 
 }  // namespace rb

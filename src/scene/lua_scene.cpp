@@ -159,14 +159,19 @@ std::vector<std::string> sceneFileCandidates(const SceneBuilder& builder, const 
     return places;
 }
 
-std::string findSceneFile(const SceneBuilder& builder, const std::string& name,
-                          const std::string& call) {
+std::string findSceneFile(SceneBuilder& builder, const std::string& name, const std::string& call) {
     const std::vector<std::string> places = sceneFileCandidates(builder, name);
     std::error_code ec;
     // The first place that holds something by that name; a folder there fails in the
-    // loader, which says so.
+    // loader, which says so. Each file found is remembered, once, for the render's identity.
     for (const std::string& place : places)
-        if (fs::exists(place, ec)) return place;
+        if (fs::exists(place, ec)) {
+            const std::pair<std::string, std::string> file{name, place};
+            if (std::find(builder.filesRead.begin(), builder.filesRead.end(), file) ==
+                builder.filesRead.end())
+                builder.filesRead.push_back(file);
+            return place;
+        }
     // Name every place, absolute, so the student sees where the file should go.
     std::string looked;
     for (const std::string& place : places)
@@ -348,6 +353,7 @@ std::vector<LoadedRender> loadScene(const std::string& path, const FeatureSet& f
         report->warnings = withCounts(builder->warningKinds, builder->warningCounts);
         report->ignored = withCounts(builder->ignoredKinds, builder->ignoredCounts);
         report->unreadable = withCounts(builder->unreadableKinds, builder->unreadableCounts);
+        report->files = builder->filesRead;
     }
     return std::move(builder->renders);
 }

@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -52,6 +53,9 @@ struct SceneLoadReport {
     std::vector<std::string> ignored;   ///< --lenient: unknown names ignored, with counts.
     /// --lenient: known calls whose arguments could not be read, with counts.
     std::vector<std::string> unreadable;
+    /// Every file the scene read (meshes, textures, density files, required Lua files): the
+    /// name it gave and the path where it was found, in the order first read.
+    std::vector<std::pair<std::string, std::string>> files;
 };
 
 /// What the Lua calls build while the script runs. One per load; reached through the
@@ -62,7 +66,9 @@ struct SceneBuilder {
     SceneLoadOptions options;
     std::vector<LoadedRender> renders;
     std::map<std::string, std::shared_ptr<const Shape>> meshCache;  ///< One load per file.
-    std::shared_ptr<const Shape> unitSphere, unitCube;              ///< Shared by all nodes.
+    /// Every file findSceneFile found: the name the scene gave, the path (SceneLoadReport).
+    std::vector<std::pair<std::string, std::string>> filesRead;
+    std::shared_ptr<const Shape> unitSphere, unitCube;  ///< Shared by all nodes.
     /// For nodes without a material: grey, no highlight. Shared with each render.
     std::shared_ptr<const Material> defaultMaterial =
         std::make_shared<const Material>(Material{Colour(0.5), Colour(0.0), 1.0, {}, {}});
@@ -281,10 +287,9 @@ void chargeInstructions(lua_State* L, size_t count, const char* call);
 /// The places a file named by the scene is looked for, in order: the working directory, the
 /// scene's folder, then each --assets folder (only the name itself when it is absolute).
 std::vector<std::string> sceneFileCandidates(const SceneBuilder& builder, const std::string& name);
-/// The first of sceneFileCandidates() that exists. Throws InputError naming `call` and
-/// every place searched when none is.
-std::string findSceneFile(const SceneBuilder& builder, const std::string& name,
-                          const std::string& call);
+/// The first of sceneFileCandidates() that exists, remembered in builder.filesRead. Throws
+/// InputError naming `call` and every place searched when none is.
+std::string findSceneFile(SceneBuilder& builder, const std::string& name, const std::string& call);
 
 /// Push a light userdata (gr.light's result).
 void pushLight(lua_State* L, const PointLight& light);

@@ -170,3 +170,32 @@ SCENARIO("a journal written for another render is refused, naming what differs",
         }
     }
 }
+
+SCENARIO("a journal refuses a render whose scene reads a changed or another file", "[mpi]") {
+    GIVEN("a journal of a scene that read a texture, by size and hash") {
+        const fs::path dir = scratch("files");
+        const std::string path = rb::journalPath((dir / "out.png").string());
+        rb::RenderIdentity written = identity("out.png");
+        written.fields.emplace_back("file assets/wood.png", "627 bytes, hash 00ff");
+        {
+            rb::JournalWriter journal(path, written);
+            journal.append(0, awkwardPixels(12, 0.0f));
+        }
+        THEN("the same file's render reads it back") {
+            CHECK(rb::readJournal(path, written).size() == 1);
+        }
+        THEN("a changed texture is refused, naming the file and both contents") {
+            rb::RenderIdentity changed = written;
+            changed.fields.back().second = "640 bytes, hash 0a0a";
+            CHECK_THROWS_WITH(rb::readJournal(path, changed),
+                              Catch::Contains("assets/wood.png changed since the journal") &&
+                                  Catch::Contains("627 bytes, hash 00ff; now 640 bytes"));
+        }
+        THEN("a scene that reads another file is refused, naming it") {
+            rb::RenderIdentity other = written;
+            other.fields.back().first = "file assets/plume.nvdb";
+            CHECK_THROWS_WITH(rb::readJournal(path, other),
+                              Catch::Contains("assets/plume.nvdb was not read by the render"));
+        }
+    }
+}
