@@ -145,6 +145,12 @@ std::string writeDensity(const rbtest::TempDir& dir, const std::string& name,
     return path;
 }
 
+/// The test grid under `map`, written to a file in `dir` and read back as a scene reads it.
+std::shared_ptr<const rb::DensityField> loadTestGrid(const rbtest::TempDir& dir,
+                                                     const nanovdb::Map& map) {
+    return rb::loadVdbDensity(writeDensity(dir, "grid.nvdb", map), "density", nullptr);
+}
+
 #endif
 
 }  // namespace
@@ -155,8 +161,7 @@ SCENARIO("a density grid written with NanoVDB reads back voxel for voxel", "[ch1
     REQUIRE(rb::vdbSupported());
     GIVEN("a 4 × 4 × 4 block of voxels and one lone voxel, 0.5 apart, voxel 0 at (1, 2, 3)") {
         rbtest::TempDir dir;
-        const auto field =
-            rb::loadVdbDensity(writeDensity(dir, "grid.nvdb", plainMap()), "density", nullptr);
+        const auto field = loadTestGrid(dir, plainMap());
         WHEN("the density is read at voxel centres") {
             THEN("it is each voxel's value exactly") {
                 for (int i = 0; i < 4; ++i) {
@@ -224,8 +229,7 @@ SCENARIO("a density grid's optical depth along a line is integrated exactly, cel
     REQUIRE(rb::vdbSupported());
     GIVEN("the 4 × 4 × 4 block and the lone voxel, 0.5 apart") {
         rbtest::TempDir dir;
-        const auto field =
-            rb::loadVdbDensity(writeDensity(dir, "grid.nvdb", plainMap()), "density", nullptr);
+        const auto field = loadTestGrid(dir, plainMap());
         REQUIRE(field->integrable());
         WHEN("a line parallel to x passes the lone voxel at offsets (dy, dz) in voxels") {
             THEN("its depth is the tent's integral, value · (1 − |dy|)(1 − |dz|) · 0.5 / |d|") {
@@ -246,8 +250,7 @@ SCENARIO("a density grid's optical depth along a line is integrated exactly, cel
     }
     GIVEN("the same grid turned 30° about y and 20° about x") {
         rbtest::TempDir dir;
-        const auto field =
-            rb::loadVdbDensity(writeDensity(dir, "grid.nvdb", rotatedMap()), "density", nullptr);
+        const auto field = loadTestGrid(dir, rotatedMap());
         WHEN("random lines cross the block, read at random points along them") {
             THEN("every reading is at()'s integral by a fine composite Simpson rule") {
                 // Source: the exact integral of a piecewise cubic; composite Simpson with 40,000
@@ -294,8 +297,7 @@ SCENARIO("through a density grid, ratio tracking estimates the exact transmittan
         rb::Medium m;
         m.sigmaA = rb::Colour(0.5);
         m.sigmaS = rb::Colour(2.0);
-        m.density =
-            rb::loadVdbDensity(writeDensity(dir, "grid.nvdb", rotatedMap()), "density", nullptr);
+        m.density = loadTestGrid(dir, rotatedMap());
         const rb::TrackedMedium tracked(m, rb::Mat4(1.0), m.density->bounds(), 8);
         const Vec3 centre = m.density->bounds().lo + Vec3(1.2, 1.0, 1.4);
         const rb::Ray ray{centre - Vec3(1.5, 0.9, 0.6), Vec3(1.0, 0.6, 0.4)};
@@ -334,9 +336,7 @@ SCENARIO("maxIn bounds the density over any box, and is exact around a lone voxe
             rotated ? "the test grid turned 30° about y and 20° about x" : "the test grid";
         GIVEN(grid) {
             rbtest::TempDir dir;
-            const auto field = rb::loadVdbDensity(
-                writeDensity(dir, "grid.nvdb", rotated ? rotatedMap() : plainMap()), "density",
-                nullptr);
+            const auto field = loadTestGrid(dir, rotated ? rotatedMap() : plainMap());
             WHEN("random boxes, from a sliver to the whole grid, are probed at random points") {
                 THEN("maxIn is never below the density at any of them") {
                     rbtest::Rng rng(3);
