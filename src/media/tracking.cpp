@@ -95,7 +95,8 @@ FreeFlight sampleFreeFlight(const TrackedMedium& m, const Ray& ray, double t0, d
             // and null collisions; for colour, each is chosen by its largest weighted channel.
             const double density = m.medium.density->at(local.o + t * local.d);
             const Colour muA = sigmaA * density, muS = sigmaS * density;
-            const Colour muN = Colour(mu) - muA - muS;
+            // A bound leaves no channel a negative null coefficient, whatever the rounding.
+            const Colour muN = glm::max(Colour(mu) - muA - muS, Colour(0.0));
             const double pA = maxChannel(muA * flight.weight);
             const double pS = maxChannel(muS * flight.weight);
             const double pN = maxChannel(muN * flight.weight);
@@ -239,7 +240,7 @@ Colour estimateTransmittance(const TrackedMedium& m, const Ray& ray, double t0, 
         if (!(mu > 0.0)) return true;
         for (double t = nextCollision(a, mu, sampler); t < b; t = nextCollision(t, mu, sampler)) {
             const double density = m.medium.density->at(local.o + t * local.d);
-            const Colour muN = Colour(mu) - sigmaT * density;
+            const Colour muN = glm::max(Colour(mu) - sigmaT * density, Colour(0.0));
             if (method == TransmittanceMethod::Ratio) {
                 // [exercise-ratio-tracking]
                 // Exercise 17.3, ratio tracking: read ch17-tracking.
