@@ -626,6 +626,11 @@ lua_State* lua_newstate(lua_Alloc, void*) {
     return L;
 }
 
+/// A state with the default allocator (rt --batch parses files with one).
+lua_State* luaL_newstate() {
+    return lua_newstate(nullptr, nullptr);
+}
+
 void lua_close(lua_State* L) {
     // __gc, newest first, as Lua finalises at close.
     for (auto it = L->allUserdata.rbegin(); it != L->allUserdata.rend(); ++it) {
