@@ -165,7 +165,6 @@ Colour ratioTrackReading(const TrackedMedium& m, const Ray& ray, double t0, doub
 }
 // [ratio-track-reading]
 
-// [transmittance]
 // [exact-transmittance]
 bool exactOn(const TrackedMedium& m, TransmittanceMethod method) {
     return method == TransmittanceMethod::Exact && !m.medium.homogeneous() &&
@@ -207,6 +206,7 @@ Colour exactTransmittance(const TrackedMedium& m, const Ray& ray, double t0, dou
 }
 // [exact-transmittance]
 
+// [transmittance]
 Colour estimateTransmittance(const TrackedMedium& m, const Ray& ray, double t0, double t1,
                              TransmittanceMethod method, double step, Sampler& sampler) {
     const double length = glm::length(ray.d);
