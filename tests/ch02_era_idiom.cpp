@@ -79,7 +79,7 @@ SCENARIO("the era line is printed only when the scene renders pre-2015 or the or
     }
 }
 
-SCENARIO("a scene without signs is placed by its transform idiom", "[ch02][era]") {
+SCENARIO("a scene without signs is placed by its transform idiom", "[ch02][era][ex2.2]") {
     const std::string head = "root = gr.node('root')\n";
     GIVEN("a box written translate, then scale (the pre-2015 way), and a sphere only moved") {
         std::vector<rb::LoadedRender> renders;

@@ -493,7 +493,8 @@ rb::Triangle4 packOf(const std::array<std::array<Vec3, 3>, 4>& triangles) {
 }
 
 // [ch03-float-triangle-bound]
-SCENARIO("the float triangle test decides only what the exact test decides", "[ch03][stability]") {
+SCENARIO("the float triangle test decides only what the exact test decides",
+         "[ch03][ex3.1][stability]") {
     // testTriangle4 runs the watertight test in float with an error bound on every value it
     // computes (triangle4.h derives them), and decides a lane only when the bound leaves no
     // doubt: a certain miss is dropped, and a shadow ray stops at a certain hit without the
@@ -1408,7 +1409,7 @@ SCENARIO("a mesh is built once, however many nodes show it, with the layout --bv
 }
 
 SCENARIO("a mesh counts the work of its queries: nodes visited, packs filtered, exact tests",
-         "[ch03]") {
+         "[ch03][ex3.1]") {
     // The benchmarks (tests/perf/bvh_vs_embree --counts) report this work per ray. One triangle,
     // (0,0,0), (1,0,0), (0,1,0), makes a wide tree of one node whose one child is a leaf of one
     // pack, so every count is known from the construction: a query visits the root, tests the
