@@ -252,7 +252,8 @@ SCENARIO("a planar height ramp tilts the normal by atan(slope)", "[ch11][ex11.1]
 // [ch11-ramp]
 
 // [ch11-lit-ramp]
-SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11][ex11.1][ex11.2][ex11.3]") {
+SCENARIO("a floor with a ramp bump is lit as a tilted floor would be",
+         "[ch11][ex11.1][ex11.2][ex11.3]") {
     GIVEN(
         "a white floor stretched 10 × in x and z, a ramp of slope s in object space, a light "
         "straight above the point the camera sees") {
@@ -289,8 +290,7 @@ SCENARIO("a floor with a ramp bump is lit as a tilted floor would be", "[ch11][e
 // [ch11-lit-ramp]
 
 // [ch11-zero]
-SCENARIO("a zero bump leaves every normal unchanged",
-         "[ch11][ex11.1][ex11.2][ex11.3][ex11.4]") {
+SCENARIO("a zero bump leaves every normal unchanged", "[ch11][ex11.1][ex11.2][ex11.3][ex11.4]") {
     GIVEN("a stretched, turned sphere with ripples and with noise") {
         rb::Sphere sphere;
         rbtest::Rng rng(11);
@@ -390,7 +390,8 @@ SCENARIO("the bumped normal never faces away from the viewer, at any strength",
 // [ch11-facing]
 
 // [ch11-gradient]
-SCENARIO("the numerical gradient converges to the exact one as the step squared", "[ch11][ex11.2][ex11.4]") {
+SCENARIO("the numerical gradient converges to the exact one as the step squared",
+         "[ch11][ex11.2][ex11.4]") {
     GIVEN("ripples of wavelength 0.2 around two centres, and 100 points on the plane y = 0.5") {
         const double lambda = 0.2;
         const rb::RippleHeight ripples({Vec3(0.1, 0.0, 0.2), Vec3(-0.6, 0.1, 0.4)}, lambda);
@@ -573,7 +574,8 @@ SCENARIO("a strength that would flip the normal is held on the viewer's side",
 // [ch11-stability]
 
 // [ch11-lua]
-SCENARIO("material:set_bump reads raybook's bump table, and refuses what it cannot use", "[ch11][ex11.4]") {
+SCENARIO("material:set_bump reads raybook's bump table, and refuses what it cannot use",
+         "[ch11][ex11.4]") {
     GIVEN("materials with each pattern") {
         const auto bumpOf = [](const std::string& call) {
             const rb::Material m = rbtest::materialOf(
@@ -689,7 +691,8 @@ SCENARIO("without bumps, or with the feature off, the chapter changes nothing",
 // [ch11-costs-nothing]
 
 // [ch11-height-map]
-SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)", "[ch11][ex11.1][ex11.3]") {
+SCENARIO("a height map of a linear ramp tilts the normal by atan(slope)",
+         "[ch11][ex11.1][ex11.3]") {
     rbtest::TempDir dir;
     const std::string ramp = writeRampPng(dir);
     const auto heights = std::make_shared<rb::HeightImage>(*rb::loadTextureImage(ramp));
@@ -920,7 +923,8 @@ SCENARIO("a height map steep enough to flip the normal is held on the viewer's s
 // [ch11-height-map-stability]
 
 // [ch11-stage]
-SCENARIO("a bump is a shading-normal stage that runs after chapter 9's smooth normals", "[ch11]") {
+SCENARIO("a bump is a shading-normal stage that runs after chapter 9's smooth normals",
+         "[ch11][ex11.4]") {
     GIVEN("the icosphere as a rippled smooth mesh") {
         const std::string asset = rbtest::sourceDir() + "/scenes/assets/icosphere80.obj";
         auto scene = [&](const std::string& call, const std::string& bump) {

@@ -90,7 +90,8 @@ CrossingList worldCrossings(const rb::Instance& instance, const Ray& ray) {
 }  // namespace
 
 // [ch14-interval-tests]
-SCENARIO("the interval algebra: union, intersection and difference of [1,4] and [2,6]", "[ch14][ex14.1][ex14.3][ex14.4]") {
+SCENARIO("the interval algebra: union, intersection and difference of [1,4] and [2,6]",
+         "[ch14][ex14.1][ex14.3][ex14.4]") {
     GIVEN("A = [1, 4] and B = [2, 6] along a line") {
         const CrossingList a = intervals({{1, 4}}, &kMatA), b = intervals({{2, 6}}, &kMatB);
         // Source: hand computation on the number line.
@@ -234,7 +235,8 @@ SCENARIO("a kept crossing's normal turns round where operand and result differ i
 }
 // [ch14-orient-alone]
 
-SCENARIO("a hollow shell, a difference of two transformed spheres, has four crossings", "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
+SCENARIO("a hollow shell, a difference of two transformed spheres, has four crossings",
+         "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     GIVEN("gr.difference of a sphere of radius 2 and one of radius 1, both centred at (1, 0, 0)") {
         auto world = csgWorld(R"(
             local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
@@ -398,7 +400,8 @@ SCENARIO("crossings agree with point membership on random lines through random C
 }
 // [ch14-membership-test]
 
-SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes", "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
+SCENARIO("operands may be groups, transformed hierarchies and other CSG nodes",
+         "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     GIVEN("a group of two unit cubes side by side, minus a nested CSG node") {
         // Operand A: cubes [0,1]³ and [1,2]×[0,1]² in a group moved by (−1, 0, 0).
         // Operand B: (sphere r=0.5 at (0.5, 0.5, 0.5)) ∪ (sphere r=0.5 at (−0.5, 0.5, 0.5)),
@@ -492,7 +495,8 @@ SCENARIO("each operand keeps its own material, and inherits the node's when it h
 }
 
 // [ch14-lens-test]
-SCENARIO("a lens made as the intersection of two spheres focuses like a thick lens", "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
+SCENARIO("a lens made as the intersection of two spheres focuses like a thick lens",
+         "[ch14][ex14.1][ex14.2][ex14.3][ex14.4]") {
     GIVEN("two unit spheres centred at z = ±0.8 intersected, of glass n = 1.5") {
         // The lens is biconvex with R₁ = 1, R₂ = −1 and thickness d = 2·(1 − 0.8) = 0.4.
         auto world = csgWorld(R"(
@@ -589,7 +593,8 @@ SCENARIO("shadows see the result as one solid", "[ch14][ex14.1][ex14.2][ex14.3][
     }
 }
 
-SCENARIO("a ray that starts inside an operand finds the result's surface", "[ch14][stability][ex14.1][ex14.2][ex14.3][ex14.4]") {
+SCENARIO("a ray that starts inside an operand finds the result's surface",
+         "[ch14][stability][ex14.1][ex14.2][ex14.3][ex14.4]") {
     auto world = csgWorld(R"(
         local outer = gr.sphere('outer'); outer:scale(2, 2, 2)
         local shell = gr.difference(outer, gr.sphere('inner'))
@@ -777,7 +782,7 @@ SCENARIO(
 // [ch14-tie-test]
 
 SCENARIO("CSG renders without NaN, negative or infinite pixels, even through glass",
-         "[ch14][stability]") {
+         "[ch14][ex14.4][stability]") {
     auto world = csgWorld(R"(
         local glass = gr.material{kd = {0.1, 0.1, 0.1}, ks = {0.5, 0.5, 0.5}, shininess = 50,
                                   transparency = 0.9, ior = 1.5}
