@@ -924,7 +924,7 @@ SCENARIO("a height map steep enough to flip the normal is held on the viewer's s
 
 // [ch11-stage]
 SCENARIO("a bump is a shading-normal stage that runs after chapter 9's smooth normals",
-         "[ch11][ex11.4]") {
+         "[ch11][ex11.1][ex11.2][ex11.4]") {
     GIVEN("the icosphere as a rippled smooth mesh") {
         const std::string asset = rbtest::sourceDir() + "/scenes/assets/icosphere80.obj";
         auto scene = [&](const std::string& call, const std::string& bump) {

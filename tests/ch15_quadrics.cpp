@@ -752,7 +752,7 @@ SCENARIO("seed 001's calls mark a scene as written for the pre-2015 framework", 
 
 // [ch15-csg-operand]
 SCENARIO("a cylinder or cone operand of a CSG node gives its exact crossings, not marched ones",
-         "[ch15][ex15.4]") {
+         "[ch15][ex15.1][ex15.2][ex15.3][ex15.4]") {
     GIVEN("capped, open and frustum quadrics as CSG leaves under random transforms") {
         const Cylinder capped, tube(false);
         const Cone cone, frustum(0.4), openFrustum(0.3, false);
@@ -800,7 +800,7 @@ SCENARIO("a cylinder or cone operand of a CSG node gives its exact crossings, no
 
 // [ch15-csg-off]
 SCENARIO("with quadrics switched off, a quadric operand of a CSG node is left out, with a warning",
-         "[ch15][ex15.3]") {
+         "[ch15][ex15.1][ex15.3]") {
     GIVEN("a sphere minus a cylinder, and the same sphere minus an empty node") {
         auto scene = [](const std::string& b) {
             return "root = gr.node('root')\n"
@@ -832,7 +832,8 @@ SCENARIO("with quadrics switched off, a quadric operand of a CSG node is left ou
 // [ch15-csg-off]
 
 // [ch15-uv]
-SCENARIO("a texture wraps round a cylinder or cone by the shape's own (u, v)", "[ch15][ex15.4]") {
+SCENARIO("a texture wraps round a cylinder or cone by the shape's own (u, v)",
+         "[ch15][ex15.1][ex15.2][ex15.3][ex15.4]") {
     GIVEN("capped cylinders, cones and frustums under random transforms, hit by random rays") {
         const Cylinder cylinder;
         const Cone cone, frustum(0.4);
