@@ -134,6 +134,17 @@ CommandLine parseCommandLine(int argc, const char* const* argv, const std::vecto
             if (cl.mpiLease != "dynamic" && cl.mpiLease != "static")
                 throw InputError("--mpi-lease: expected dynamic or static, got '" + cl.mpiLease +
                                  "'");
+        } else if (name == "--tile-timeout") {
+            // Seconds, up to a day: a lease that takes longer is no lease a render should wait for.
+            const std::string text = next();
+            double v = 0;
+            const auto [end, ec] = rb::fromChars(text.data(), text.data() + text.size(), v);
+            if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v) ||
+                v <= 0 || v > 86400)
+                throw InputError(
+                    "--tile-timeout: expected seconds above 0 and at most 86400 (a day), got '" +
+                    text + "'");
+            cl.tileTimeout = v;
         } else if (name == "--target-error")
             cl.targetError = parsePositive(name, next());
         else if (name == "--min-spp")
@@ -246,6 +257,10 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
                      is written; on any number of ranks
   --mpi-lease MODE   dynamic (small batches to whichever rank asks) or static (one
                      band per rank, to compare balance)       default: dynamic
+  --tile-timeout S   stop the MPI job when a rank has returned nothing for S seconds
+                     while it holds a lease of tiles (a hung rank): rank 0 names the
+                     rank and its tiles, keeps the journal and says how to resume
+                                   default: 50x the slowest lease so far, at least 300 s
   --stats            print ray counts, phase times, Mrays/s and memory
   --quiet            no progress bar or messages
   --legacy           treat the scene as pre-2015 (transforms post-multiply)

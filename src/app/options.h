@@ -42,6 +42,7 @@ struct CommandLine {
     bool mpi = false;        ///< --mpi: join an MPI job even when mpirun did not start rt.
     bool resume = false;     ///< --resume: finish each image from the journal beside it.
     std::string mpiLease = "dynamic";  ///< --mpi-lease dynamic|static: how tiles are dealt.
+    double tileTimeout = 0;  ///< --tile-timeout S: a lease overdue by S s stops the job (0: auto).
     double targetError = 0;  ///< --target-error E (0: the scene's target_error, else off).
     int minSpp = 0;          ///< --min-spp N: the target's floor (0: the scene's, else 16).
     int maxSpp = 0;          ///< --max-spp N: the target's ceiling (0: the scene's, else 4096).

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <utility>
 
 #include "core/error.h"
@@ -58,6 +60,22 @@ bool hasOption(int argc, char** argv, const std::string& option) {
     for (int i = 1; i < argc; ++i)
         if (argv[i] == option || std::string(argv[i]).rfind(option + "=", 0) == 0) return true;
     return false;
+}
+
+/// The seconds --tile-timeout gives, or 0 (automatic) without it. A bad value is read as 0
+/// here: parseCommandLine refuses it, on every rank, before any tile is leased.
+double tileTimeout(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const char* text = arg == "--tile-timeout" && i + 1 < argc ? argv[i + 1]
+                           : arg.rfind("--tile-timeout=", 0) == 0  ? argv[i] + 15
+                                                                   : nullptr;
+        if (!text) continue;
+        char* end = nullptr;
+        const double seconds = std::strtod(text, &end);
+        return *end == '\0' && std::isfinite(seconds) && seconds > 0 ? seconds : 0.0;
+    }
+    return 0.0;
 }
 
 /// The value of --mpi-lease (dynamic, the default, or static).
@@ -168,6 +186,61 @@ std::vector<int> leasePositions(const std::vector<std::byte>& bytes) {
     return positions;
 }
 
+/// "tile 17 (pixels 32..47 x 16..31)": a tile by its position in render order and its film
+/// rectangle (first..last column x first..last row).
+std::string tileName(int position, const ImageTile& tile) {
+    return "tile " + std::to_string(position) + " (pixels " + std::to_string(tile.x0) + ".." +
+           std::to_string(tile.x1 - 1) + " x " + std::to_string(tile.y0) + ".." +
+           std::to_string(tile.y1 - 1) + ")";
+}
+
+/// "rank 2 (host h, pid 123)".
+std::string rankName(int rank, const RankPlace& place) {
+    return "rank " + std::to_string(rank) + " (host " + place.host + ", pid " +
+           std::to_string(place.pid) + ")";
+}
+
+/// A tile's failure, said with the rank and the tile it happened on.
+struct TileFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// The exception being handled, thrown by tile `position` on `rank`, as a TileFailure naming
+/// both. A stopped render (RenderStopped) is no tile's fault: it passes unchanged, with its exit
+/// code (exitCodeOf); any other failure ends rt with 1, as before.
+std::exception_ptr tileFailure(int rank, const RankPlace& place, int position,
+                               const ImageTile& tile) {
+    std::string what;
+    try {
+        throw;
+    } catch (const RenderStopped&) {
+        return std::current_exception();
+    } catch (const std::bad_alloc&) {
+        what = "out of memory";
+    } catch (const std::exception& e) {
+        what = e.what();
+    } catch (...) {
+        what = "an exception of unknown type";
+    }
+    return std::make_exception_ptr(TileFailure(rankName(rank, place) + " failed on " +
+                                               tileName(position, tile) + ": " + what));
+}
+
+#ifdef RB_FAULT_INJECTION
+/// Test builds only (rt_fault, tests/mpi/fault.py): RB_FAULT=rank:R,tile:K,kind:throw|hang makes
+/// tile K throw, or never finish, when rank R renders it. rt itself has no such hook.
+void injectFault(int rank, int position) {
+    static const std::string fault = std::getenv("RB_FAULT") ? std::getenv("RB_FAULT") : "";
+    if (fault.empty() ||
+        fault.rfind("rank:" + std::to_string(rank) + ",tile:" + std::to_string(position) + ",kind:",
+                    0) != 0)
+        return;
+    if (fault.ends_with(":hang"))
+        for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+    throw std::runtime_error("injected fault (RB_FAULT=" + fault + ")");
+}
+#endif
+
 /// What a worker sends after its last lease.
 struct WorkerReport {
     RayCounters rays;
@@ -181,12 +254,13 @@ struct BatchClock {
     double total() const { return std::accumulate(seconds.begin(), seconds.end(), 0.0); }
 };
 
-/// Render the tiles at `positions` in parallel; returns the first failure (null: none). The
-/// main thread (OpenMP thread 0, the one MPI may be called from) runs `between` after each of
-/// its tiles.
+/// Render the tiles at `positions` in parallel on `rank`; returns the first failure (null: none),
+/// naming the rank and the tile. The main thread (OpenMP thread 0, the one MPI may be called
+/// from) runs `between` after each of its tiles.
 std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& positions,
                                Image& image, std::vector<RayCounters>& rays, BatchClock& clock,
-                               const std::function<void()>& between) {
+                               const std::function<void()>& between, int rank,
+                               const RankPlace& place) {
     std::exception_ptr failure;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(work.threads)
     for (int i = 0; i < static_cast<int>(positions.size()); ++i) {
@@ -195,13 +269,18 @@ std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& pos
             const double start = threadCpuSeconds();
             const std::uint64_t raysBefore = rays[thread].total();
             work.tileStarted(positions[i]);
+#ifdef RB_FAULT_INJECTION
+            injectFault(rank, positions[i]);
+#endif
             work.renderTile(positions[i], image, rays[thread]);
             work.tileFinished(positions[i], rays[thread].total() - raysBefore);
             clock.seconds[thread] += threadCpuSeconds() - start;
             if (thread == 0 && between) between();
         } catch (...) {
+            std::exception_ptr e = tileFailure(rank, place, positions[i],
+                                               work.tiles[static_cast<std::size_t>(positions[i])]);
 #pragma omp critical(rb_mpi_failure)
-            if (!failure) failure = std::current_exception();
+            if (!failure) failure = e;
         }
     }
     return failure;
@@ -209,7 +288,8 @@ std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& pos
 
 }  // namespace
 
-MpiCluster::MpiCluster(int argc, char** argv, LeasePolicy policy) : policy_(policy) {
+MpiCluster::MpiCluster(int argc, char** argv, LeasePolicy policy)
+    : policy_(policy), tileTimeout_(tileTimeout(argc, argv)) {
     // Ctrl-C and SIGTERM wait, pending, for the watcher. They are held before MPI_Init: the
     // threads Open MPI starts there inherit the mask, and one that did not hold them would take
     // the signal and end the rank at once, silently.
@@ -266,24 +346,10 @@ void MpiCluster::endJob() {
     const std::string& host = places_[static_cast<std::size_t>(rank_)].host;
     const std::vector<int> gone = goneRanks(places_, host, processGone);
     std::unique_lock lock(mutex_, std::defer_lock);
-    if (speaksForJob(rank_, places_, gone)) {
+    // Rank 0 stays silent when it ended the job itself, having said why (endForHang).
+    if (!said_ && speaksForJob(rank_, places_, gone)) {
         lock.lock();
-        if (rank_ == 0 && rendering_ && rendering_->partial) {
-            // --partial: the finished tiles are the journal's (the film is still being
-            // written by the render threads).
-            try {
-                const Rendering& r = *rendering_;
-                PartialImage partial{Image(r.width, r.height), 0, r.tiles.size()};
-                for (const JournalTile& t : readJournal(journalPath(r.identity.output), r.identity))
-                    if (const auto k = static_cast<std::size_t>(t.position); k < r.tiles.size()) {
-                        placeTile(*partial.image, r.tiles[k], t.pixels.data());
-                        ++partial.tilesDone;
-                    }
-                writePartial(partial, r.identity.output, errors_);
-            } catch (const std::exception& e) {
-                std::fprintf(errors_, "rt: --partial: %s\n", e.what());
-            }
-        }
+        if (rank_ == 0) writeJournalPartial();
         std::fprintf(errors_, "rt: %s\n",
                      jobEndMessage(gone, places_, host, journalNote(), resumeCommand_).c_str());
         std::fflush(errors_);
@@ -292,6 +358,66 @@ void MpiCluster::endJob() {
     // looking for the lost one, finds this one gone. Alone, no one else is looking.
     if (size_ > 1) std::this_thread::sleep_for(std::chrono::seconds(5));
     std::_Exit(1);
+}
+
+void MpiCluster::writeJournalPartial() {
+    if (!rendering_ || !rendering_->partial) return;
+    // The finished tiles are the journal's (the film may still be written by render threads).
+    try {
+        const Rendering& r = *rendering_;
+        PartialImage partial{Image(r.width, r.height), 0, r.tiles.size()};
+        for (const JournalTile& t : readJournal(journalPath(r.identity.output), r.identity))
+            if (const auto k = static_cast<std::size_t>(t.position); k < r.tiles.size()) {
+                placeTile(*partial.image, r.tiles[k], t.pixels.data());
+                ++partial.tilesDone;
+            }
+        writePartial(partial, r.identity.output, errors_);
+    } catch (const std::exception& e) {
+        std::fprintf(errors_, "rt: --partial: %s\n", e.what());
+    }
+}
+
+void MpiCluster::endForHang(const std::vector<HungRank>& hung, double limit, const TileWork& work) {
+    // Step 1: name each hung rank and the tiles of the lease it is rendering; every tile the
+    // other ranks returned is in the journal already, flushed to the kernel.
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g s", limit);
+    const std::string why = tileTimeout_ > 0 ? " (--tile-timeout)"
+                                             : " (50 times the slowest lease so far, at least "
+                                               "300 s; --tile-timeout sets it)";
+    std::string text;
+    for (const HungRank& h : hung) {
+        std::string tiles;
+        for (int p : h.tiles)
+            tiles +=
+                (tiles.empty() ? "" : ", ") + tileName(p, work.tiles[static_cast<std::size_t>(p)]);
+        text += (text.empty() ? "" : "; ") +
+                rankName(h.rank, places_[static_cast<std::size_t>(h.rank)]) +
+                " has returned nothing for over " + seconds + why + " while rendering " + tiles;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        said_ = true;
+        writeJournalPartial();
+        std::fprintf(errors_, "rt: %s, so the job stops without writing an image; %s\n",
+                     text.c_str(), journalSentence(*journalNote(), resumeCommand_).c_str());
+        std::fflush(errors_);
+    }
+    // Step 2: end the job. A hung rank can take part in no collective call, MPI_Finalize
+    // included. One on this machine gets SIGTERM: its watcher exits (silently: rank 0 is alive),
+    // and mpirun then ends the others, this rank's watcher exiting 1 without a second word.
+    // A hung rank elsewhere is out of reach: MPI_Abort ends the job (a rank of this machine
+    // may then add that rank 0 was lost).
+    bool remote = false;
+    for (const HungRank& h : hung) {
+        const RankPlace& place = places_[static_cast<std::size_t>(h.rank)];
+        if (place.host == places_[0].host)
+            kill(place.pid, SIGTERM);
+        else
+            remote = true;
+    }
+    if (remote) MPI_Abort(MPI_COMM_WORLD, 1);
+    for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
 }
 
 std::optional<JournalNote> MpiCluster::journalNote() const {
@@ -427,35 +553,72 @@ void MpiCluster::renderTiles(const TileWork& work, Image& image, RayCounters& co
     } catch (...) {
         failure = std::current_exception();
     }
-    // Step 3: every rank learns whether another failed before rank 0 writes anything.
-    agree(failure);
+    // Step 3: every rank learns whether another failed before rank 0 writes anything. A tile's
+    // failure also says what the journal holds (rank 0 journals nothing after this agreement)
+    // and how to render the rest.
+    try {
+        agree(failure);
+    } catch (AgreedFailure& agreed) {
+        try {
+            if (agreed.cause) std::rethrow_exception(agreed.cause);
+        } catch (const TileFailure& e) {
+            std::lock_guard lock(mutex_);
+            agreed.cause = std::make_exception_ptr(TileFailure(
+                std::string(e.what()) + "; " + journalSentence(*journalNote(), resumeCommand_)));
+        } catch (...) {
+        }
+        throw;
+    }
 }
 
 void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
                       const std::vector<int>& todo, const std::vector<int>& threads) {
+    using Clock = std::chrono::steady_clock;
     LeaseSchedule schedule(todo, threads, policy_);
     work_.assign(static_cast<std::size_t>(size_), RankWork{});
     std::exception_ptr failure;
     bool stopping = false, remoteFailed = false;
-    int workersLeft = size_ - 1;
     std::uint64_t sentByRank0 = 0;
+    // A hung rank: each worker's leases not yet returned (oldest first: it renders them in
+    // order), and when rank 0 last heard from it; the longest any lease took so far.
+    std::vector<std::deque<std::vector<int>>> held(static_cast<std::size_t>(size_));
+    std::vector<Clock::time_point> heard(static_cast<std::size_t>(size_), Clock::now());
+    double slowest = 0.0;
+    std::vector<bool> reported(static_cast<std::size_t>(size_), false);
+    std::vector<HungRank> hung;
+    auto isHung = [&](int w) {
+        return std::any_of(hung.begin(), hung.end(),
+                           [&](const HungRank& h) { return h.rank == w; });
+    };
 
     // What a worker gets next: a lease, or none once the render is ending.
     auto nextLease = [&](int worker) {
-        const bool ending = stopping || failure || remoteFailed;
+        const bool ending = stopping || failure || remoteFailed || !hung.empty();
         std::vector<int> lease =
             ending ? std::vector<int>{} : schedule.next(worker, kMaxLeasePerThread);
         for (int p : lease) work.tileStarted(p);
+        auto& queue = held[static_cast<std::size_t>(worker)];
+        if (queue.empty()) heard[static_cast<std::size_t>(worker)] = Clock::now();
+        if (!lease.empty()) queue.push_back(lease);
         return lease;
     };
-    // Take in one message: a finished lease (answered with the next) or a worker's report.
-    auto serveOne = [&](bool wait) {
+    // The seconds a worker may go without returning a lease it holds. --tile-timeout gives
+    // them; otherwise none until some lease has finished (nothing to compare with yet), then 50
+    // times the slowest lease so far, and at least 300 s. A lease is a few tiles per thread:
+    // one 50 times slower than any other is no uneven scene but a hang, while a loaded or
+    // oversubscribed machine can pause a rank for seconds, so a short render, whose leases
+    // take milliseconds, must not stop for that; and a slow scene's leases raise the limit.
+    auto overdueAfter = [&] {
+        if (tileTimeout_ > 0) return tileTimeout_;
+        return slowest > 0 ? std::max(300.0, 50 * slowest) : HUGE_VAL;
+    };
+    // Take in one message, if one is waiting: a finished lease (answered with the next) or a
+    // worker's report.
+    auto serveOne = [&] {
         MPI_Status status;
-        if (!wait) {
-            int waiting = 0;
-            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
-            if (!waiting) return false;
-        }
+        int waiting = 0;
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
+        if (!waiting) return false;
         const std::vector<std::byte> bytes = receive(MPI_ANY_SOURCE, MPI_ANY_TAG, &status);
         const int worker = status.MPI_SOURCE;
         RankWork& share = work_[static_cast<std::size_t>(worker)];
@@ -466,9 +629,17 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
             counters.merge(report.rays);
             share.tiles = report.work.tiles;
             share.busySeconds = report.work.busySeconds;
-            --workersLeft;
+            reported[static_cast<std::size_t>(worker)] = true;
             return true;
         }
+        // The lease it rendered is its oldest; the next (if any) started as it sent this one.
+        const Clock::time_point now = Clock::now();
+        auto& queue = held[static_cast<std::size_t>(worker)];
+        if (!queue.empty()) queue.pop_front();
+        slowest = std::max(
+            slowest,
+            std::chrono::duration<double>(now - heard[static_cast<std::size_t>(worker)]).count());
+        heard[static_cast<std::size_t>(worker)] = now;
         // A finished lease: [failed][count][rays][positions][pixels of each tile, in order].
         const std::int32_t failed = take<std::int32_t>(bytes, at);
         const std::int32_t count = take<std::int32_t>(bytes, at);
@@ -493,8 +664,17 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
         sentByRank0 += send(leaseMessage(nextLease(worker)), worker, kTagLease);
         return true;
     };
+    // Take in every waiting message, then look for workers that are overdue: only then, since
+    // a result rank 0 had not yet taken in (busy with its own tile) is no sign of a hang.
     auto serveWaiting = [&] {
-        while (serveOne(false)) {
+        while (serveOne()) {
+        }
+        const Clock::time_point now = Clock::now();
+        for (int w = 1; w < size_; ++w) {
+            const auto k = static_cast<std::size_t>(w);
+            if (!held[k].empty() && !isHung(w) &&
+                std::chrono::duration<double>(now - heard[k]).count() > overdueAfter())
+                hung.push_back({w, held[k].front()});
         }
     };
 
@@ -505,15 +685,19 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
     // Step 2: rank 0 renders batches of its own, answering the workers between its tiles.
     std::vector<RayCounters> rays(static_cast<std::size_t>(work.threads));
     BatchClock clock(work.threads);
-    while (!failure && !remoteFailed) {
+    const RankPlace& place = places_[0];
+    while (!failure && !remoteFailed && hung.empty()) {
         if (work.shouldStop && work.shouldStop()) {
             stopping = true;
             break;
         }
         const std::vector<int> lease = schedule.next(0, kMaxLeasePerThread);
         if (lease.empty()) break;
-        if (std::exception_ptr e = renderBatch(work, lease, image, rays, clock, serveWaiting))
+        const Clock::time_point start = Clock::now();
+        if (std::exception_ptr e =
+                renderBatch(work, lease, image, rays, clock, serveWaiting, 0, place))
             failure = e;
+        slowest = std::max(slowest, std::chrono::duration<double>(Clock::now() - start).count());
         if (failure) break;
         try {
             for (int p : lease)
@@ -524,8 +708,19 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
         work_[0].tiles += lease.size();
         serveWaiting();
     }
-    // Step 3: answer the workers until each has sent its report.
-    while (workersLeft > 0) serveOne(true);
+    // Step 3: answer the workers until each has sent its report, or is hung. Polled, not a
+    // blocking probe, so that a hung worker is seen.
+    auto waitingFor = [&] {
+        for (int w = 1; w < size_; ++w)
+            if (!reported[static_cast<std::size_t>(w)] && !isHung(w)) return true;
+        return false;
+    };
+    while (waitingFor()) {
+        const std::size_t before = hung.size();
+        serveWaiting();
+        if (hung.size() == before) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    if (!hung.empty()) endForHang(hung, overdueAfter(), work);
     for (const RayCounters& r : rays) counters.merge(r);
     work_[0].busySeconds = clock.total();
     work_[0].bytesSent = sentByRank0;
@@ -565,7 +760,9 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
             return total;
         };
         const std::uint64_t raysBefore = raysSoFar();
-        if (!failure) failure = renderBatch(work, lease, image, rays, clock, nullptr);
+        if (!failure)
+            failure = renderBatch(work, lease, image, rays, clock, nullptr, rank_,
+                                  places_[static_cast<std::size_t>(rank_)]);
         std::vector<std::byte> result;
         put(result, static_cast<std::int32_t>(failure ? 1 : 0));
         put(result, static_cast<std::int32_t>(lease.size()));

@@ -67,6 +67,17 @@ class MpiCluster final : public Cluster {
     void watch();
     /// Say why the job ends (if this rank speaks for it), write --partial's image, exit 1.
     [[noreturn]] void endJob();
+    /// Rank 0, under the watcher's lock: --partial's image of the journal's tiles, if asked for.
+    void writeJournalPartial();
+    /// A worker that returned nothing for too long, and the tiles of the lease it is rendering.
+    struct HungRank {
+        int rank = 0;
+        std::vector<int> tiles;
+    };
+    /// Rank 0: the workers `hung` returned nothing within `limit` seconds. Say so, naming each
+    /// and its tiles, with what the journal holds and how to resume; then end the job (exit 1).
+    [[noreturn]] void endForHang(const std::vector<HungRank>& hung, double limit,
+                                 const TileWork& work);
     /// The journal's note for the end message; rank 0 counts its own, the others read it.
     std::optional<JournalNote> journalNote() const;
     /// Rank 0: journal one finished tile (under the watcher's lock, so the count it says is
@@ -86,6 +97,7 @@ class MpiCluster final : public Cluster {
 
     int rank_ = 0, size_ = 1;
     LeasePolicy policy_;
+    double tileTimeout_ = 0;  // --tile-timeout's seconds; 0: automatic (lead)
     std::FILE* errors_ = stderr;
     std::unique_ptr<JournalWriter> journal_;  // rank 0, from renderTiles until imageWritten
     std::vector<RankWork> work_;              // rank 0: each rank's share of the last image
@@ -97,6 +109,7 @@ class MpiCluster final : public Cluster {
     std::optional<Rendering> rendering_;
     std::size_t journaled_ = 0;        // rank 0: tiles the journal holds
     std::atomic<bool> ending_{false};  // the watcher saw a signal
+    std::atomic<bool> said_{false};    // rank 0 ended the job itself and said why
     bool closing_ = false;             // the destructor stops the watcher (under mutex_)
     std::condition_variable wake_;
     std::thread watcher_;

@@ -2,7 +2,7 @@
 # Bad input on any rank ends the whole job with one clear message and exit code 1, and no rank
 # hangs (each run has a time limit) or leaves an image or a journal: a broken scene on every
 # rank, on rank 1 only and on rank 0 only (mpirun's MPMD form gives ranks different command
-# lines), a photon pass over the memory limit on rank 1 only, ranks given different seeds, an output folder that does not exist, and a bad option.
+# lines), a photon pass over the memory limit on rank 1 only, ranks given different seeds, an output folder that does not exist, and bad options.
 # Usage: bash tests/mpi/bad_input.sh RT_BINARY OUT_DIR
 set -u
 source "$(dirname "$0")/../check_helpers.sh"
@@ -51,4 +51,6 @@ expect "an output folder that does not exist" "does not exist" \
     -np 2 "$RT" "${SHOWCASE_OPTIONS[@]}" --output no/such/folder.png "$SHOWCASE"
 expect "a bad option" "--mpi-lease: expected dynamic or static" \
     -np 2 "$RT" --mpi-lease sometimes "$SHOWCASE"
+expect "a --tile-timeout that is no time" "--tile-timeout: expected seconds above 0 and at most 86400" \
+    -np 2 "$RT" --tile-timeout=inf "$SHOWCASE"
 finish
