@@ -94,4 +94,39 @@ PY
 then ok "partial-image-holds-the-finished-tiles"; else
     fail "partial-image-holds-the-finished-tiles" "see above"; fi
 
+# A stop inside a tile: one 16 x 16 tile of 65,536 samples a pixel under 64 lights takes minutes
+# (275 s on one thread here). Ctrl-C and --time-limit stop it within a pixel's time, not the
+# tile's (each tile asks after every pixel: PixelStop in src/core/interrupt.h), and the half-done
+# tile is dropped: --partial writes 0 of 1 tiles, every pixel black. Before the pixels asked, a
+# slow scene of the soak (tests/soak/README.md, scene 941) took 230 s to stop at --time-limit 1.
+ONE_TILE_SCENE="$OUT/one-slow-tile.lua"
+cat >"$ONE_TILE_SCENE" <<'EOF'
+local root = gr.node('root')
+local s = gr.sphere('s')
+s:scale(100, 100, 100)
+s:set_material(gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 10))
+root:add_child(s)
+local lights = {}
+for i = 1, 64 do lights[i] = gr.light({0, 0, i}, {0.01, 0.01, 0.01}, {1, 0, 0}) end
+gr.render(root, 'slow.png', 16, 16, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, {0.5, 0.5, 0.5}, lights)
+EOF
+signal_case sigint-inside-a-tile INT "$ONE_TILE_SCENE" 130 "interrupted (Ctrl-C)" --spp 65536
+work="$OUT/time-limit-inside-a-tile"
+rm -rf "$work" && mkdir -p "$work"
+start=$SECONDS
+(cd "$work" && exec "$RT" --quiet --time-limit 1 --partial --spp 65536 --output out.png \
+    "$ONE_TILE_SCENE") 2>"$work/stderr"
+rc=$?
+keep=out.partial.png
+expect_stop time-limit-inside-a-tile 124 "wrote the 0 of 1 tiles" "$rc" $((SECONDS - start - 1))
+keep=
+if PYTHONPATH="$ROOT/tests" python3 - "$work/out.partial.png" <<'PY'
+import sys
+from png_read import read_png
+width, height, channels, rows = read_png(sys.argv[1])
+assert (width, height) == (16, 16), f"size {width}x{height}, expected 16x16"
+assert not any(row.strip(b"\0") for row in rows), "the half-done tile was kept"
+PY
+then ok "a-half-done-tile-is-dropped"; else fail "a-half-done-tile-is-dropped" "see above"; fi
+
 finish

@@ -94,7 +94,8 @@ AaSettings aaSettings(const RenderContext& context) {
 // [render-tile]
 void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& integrator,
                                       const PinholeCamera& camera, int width, int,
-                                      std::uint64_t seed, Image& image, RayCounters& rays) const {
+                                      std::uint64_t seed, Image& image, RayCounters& rays,
+                                      PixelStop& stop) const {
     // What every estimator asks for: the radiance through an image position, as the core's
     // loop traces it (a camera ray, then the integrator with the sample's own random stream).
     // A camera-ray generator (chapter 13's lens) pairs each ray with one of its own samples.
@@ -110,8 +111,10 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
         LatticeSamples lattice(tile.x0, tile.y0, tile.x1, tile.y1, width,
                                settings_.adaptive.maxDepth, seed, radiance);
         for (int y = tile.y0; y < tile.y1; ++y)
-            for (int x = tile.x0; x < tile.x1; ++x)
+            for (int x = tile.x0; x < tile.x1; ++x) {
                 image.set(x, y, adaptivePixel(x, y, settings_.adaptive, lattice));
+                stop.afterPixel();
+            }
         return;
     }
     // A lens that needs more rays per pixel raises the count (to the next square for a grid):
@@ -138,6 +141,7 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
                     break;  // never installed
             }
             image.set(x, y, c);
+            stop.afterPixel();
         }
 }
 // [render-tile]

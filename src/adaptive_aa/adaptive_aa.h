@@ -49,7 +49,7 @@ class SupersamplingSampler final : public PixelSampler {
     /// point on a tile border is traced by both tiles and gets the same colour in each.
     void renderTile(const ImageTile& tile, const Integrator& integrator,
                     const PinholeCamera& camera, int width, int height, std::uint64_t seed,
-                    Image& image, RayCounters& rays) const override;
+                    Image& image, RayCounters& rays, PixelStop& stop) const override;
     /// The settings in use.
     const AaSettings& settings() const { return settings_; }
 

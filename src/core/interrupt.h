@@ -3,10 +3,14 @@
 ///
 /// rt installs no signal handler and keeps no global flag. It blocks SIGINT and SIGTERM in the
 /// main thread before any worker thread starts (workers inherit the mask), so the signals stay
-/// pending; the render loop asks before each tile whether one is pending. A stopped render
-/// throws RenderStopped, and nothing is written: no partial image, no temporary file.
+/// pending; the render loop asks before each tile whether one is pending, and each tile asks
+/// again after each of its pixels (PixelStop). A stopped render throws RenderStopped, and
+/// nothing is written: no partial image, no temporary file.
 #pragma once
 
+#include <atomic>
+#include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -17,6 +21,37 @@ struct RenderStopped : std::runtime_error {
     RenderStopped(const std::string& why, int code) : std::runtime_error(why), exitCode(code) {}
     int exitCode;  ///< 130 for SIGINT, 143 for SIGTERM (as shells report them), 124 for a time
                    ///< limit.
+};
+
+/// Thrown from inside a tile when the render is to stop. The tile is half-done: the render loop
+/// drops it, so that a partial image (--partial) and the MPI journal hold whole tiles only.
+struct TileAbandoned {};
+
+/// Whether the render is to stop, asked after every pixel of a tile, so that a tile that takes
+/// minutes stops within a pixel's time, not a tile's. The question (a pending signal is a system
+/// call) is put at most every 10 ms; in between, a pixel pays one read of the steady clock. One
+/// per tile, on the thread rendering it; the render's `stopped` flag carries a stop one tile saw
+/// to every other.
+class PixelStop {
+  public:
+    /// Asks `ask` (empty: never stops) and shares its answer through `stopped`. The tile has just
+    /// asked before it started, so the first question waits 10 ms.
+    PixelStop(const std::function<bool()>& ask, std::atomic<bool>& stopped);
+
+    /// After a pixel: throws TileAbandoned when the render is to stop.
+    void afterPixel() {
+        if (!ask_) return;
+        if (stopped_.load(std::memory_order_relaxed)) throw TileAbandoned{};
+        if (std::chrono::steady_clock::now() >= next_) ask();
+    }
+
+  private:
+    /// Put the question, and throw TileAbandoned if the answer is yes.
+    void ask();
+
+    const std::function<bool()>& ask_;
+    std::atomic<bool>& stopped_;
+    std::chrono::steady_clock::time_point next_;  ///< When to put the question again.
 };
 
 /// Block SIGINT and SIGTERM in the calling thread and the threads it starts later, so that

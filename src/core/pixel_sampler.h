@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/integrator.h"
+#include "core/interrupt.h"
 #include "core/render.h"
 #include "core/stats.h"
 
@@ -23,10 +24,11 @@ class PixelSampler {
   public:
     virtual ~PixelSampler() = default;
     /// Render the pixels of `tile` of a width × height image into `image`, tracing camera rays
-    /// with `integrator` and counting them into `rays`.
+    /// with `integrator` and counting them into `rays`. After each pixel it calls
+    /// stop.afterPixel(), which throws when the render is to stop (Ctrl-C, --time-limit).
     virtual void renderTile(const ImageTile& tile, const Integrator& integrator,
                             const PinholeCamera& camera, int width, int height, std::uint64_t seed,
-                            Image& image, RayCounters& rays) const = 0;
+                            Image& image, RayCounters& rays, PixelStop& stop) const = 0;
 };
 
 }  // namespace rb

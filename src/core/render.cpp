@@ -133,11 +133,12 @@ class ProgressBar {
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-/// Render the pixels of one tile into `image`, counting rays into `rays`. A camera-ray
-/// generator (`lens`, or null for the pinhole) may ask for more rays per pixel than `spp`.
+/// Render the pixels of one tile into `image`, counting rays into `rays`, and asking `stop`
+/// after each. A camera-ray generator (`lens`, or null for the pinhole) may ask for more rays
+/// per pixel than `spp`.
 void renderTile(const ImageTile& tile, const Integrator& integrator, const PinholeCamera& camera,
                 const CameraRayGenerator* lens, int width, int spp, std::uint64_t seed,
-                Image& image, RayCounters& rays) {
+                Image& image, RayCounters& rays, PixelStop& stop) {
     const int count = lens ? std::max(spp, lens->raysPerPixel()) : spp;
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
@@ -156,6 +157,7 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
             }
             // One sample is its own average (no division, the same bits).
             image.set(x, y, count == 1 ? sum : sum / static_cast<double>(count));
+            stop.afterPixel();
         }
 }
 
@@ -182,15 +184,18 @@ RunningMoments samplePixel(int x, int y, int first, int count, const Integrator&
 }
 
 /// Stage 1 for one tile: each pixel's pilot samples (0 ... floor − 1), and their channel
-/// variance into `pilot` (row-major, the image's width).
+/// variance into `pilot` (row-major, the image's width); `stop` is asked after each pixel.
 void pilotTile(const ImageTile& tile, const Integrator& integrator, const PinholeCamera& camera,
                const CameraRayGenerator* lens, int width, std::uint64_t seed,
-               const TargetError& target, std::vector<float>& pilot, RayCounters& rays) {
+               const TargetError& target, std::vector<float>& pilot, RayCounters& rays,
+               PixelStop& stop) {
     for (int y = tile.y0; y < tile.y1; ++y)
-        for (int x = tile.x0; x < tile.x1; ++x)
+        for (int x = tile.x0; x < tile.x1; ++x) {
             pilot[static_cast<std::size_t>(y) * width + x] = static_cast<float>(
                 samplePixel(x, y, 0, target.minSamples, integrator, camera, lens, width, seed, rays)
                     .channelVariance());
+            stop.afterPixel();
+        }
 }
 
 /// Stage 3's result for one pixel: the mean of its fresh samples and the estimated variance of
@@ -257,12 +262,12 @@ PixelEstimate sampleFresh(int x, int y, int first, int count, const Integrator& 
 
 /// Stage 3 for one tile: each pixel's planned fresh samples, after the pilot's; the pixel is
 /// their mean. Returns the sum over the tile's pixels of their estimated variance of the mean
-/// (for the progress line).
+/// (for the progress line). `stop` is asked after each pixel.
 double renderTileToError(const ImageTile& tile, const Integrator& integrator,
                          const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
                          std::uint64_t seed, const TargetError& target,
                          const std::vector<std::uint32_t>& plan, Image& image, SampleMap* map,
-                         RayCounters& rays) {
+                         RayCounters& rays, PixelStop& stop) {
     double varianceSum = 0.0;
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
@@ -272,6 +277,7 @@ double renderTileToError(const ImageTile& tile, const Integrator& integrator,
             image.set(x, y, e.mean);
             if (map) map->record(x, y, count, e.varianceOfMean);
             varianceSum += e.varianceOfMean;
+            stop.afterPixel();
         }
     return varianceSum;
 }
@@ -279,24 +285,31 @@ double renderTileToError(const ImageTile& tile, const Integrator& integrator,
 
 /// Render one tile with the pipeline's pixel sampler (chapter 8) when one is installed, else
 /// with the core's loop, so a scene without antialiasing pays one test per tile. Under a target
-/// error the core's adaptive loop renders it (returning its variance sum; 0 otherwise).
+/// error the core's adaptive loop renders it (returning its variance sum; 0 otherwise). When
+/// the render is to stop, throws TileAbandoned with the tile half-done.
 double renderImageTile(const ImageTile& tile, const Pipeline& pipeline,
                        const Integrator& integrator, const PinholeCamera& camera, int width,
                        int height, const RenderSettings& settings,
                        const std::vector<std::uint32_t>& plan, SampleMap* map, Image& image,
-                       RayCounters& rays) {
+                       RayCounters& rays, PixelStop& stop) {
     const int spp = std::max(1, settings.samplesPerPixel);
     const std::uint64_t seed = settings.seed;
     if (settings.target.on())
         return renderTileToError(tile, integrator, camera, pipeline.cameraRays.get(), width, seed,
-                                 settings.target, plan, image, map, rays);
+                                 settings.target, plan, image, map, rays, stop);
     if (pipeline.pixelSampler)
         pipeline.pixelSampler->renderTile(tile, integrator, camera, width, height, seed, image,
-                                          rays);
+                                          rays, stop);
     else
         renderTile(tile, integrator, camera, pipeline.cameraRays.get(), width, spp, seed, image,
-                   rays);
+                   rays, stop);
     return 0.0;
+}
+
+/// Black out a tile a stop left half-done, as the tiles not reached are.
+void dropTile(const ImageTile& tile, Image& image) {
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x) image.set(x, y, Colour(0.0));
 }
 
 /// The progress estimator's view of a target-error render: each tile's work is the fresh
@@ -339,8 +352,11 @@ std::vector<float> pilotVariances(const std::vector<ImageTile>& tiles, const Int
             continue;
         }
         try {
+            PixelStop stop(settings.shouldStop, stopped);
             pilotTile(tiles[k], integrator, camera, lens, width, settings.seed, settings.target,
-                      pilot, perThread[omp_get_thread_num()]);
+                      pilot, perThread[omp_get_thread_num()], stop);
+        } catch (const TileAbandoned&) {
+            // stopped is set: the pilot is not used.
         } catch (...) {
 #pragma omp critical(rb_render_failure)
             if (!failure) failure = std::current_exception();
@@ -424,9 +440,14 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
                          plan.empty() ? workUnits(tiles) : plannedWork(tiles, plan, width));
     // Many processes (MPI): the cluster deals out the tiles and brings them back.
     if (settings.cluster && settings.cluster->distributed()) {
+        // A tile asks after each pixel here too (a rank's --time-limit; signals are the
+        // cluster's): a half-done one throws TileAbandoned, and its lease is neither
+        // journaled nor sent (src/mpi/mpi_cluster.cpp).
+        std::atomic<bool> clusterStopped{false};
         const auto renderOne = [&](int k, Image& film, RayCounters& rays) {
+            PixelStop stop(settings.shouldStop, clusterStopped);
             renderImageTile(tiles[k], pipeline, integrator, camera, width, height, settings, plan,
-                            nullptr, film, rays);
+                            nullptr, film, rays, stop);
         };
         std::atomic<std::size_t> tilesDone{0};  // in this film (rank 0: every rank's)
         const auto started = [&](int k) { progress.tileStarted(k); };
@@ -455,8 +476,9 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     // Tiles go to threads dynamically, in progressive order. Nothing a pixel computes depends
     // on which thread runs it or when: its random numbers come from (seed, pixel, sample), so
     // any schedule and any tile order give the same image.
-    // A stop (Ctrl-C, SIGTERM, --time-limit) skips the tiles not yet started; OpenMP cannot
-    // leave a parallel loop early.
+    // A stop (Ctrl-C, SIGTERM, --time-limit) skips the tiles not yet started (OpenMP cannot
+    // leave a parallel loop early), and the running ones give up after the pixel they are on
+    // (PixelStop): a half-done tile is dropped, so a partial image holds whole tiles only.
     // An exception may not leave an OpenMP region (it would end the program): a tile that
     // throws (an exercise stub, std::bad_alloc) keeps the first exception, the other tiles are
     // skipped, and it is thrown again after the loop.
@@ -478,8 +500,12 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         if (settings.tileThreads) (*settings.tileThreads)[k] = omp_get_thread_num();
         double varianceSum = 0.0;
         try {
+            PixelStop stop(settings.shouldStop, stopped);
             varianceSum = renderImageTile(tiles[k], pipeline, integrator, camera, width, height,
-                                          settings, plan, settings.sampleMap, image, rays);
+                                          settings, plan, settings.sampleMap, image, rays, stop);
+        } catch (const TileAbandoned&) {
+            dropTile(tiles[k], image);  // stopped is set
+            continue;
         } catch (...) {
 #pragma omp critical(rb_render_failure)
             if (!failure) failure = std::current_exception();
@@ -493,7 +519,7 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     if (failure) std::rethrow_exception(failure);
     for (const RayCounters& c : perThread) counters.merge(c);
     if (stopped) {
-        // Every tile that started has finished: hand over the image as it is, if asked.
+        // Every tile that started has finished or been dropped: hand over the image, if asked.
         if (settings.partial) *settings.partial = {std::move(image), tilesDone, tiles.size()};
         throw RenderStopped("the render was stopped before it finished", 1);
     }

@@ -33,6 +33,10 @@ namespace {
 constexpr int kTagLease = 1;   // rank 0 -> worker: tile positions; none means "stop"
 constexpr int kTagResult = 2;  // worker -> rank 0: a finished lease (or its failure)
 constexpr int kTagDone = 3;    // worker -> rank 0: its rays and busy time, after its last lease
+// A lease's answer says first what became of it; only a rendered lease carries pixels.
+constexpr std::int32_t kLeaseRendered = 0;  // every tile finished
+constexpr std::int32_t kLeaseFailed = 1;    // a tile threw: the rank says why at the agreement
+constexpr std::int32_t kLeaseStopped = 2;   // the rank's time limit came: no tile is kept
 /// Leases a worker holds at once: it renders one while the answer to the last is on its way.
 constexpr int kLeaseAhead = 3;
 /// The most tiles in one lease, per thread of the rank that takes it.
@@ -206,14 +210,17 @@ struct TileFailure : std::runtime_error {
 };
 
 /// The exception being handled, thrown by tile `position` on `rank`, as a TileFailure naming
-/// both. A stopped render (RenderStopped) is no tile's fault: it passes unchanged, with its exit
-/// code (exitCodeOf); any other failure ends rt with 1, as before.
+/// both. A stopped render (RenderStopped, or a tile given up half-done: TileAbandoned) is no
+/// tile's fault: it passes unchanged, with its exit code (exitCodeOf); any other failure ends rt
+/// with 1, as before.
 std::exception_ptr tileFailure(int rank, const RankPlace& place, int position,
                                const ImageTile& tile) {
     std::string what;
     try {
         throw;
     } catch (const RenderStopped&) {
+        return std::current_exception();
+    } catch (const TileAbandoned&) {
         return std::current_exception();
     } catch (const std::bad_alloc&) {
         what = "out of memory";
@@ -224,6 +231,19 @@ std::exception_ptr tileFailure(int rank, const RankPlace& place, int position,
     }
     return std::make_exception_ptr(TileFailure(rankName(rank, place) + " failed on " +
                                                tileName(position, tile) + ": " + what));
+}
+
+/// True when `failure` is a tile given up half-done because the render is to stop (--time-limit
+/// asked after a pixel): the lease holding it is neither journaled nor sent back.
+bool abandoned(const std::exception_ptr& failure) {
+    if (!failure) return false;
+    try {
+        std::rethrow_exception(failure);
+    } catch (const TileAbandoned&) {
+        return true;
+    } catch (...) {
+        return false;
+    }
 }
 
 #ifdef RB_FAULT_INJECTION
@@ -255,12 +275,13 @@ struct BatchClock {
 };
 
 /// Render the tiles at `positions` in parallel on `rank`; returns the first failure (null: none),
-/// naming the rank and the tile. The main thread (OpenMP thread 0, the one MPI may be called
-/// from) runs `between` after each of its tiles.
+/// naming the rank and the tile, and marks each tile that finished in `finished` (when given:
+/// an entry per position). The main thread (OpenMP thread 0, the one MPI may be called from)
+/// runs `between` after each of its tiles.
 std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& positions,
                                Image& image, std::vector<RayCounters>& rays, BatchClock& clock,
                                const std::function<void()>& between, int rank,
-                               const RankPlace& place) {
+                               const RankPlace& place, std::vector<char>* finished = nullptr) {
     std::exception_ptr failure;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(work.threads)
     for (int i = 0; i < static_cast<int>(positions.size()); ++i) {
@@ -274,6 +295,7 @@ std::exception_ptr renderBatch(const TileWork& work, const std::vector<int>& pos
 #endif
             work.renderTile(positions[i], image, rays[thread]);
             work.tileFinished(positions[i], rays[thread].total() - raysBefore);
+            if (finished) (*finished)[static_cast<std::size_t>(i)] = 1;
             clock.seconds[thread] += threadCpuSeconds() - start;
             if (thread == 0 && between) between();
         } catch (...) {
@@ -640,15 +662,18 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
             slowest,
             std::chrono::duration<double>(now - heard[static_cast<std::size_t>(worker)]).count());
         heard[static_cast<std::size_t>(worker)] = now;
-        // A finished lease: [failed][count][rays][positions][pixels of each tile, in order].
-        const std::int32_t failed = take<std::int32_t>(bytes, at);
+        // A finished lease: [status][count][rays][positions][pixels of each tile, in order];
+        // the pixels only when the status is kLeaseRendered.
+        const std::int32_t leaseStatus = take<std::int32_t>(bytes, at);
         const std::int32_t count = take<std::int32_t>(bytes, at);
         std::uint64_t leaseRays = take<std::uint64_t>(bytes, at);
         std::vector<int> positions(static_cast<std::size_t>(count));
         for (int& p : positions) p = take<std::int32_t>(bytes, at);
-        if (failed) remoteFailed = true;
+        if (leaseStatus == kLeaseFailed) remoteFailed = true;
+        // A worker's time limit came first: the render stops, as when rank 0's does.
+        if (leaseStatus == kLeaseStopped) stopping = true;
         for (int p : positions) {
-            if (failed) break;
+            if (leaseStatus != kLeaseRendered) break;
             const ImageTile& tile = work.tiles[static_cast<std::size_t>(p)];
             const auto* pixels = reinterpret_cast<const float*>(bytes.data() + at);
             placeTile(image, tile, pixels);
@@ -694,18 +719,35 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
         const std::vector<int> lease = schedule.next(0, kMaxLeasePerThread);
         if (lease.empty()) break;
         const Clock::time_point start = Clock::now();
-        if (std::exception_ptr e =
-                renderBatch(work, lease, image, rays, clock, serveWaiting, 0, place))
-            failure = e;
+        std::vector<char> finished(lease.size(), 0);
+        const std::exception_ptr e =
+            renderBatch(work, lease, image, rays, clock, serveWaiting, 0, place, &finished);
+        // A tile given up half-done (the time limit, asked after a pixel) stops the render; it
+        // is no failure.
+        const bool stopped = abandoned(e);
+        if (e && !stopped) failure = e;
         slowest = std::max(slowest, std::chrono::duration<double>(Clock::now() - start).count());
         if (failure) break;
+        // The finished tiles go to the journal; a half-done one is blacked out of the film, as
+        // the tiles not reached are, so that --partial's image holds the journal's tiles.
         try {
-            for (int p : lease)
-                journalTile(p, tilePixels(image, work.tiles[static_cast<std::size_t>(p)]));
+            for (std::size_t i = 0; i < lease.size(); ++i) {
+                const ImageTile& tile = work.tiles[static_cast<std::size_t>(lease[i])];
+                if (finished[i]) {
+                    journalTile(lease[i], tilePixels(image, tile));
+                    ++work_[0].tiles;
+                } else {
+                    const std::vector<float> black(static_cast<std::size_t>(tile.pixels()) * 3);
+                    placeTile(image, tile, black.data());
+                }
+            }
         } catch (...) {
             failure = std::current_exception();
         }
-        work_[0].tiles += lease.size();
+        if (stopped) {
+            stopping = true;
+            break;
+        }
         serveWaiting();
     }
     // Step 3: answer the workers until each has sent its report, or is hung. Polled, not a
@@ -741,6 +783,7 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
     BatchClock clock(work.threads);
     WorkerReport report;
     std::exception_ptr failure;
+    bool stopped = false;
     // Render each lease and send it back; each result is answered by the next lease (or
     // none), which is taken in when it has arrived, or waited for once nothing else is left.
     int answersDue = 0;
@@ -760,15 +803,21 @@ void MpiCluster::follow(const TileWork& work, Image& image, RayCounters& counter
             return total;
         };
         const std::uint64_t raysBefore = raysSoFar();
-        if (!failure)
+        if (!failure && !stopped)
             failure = renderBatch(work, lease, image, rays, clock, nullptr, rank_,
                                   places_[static_cast<std::size_t>(rank_)]);
+        // A tile given up half-done (this rank's time limit, asked after a pixel): this lease
+        // and the ones still to come go back unrendered, and rank 0 stops the render.
+        if (abandoned(failure)) {
+            stopped = true;
+            failure = nullptr;
+        }
         std::vector<std::byte> result;
-        put(result, static_cast<std::int32_t>(failure ? 1 : 0));
+        put(result, failure ? kLeaseFailed : stopped ? kLeaseStopped : kLeaseRendered);
         put(result, static_cast<std::int32_t>(lease.size()));
         put(result, raysSoFar() - raysBefore);
         for (int p : lease) put(result, static_cast<std::int32_t>(p));
-        if (!failure) {
+        if (!failure && !stopped) {
             for (int p : lease)
                 for (float v : tilePixels(image, work.tiles[static_cast<std::size_t>(p)]))
                     put(result, v);

@@ -10,7 +10,8 @@ The showcase at 256x160 (160 tiles, so that under load the signal lands long bef
 - SIGKILL to rank 2, then to rank 0: one line naming the lost rank and its pid, and what the
   journal holds (rank 0 gone, rank 1 says it);
 - --time-limit with --partial: the time limit's line names the journal and its tiles, and the
-  partial image holds them.
+  partial image holds them; and again on tiles that take minutes, which stop inside the tile,
+  leaving no half-done tile in the journal.
 Usage: job_end.py RT_BINARY OUT_DIR
 """
 import os
@@ -18,6 +19,7 @@ import re
 import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
@@ -137,7 +139,43 @@ def main():
     else:
         ok(f"time limit: exit 124, the journal's {held} of 192 tiles named")
         check_partial("time limit", image, held, limited.stderr, 192)
+    # --time-limit inside a tile: six tiles of 65,536 samples a pixel under 64 lights take
+    # minutes each, and every rank gives up its tile after the pixel it is on (PixelStop), so
+    # the job stops within seconds, and no half-done tile reaches the journal or the partial
+    # image. Before the pixels asked, each rank finished its tile first.
+    scene = out / "one-slow-tile.lua"
+    scene.write_text(SLOW_TILES)
+    image = out / "time-limit-in-a-tile.png"
+    started = time.monotonic()
+    limited = subprocess.run(MPIRUN + ["-np", "3", rt, "--quiet", "--threads", "1",
+                                       "--time-limit", "1", "--partial", "--spp", "65536",
+                              "--output", str(image), str(scene)],
+                             stderr=subprocess.PIPE, text=True, timeout=600)
+    took = time.monotonic() - started
+    held = len(journal_positions(f"{image}.journal"))
+    if limited.returncode != 124 or took > 30 or held != 0 or not re.search(
+            r"^rt: stopped after the time limit of 1 s \(--time-limit\), without writing an "
+            r"image; the journal \S+ holds 0 of 6 tiles", limited.stderr, re.M):
+        fail("time limit in a tile",
+             f"exit {limited.returncode} after {took:.0f} s, {held} tiles journaled: "
+             f"{limited.stderr}")
+    else:
+        ok(f"time limit in a tile: exit 124 after {took:.1f} s, no half-done tile journaled")
+        check_partial("time limit in a tile", image, 0, limited.stderr, 6)
     return finish()
+
+
+# Six 16x16 tiles whose pixels take ~0.1 s each at --spp 65536 (a sphere around the camera, 64
+# lights).
+SLOW_TILES = """local root = gr.node('root')
+local s = gr.sphere('s')
+s:scale(100, 100, 100)
+s:set_material(gr.material({0.5, 0.5, 0.5}, {0, 0, 0}, 10))
+root:add_child(s)
+local lights = {}
+for i = 1, 64 do lights[i] = gr.light({0, 0, i}, {0.01, 0.01, 0.01}, {1, 0, 0}) end
+gr.render(root, 'slow.png', 48, 32, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, {0.5, 0.5, 0.5}, lights)
+"""
 
 
 if __name__ == "__main__":
