@@ -113,7 +113,7 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x) {
                 image.set(x, y, adaptivePixel(x, y, settings_.adaptive, lattice));
-                stop.afterPixel();
+                stop.afterPixel(rays.total());
             }
         return;
     }
@@ -141,7 +141,7 @@ void SupersamplingSampler::renderTile(const ImageTile& tile, const Integrator& i
                     break;  // never installed
             }
             image.set(x, y, c);
-            stop.afterPixel();
+            stop.afterPixel(rays.total());
         }
 }
 // [render-tile]

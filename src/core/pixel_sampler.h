@@ -25,7 +25,8 @@ class PixelSampler {
     virtual ~PixelSampler() = default;
     /// Render the pixels of `tile` of a width × height image into `image`, tracing camera rays
     /// with `integrator` and counting them into `rays`. After each pixel it calls
-    /// stop.afterPixel(), which throws when the render is to stop (Ctrl-C, --time-limit).
+    /// stop.afterPixel(rays.total()), which throws when the render is to stop (Ctrl-C,
+    /// --time-limit).
     virtual void renderTile(const ImageTile& tile, const Integrator& integrator,
                             const PinholeCamera& camera, int width, int height, std::uint64_t seed,
                             Image& image, RayCounters& rays, PixelStop& stop) const = 0;

@@ -157,7 +157,7 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
             }
             // One sample is its own average (no division, the same bits).
             image.set(x, y, count == 1 ? sum : sum / static_cast<double>(count));
-            stop.afterPixel();
+            stop.afterPixel(rays.total());
         }
 }
 
@@ -194,7 +194,7 @@ void pilotTile(const ImageTile& tile, const Integrator& integrator, const Pinhol
             pilot[static_cast<std::size_t>(y) * width + x] = static_cast<float>(
                 samplePixel(x, y, 0, target.minSamples, integrator, camera, lens, width, seed, rays)
                     .channelVariance());
-            stop.afterPixel();
+            stop.afterPixel(rays.total());
         }
 }
 
@@ -277,7 +277,7 @@ double renderTileToError(const ImageTile& tile, const Integrator& integrator,
             image.set(x, y, e.mean);
             if (map) map->record(x, y, count, e.varianceOfMean);
             varianceSum += e.varianceOfMean;
-            stop.afterPixel();
+            stop.afterPixel(rays.total());
         }
     return varianceSum;
 }

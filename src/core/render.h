@@ -41,8 +41,9 @@ struct RenderSettings {
     /// For tests: when set, resized to the tile count and filled with the OpenMP thread number
     /// that rendered each tile (index = position in tilesInRenderOrder). Null: nothing recorded.
     std::vector<int>* tileThreads = nullptr;
-    /// Asked before each tile; once it says true, no further tile starts and render() throws
-    /// RenderStopped after the running ones finish. Empty: never stops.
+    /// Asked before each tile and, through PixelStop, after a tile's pixels; once it says true,
+    /// no further tile starts, the running ones give up (a half-done tile is dropped), and
+    /// render() throws RenderStopped. Empty: never stops.
     std::function<bool()> shouldStop;
     /// When set and the render stops, receives what was rendered (--partial). Null: dropped.
     PartialImage* partial = nullptr;

@@ -28,17 +28,20 @@ inline constexpr std::array<const char*, static_cast<int>(RayKind::Count)> kRayK
 struct alignas(64) RayCounters {
     std::array<std::uint64_t, static_cast<int>(RayKind::Count)> count{};
     /// Count one ray of kind k.
-    void add(RayKind k) { ++count[static_cast<int>(k)]; }
+    void add(RayKind k) {
+        ++count[static_cast<int>(k)];
+        ++all;
+    }
     /// Add another thread's counts to these.
     void merge(const RayCounters& other) {
         for (size_t i = 0; i < count.size(); ++i) count[i] += other.count[i];
+        all += other.all;
     }
-    /// All rays of every kind.
-    std::uint64_t total() const {
-        std::uint64_t t = 0;
-        for (auto c : count) t += c;
-        return t;
-    }
+    /// All rays of every kind (kept as they are counted: the render loop asks after each pixel).
+    std::uint64_t total() const { return all; }
+
+  private:
+    std::uint64_t all = 0;  ///< The sum of count.
 };
 
 }  // namespace rb
