@@ -23,7 +23,7 @@ FUZZ_TARGETS := obj lua_scene options journal stats compare vdb
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: deps bench-deps mpi-deps mpi configure rt test test-exercises test-assignments assignment grade \
-        test-sanitize sanitize-build soak demo docs golden-update bench charts fuzz web web-bundle clean \
+        test-sanitize sanitize-ctest sanitize-build soak demo docs golden-update bench charts fuzz web web-bundle clean \
         $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
@@ -169,8 +169,16 @@ test-assignments:
 SANITIZE_BUILD ?= build-sanitize
 SANITIZER_ENV  := ASAN_OPTIONS=halt_on_error=1:exitcode=66:detect_leaks=1:allocator_may_return_null=1 \
                   UBSAN_OPTIONS=halt_on_error=1:exitcode=66:print_stacktrace=1
+#
+# SANITIZE_CTEST picks the tests and the parallelism (ctest options, default -j JOBS: all of
+# them); CI runs the unit tests and golden images beside make test and the rest after it
+# (.ci/run). make sanitize-ctest runs them without building first.
+SANITIZE_CTEST ?= -j $(JOBS)
 test-sanitize: sanitize-build
-	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
+	$(MAKE) --no-print-directory sanitize-ctest
+
+sanitize-ctest:
+	cd $(SANITIZE_BUILD) && $(SANITIZER_ENV) ctest --output-on-failure $(SANITIZE_CTEST)
 
 # The instrumented tree alone (make test-sanitize builds it first; .ci/run builds it beside make
 # test at the lowest priority: make test leaves src/ as it is, its round trip plants stubs and

@@ -69,9 +69,10 @@ MediaSettings mediaSettings(const RenderContext& context) {
         s.step = parseNumberOption("--media-step", step);
         if (!(s.step > 0.0)) throw InputError("--media-step: must be > 0, got " + step);
     }
-    // Scatterings: --media-bounces, else the scene's gr.option('media_bounces', n), else 256.
+    // Scatterings: --media-bounces, else the scene's gr.option('media_bounces', n), else no cap
+    // a scene meets (kMaxMediaBounces).
     s.bounces = static_cast<int>(context.sceneOption("media_bounces", s.bounces));
-    s.bounces = wholeOption(context, "media-bounces", 0, 1000000, s.bounces);
+    s.bounces = wholeOption(context, "media-bounces", 0, kMaxMediaBounces, s.bounces);
     s.majorantResolution = wholeOption(context, "media-majorant", 1, 128, s.majorantResolution);
     return s;
 }
@@ -142,7 +143,7 @@ Feature mediaFeature() {
               "1/400 of the scene's size (fog box diagonal)"},
              {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
              {"media-bounces", "N", "scatterings after the first (0: single scattering)",
-              "the scene's media_bounces, else 256"}},
+              "the scene's media_bounces, else 1000000 (no cap a scene meets)"}},
             {},
             mediaWarps};
 }

@@ -357,6 +357,10 @@ void MpiCluster::watch() {
             lock.unlock();
             endJob();
         }
+        if (ownLeaseOverdue()) {
+            lock.unlock();
+            endForOwnHang();
+        }
         wake_.wait_for(lock, std::chrono::milliseconds(10));
     }
 }
@@ -399,9 +403,9 @@ void MpiCluster::writeJournalPartial() {
     }
 }
 
-void MpiCluster::endForHang(const std::vector<HungRank>& hung, double limit, const TileWork& work) {
-    // Step 1: name each hung rank and the tiles of the lease it is rendering; every tile the
-    // other ranks returned is in the journal already, flushed to the kernel.
+void MpiCluster::sayHang(const std::vector<HungRank>& hung, double limit, const TileWork& work) {
+    // Name each hung rank and the tiles of the lease it is rendering; every tile the other
+    // ranks returned is in the journal already, flushed to the kernel.
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%g s", limit);
     const std::string why = tileTimeout_ > 0 ? " (--tile-timeout)"
@@ -413,18 +417,23 @@ void MpiCluster::endForHang(const std::vector<HungRank>& hung, double limit, con
         for (int p : h.tiles)
             tiles +=
                 (tiles.empty() ? "" : ", ") + tileName(p, work.tiles[static_cast<std::size_t>(p)]);
-        text += (text.empty() ? "" : "; ") +
-                rankName(h.rank, places_[static_cast<std::size_t>(h.rank)]) +
-                " has returned nothing for over " + seconds + why + " while rendering " + tiles;
+        text +=
+            (text.empty() ? "" : "; ") +
+            rankName(h.rank, places_[static_cast<std::size_t>(h.rank)]) +
+            (h.rank == 0 ? " has finished nothing for over " : " has returned nothing for over ") +
+            seconds + why + " while rendering " + tiles;
     }
-    {
-        std::lock_guard lock(mutex_);
-        said_ = true;
-        writeJournalPartial();
-        std::fprintf(errors_, "rt: %s, so the job stops without writing an image; %s\n",
-                     text.c_str(), journalSentence(*journalNote(), resumeCommand_).c_str());
-        std::fflush(errors_);
-    }
+    std::lock_guard lock(mutex_);
+    said_ = true;
+    writeJournalPartial();
+    std::fprintf(errors_, "rt: %s, so the job stops without writing an image; %s\n", text.c_str(),
+                 journalSentence(*journalNote(), resumeCommand_).c_str());
+    std::fflush(errors_);
+}
+
+void MpiCluster::endForHang(const std::vector<HungRank>& hung, double limit, const TileWork& work) {
+    // Step 1: say which ranks hung, on which tiles.
+    sayHang(hung, limit, work);
     // Step 2: end the job. A hung rank can take part in no collective call, MPI_Finalize
     // included. One on this machine gets SIGTERM: its watcher exits (silently: rank 0 is alive),
     // and mpirun then ends the others, this rank's watcher exiting 1 without a second word.
@@ -440,6 +449,39 @@ void MpiCluster::endForHang(const std::vector<HungRank>& hung, double limit, con
     }
     if (remote) MPI_Abort(MPI_COMM_WORLD, 1);
     for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+}
+
+bool MpiCluster::ownLeaseOverdue() const {
+    if (!ownLease_ || !std::isfinite(ownLease_->limit)) return false;
+    const auto elapsed = std::chrono::steady_clock::now() - ownLease_->start;
+    return std::chrono::duration<double>(elapsed).count() > ownLease_->limit;
+}
+
+void MpiCluster::endForOwnHang() {
+    // Step 1: rank 0's own lease is overdue: say so, as for a worker.
+    OwnLease own;
+    {
+        std::lock_guard lock(mutex_);
+        own = *ownLease_;
+    }
+    sayHang({{0, own.tiles}}, own.limit, *own.work);
+    // Step 2: end the job without an MPI call (only the main thread may make one, and it is the
+    // hung one). The workers of this machine get SIGTERM and exit silently, since rank 0 is
+    // still alive when their watchers look; rank 0 waits until they are gone (at most 30 s),
+    // then exits 1, and mpirun ends the rest (a rank on another machine may add that rank 0 was
+    // lost).
+    std::vector<int> local;
+    for (int r = 1; r < size_; ++r) {
+        const RankPlace& place = places_[static_cast<std::size_t>(r)];
+        if (place.host != places_[0].host) continue;
+        kill(place.pid, SIGTERM);
+        local.push_back(place.pid);
+    }
+    const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (std::chrono::steady_clock::now() < giveUp &&
+           !std::all_of(local.begin(), local.end(), processGone))
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::_Exit(1);
 }
 
 std::optional<JournalNote> MpiCluster::journalNote() const {
@@ -720,8 +762,11 @@ void MpiCluster::lead(const TileWork& work, Image& image, RayCounters& counters,
         if (lease.empty()) break;
         const Clock::time_point start = Clock::now();
         std::vector<char> finished(lease.size(), 0);
+        // The watcher ends the job if this lease is overdue, as rank 0 does for a worker's.
+        setOwnLease(OwnLease{lease, start, overdueAfter(), &work});
         const std::exception_ptr e =
             renderBatch(work, lease, image, rays, clock, serveWaiting, 0, place, &finished);
+        setOwnLease(std::nullopt);
         // A tile given up half-done (the time limit, asked after a pixel) stops the render; it
         // is no failure.
         const bool stopped = abandoned(e);

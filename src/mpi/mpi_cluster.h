@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -63,7 +64,8 @@ class MpiCluster final : public Cluster {
         int width = 0, height = 0;
         bool partial = false;
     };
-    /// The watcher thread: wait for SIGINT or SIGTERM, then end the job (endJob).
+    /// The watcher thread: wait for SIGINT or SIGTERM, then end the job (endJob); on rank 0,
+    /// also for its own lease to run overdue (endForOwnHang).
     void watch();
     /// Say why the job ends (if this rank speaks for it), write --partial's image, exit 1.
     [[noreturn]] void endJob();
@@ -74,10 +76,31 @@ class MpiCluster final : public Cluster {
         int rank = 0;
         std::vector<int> tiles;
     };
-    /// Rank 0: the workers `hung` returned nothing within `limit` seconds. Say so, naming each
-    /// and its tiles, with what the journal holds and how to resume; then end the job (exit 1).
+    /// Rank 0's own lease, as the watcher sees it: its tiles, when it started, and the seconds
+    /// it may take (not finite: no limit yet).
+    struct OwnLease {
+        std::vector<int> tiles;
+        std::chrono::steady_clock::time_point start;
+        double limit = 0;
+        const TileWork* work = nullptr;
+    };
+    /// Rank 0: say that the ranks `hung` finished nothing within `limit` seconds, naming each
+    /// and its tiles, with what the journal holds and how to resume.
+    void sayHang(const std::vector<HungRank>& hung, double limit, const TileWork& work);
+    /// Rank 0: the workers `hung` returned nothing within `limit` seconds. Say so (sayHang),
+    /// then end the job (exit 1).
     [[noreturn]] void endForHang(const std::vector<HungRank>& hung, double limit,
                                  const TileWork& work);
+    /// Rank 0, under the watcher's lock: its own lease has run past its limit.
+    bool ownLeaseOverdue() const;
+    /// Rank 0's watcher: its own lease is overdue (a tile that never finishes). Say so, then
+    /// end the job without an MPI call (exit 1).
+    [[noreturn]] void endForOwnHang();
+    /// Rank 0: the lease it renders now, or none.
+    void setOwnLease(std::optional<OwnLease> lease) {
+        std::lock_guard lock(mutex_);
+        ownLease_ = std::move(lease);
+    }
     /// The journal's note for the end message; rank 0 counts its own, the others read it.
     std::optional<JournalNote> journalNote() const;
     /// Rank 0: journal one finished tile (under the watcher's lock, so the count it says is
@@ -105,12 +128,13 @@ class MpiCluster final : public Cluster {
     int threads_ = 1;
     std::vector<RankPlace> places_;  // every rank's machine and pid
     std::string resumeCommand_;      // this run's command with --resume
-    mutable std::mutex mutex_;       // guards rendering_, journaled_ and the journal's appends
+    mutable std::mutex mutex_;  // guards rendering_, journaled_, ownLease_, the journal's appends
     std::optional<Rendering> rendering_;
-    std::size_t journaled_ = 0;        // rank 0: tiles the journal holds
-    std::atomic<bool> ending_{false};  // the watcher saw a signal
-    std::atomic<bool> said_{false};    // rank 0 ended the job itself and said why
-    bool closing_ = false;             // the destructor stops the watcher (under mutex_)
+    std::size_t journaled_ = 0;         // rank 0: tiles the journal holds
+    std::optional<OwnLease> ownLease_;  // rank 0: the lease it renders now
+    std::atomic<bool> ending_{false};   // the watcher saw a signal
+    std::atomic<bool> said_{false};     // rank 0 ended the job itself and said why
+    bool closing_ = false;              // the destructor stops the watcher (under mutex_)
     std::condition_variable wake_;
     std::thread watcher_;
 };

@@ -11,6 +11,9 @@ to fire) renders on 3 ranks:
 - kind:hang on rank 1, with --tile-timeout 2 and --partial: rank 0 sees the lease overdue and
   stops the job: exit 1, one line naming the rank, its pid and the tile, the journal and the
   resume command; no image, and the partial image holds exactly the journal's tiles;
+- kind:hang on rank 0 itself (its first lease is tile 6), with --tile-timeout 2 and --partial:
+  rank 0's watcher sees its own lease overdue and says so in the same words, and the job ends
+  as above (exit 1, one line, no image, the partial image holds the journal's tiles);
 - after each, --resume without the fault says it reused the journal's tiles and writes the
   bytes of one process's render (rt_fault resumes: its journal names rt's version and commit,
   which rt_fault's own are sure to match even when only one of the two was rebuilt);
@@ -141,6 +144,16 @@ def main():
         image, held, text = done
         check_partial("hang", image, len(held), text, TILES)
         resume_case("hang", rt_fault, image, held, reference)
+    # A tile that never finishes on rank 0, which watches the others: its watcher thread sees
+    # its own lease overdue (the main thread, the one that may call MPI, is the hung one).
+    hung0 = (r"^rt: rank 0 \(host \S+, pid \d+\) has finished nothing for over 2 s "
+             r"\(--tile-timeout\) while rendering " + TILE.format(k=6) +
+             r", so the job stops without writing an image; " + resume)
+    if done := fault_case("hang0", rt_fault, out, "rank:0,tile:6,kind:hang",
+                          ["--tile-timeout", "2", "--partial"], hung0):
+        image, held, text = done
+        check_partial("hang0", image, len(held), text, TILES)
+        resume_case("hang0", rt_fault, image, held, reference)
     return finish()
 
 

@@ -12,7 +12,7 @@ kill=${3:?usage: kill_resume.sh RT_BINARY OUT_DIR KILL}
 rt_and_out_dir "$1" "$2"
 cd "$OUT" && rm -f ./*.png ./*.journal ./*.txt
 
-W=384 H=240
+W=256 H=160
 OPTIONS=("${SHOWCASE_OPTIONS[@]}" --light-samples=3 --size ${W}x$H "$SHOWCASE")
 TILES=$(((W + 15) / 16 * ((H + 15) / 16)))
 "$RT" "${OPTIONS[@]}" --output reference.png || fail "reference" "rt alone failed"
@@ -29,7 +29,7 @@ for resume_ranks in 3 1; do
         continue
     fi
     ok "rank $kill killed at a journal of $size bytes: no image, the journal kept"
-    if ! timeout 120 "${MPIRUN[@]}" -np $resume_ranks "$RT" "${OPTIONS[@]}" --threads 1 --resume \
+    if ! timeout 300 "${MPIRUN[@]}" -np $resume_ranks "$RT" "${OPTIONS[@]}" --threads 1 --resume \
         --stats --output "$image" 2>"$image.stats.txt"; then
         fail "--resume on $resume_ranks ranks" "mpirun failed: $(grep rt: "$image.stats.txt")"
         continue

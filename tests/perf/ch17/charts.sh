@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Chapter 17's charts, into docs/charts/:
-#   ch17-convergence.svg/.png  RMSE of a single-scattering plume against render time: ray
-#                              marching at four step sizes, delta tracking and ratio tracking of
-#                              the shadow rays, each at 1, 4, 9, 16, ... samples per pixel (squares: the jittered sampler)
+#   ch17-convergence.svg/.png  RMSE of a single-scattering plume against render time: the
+#                              default (transmittance integrated exactly through the voxels),
+#                              ratio and delta tracking, and ray marching at four step sizes,
+#                              each at 1, 4, 9, 16, ... samples per pixel (squares: the jittered sampler)
 #   ch17-convergence.txt       the same points as a Markdown table (\include{doc})
 #   ch17-finding.txt           the finding in one sentence, with numbers (\include{doc})
 #   ch17-majorant.svg/.png     null collisions per real collision, and time per free flight,
@@ -14,15 +15,18 @@
 # usage: tests/perf/ch17/charts.sh BUILD_DIR   (about 6 minutes on 2 idle cores; the POV-Ray chart
 # is skipped, with a note, when povray is not installed)
 #   CH17_ROUNDS=N   timed rounds per point, the fastest kept (default 3)
+#   CH17_CHARTS="convergence majorant povray"   the charts to draw (default: all three)
 #
 # The scene: tests/perf/ch17/plume.lua, the chapter's VDB plume (scenes/assets/plume.nvdb,
 # sigma_s 30, sigma_a 3, g 0.2, scaled 1.1) in a group node over a grey floor, one point light
 # without falloff, 96x96, a jittered sampler, --media-bounces=0 (single scattering), so all the
 # methods estimate the same image: the light scattered once in the smoke towards the camera, and
-# the smoke's shadow on the floor. What the series change:
-#   ratio  --media-shadows=ratio (the default): camera rays find their scattering point by delta
-#          tracking, shadow rays estimate transmittance by ratio tracking;
-#   delta  --media-shadows=delta: shadow rays by delta tracking (0 or 1);
+# the smoke's shadow on the floor. In the first three series a camera ray takes its single
+# scattering at lamp points read off one pass through the smoke (chapter 17, "Where to look for
+# single scattering", change 4); what they change is how a transmittance is estimated:
+#   default  --media-shadows=exact (the default): integrated exactly through the voxel grid;
+#   ratio  --media-shadows=ratio: by ratio tracking;
+#   delta  --media-shadows=delta: by delta tracking (0 or 1);
 #   march  --media=march --media-step=S: a fixed step S from a jittered start along camera rays,
 #          a shadow ray (marched with the same step) at every step. Biased: its error flattens
 #          at a floor set by S.
@@ -44,6 +48,8 @@ rmse=$build/tests/perf/ch08/ch08_aa_charts
 majorant=$build/tests/perf/ch17/ch17_majorant
 [[ -x $rt && -x $rmse ]] || { echo "charts.sh: $rt or $rmse not built" >&2; exit 2; }
 rounds=${CH17_ROUNDS:-3}
+charts_wanted=${CH17_CHARTS:-convergence majorant povray}
+wants() { [[ " $charts_wanted " == *" $1 "* ]]; }
 scene=tests/perf/ch17/plume.lua
 
 run() {  # out.png args... ; prints the render seconds
@@ -53,6 +59,18 @@ run() {  # out.png args... ; prints the render seconds
              END { if (r == "") exit 1; print r }'
 }
 
+# Point labels are plotted after every line and point, in an opaque box (set style textbox), so
+# no later series draws its dots over them.
+draw() {
+    local name=$1
+    printf '%s\n%s\n' "set style textbox opaque noborder margins 0.5,0.5" "$2" >"$data/$name.gp"
+    gnuplot -e "set terminal svg size 720,480 font 'sans,12' background rgb 'white'" \
+            -e "set output '$charts/$name.svg'" "$data/$name.gp"
+    gnuplot -e "set terminal pngcairo size 720,480 font 'sans,10'" \
+            -e "set output '$charts/$name.png'" "$data/$name.gp"
+}
+
+if wants convergence; then
 echo "chapter 17 charts: references (about a minute)" >&2
 run "$data/ref.png" --seed 99 --spp 8100 >/dev/null
 run "$data/ref-check.png" --seed 98 --spp 2025 >/dev/null
@@ -60,7 +78,8 @@ refError=$(awk -v e="$("$rmse" rmse "$data/ref-check.png" "$data/ref.png")" 'BEG
 
 # The series: name, ./rt arguments (no spaces inside one), samples per pixel.
 # The jittered sampler takes square sample counts: roughly doubling, 1 to 576 (24 x 24).
-series=("ratio --media-shadows=ratio 1 4 9 16 36 64 144 256 576"
+series=("default --media-shadows=exact 1 4 9 16 36 64 144 256 576"
+        "ratio --media-shadows=ratio 1 4 9 16 36 64 144 256 576"
         "delta --media-shadows=delta 1 4 9 16 36 64 144 256 576"
         "march-0.1 --media=march,--media-step=0.1 1 4 9 16 36 64 144"
         "march-0.05 --media=march,--media-step=0.05 1 4 9 16 36 64"
@@ -102,7 +121,7 @@ dat, ref_error, finding, table, threads = sys.argv[1], float(sys.argv[2]), sys.a
 series, name = {}, None
 for l in open(dat):
     l = l.strip()
-    if l.startswith("# ratio") or l.startswith("# delta") or l.startswith("# march"):
+    if l.startswith(("# default", "# ratio", "# delta", "# march")):
         name = l[2:]
         series[name] = {}
     elif l and not l.startswith("#"):
@@ -115,7 +134,7 @@ def time_at(points, e):  # log-log interpolation of the time at which a series r
             f = (math.log(e) - math.log(a[1])) / (math.log(b[1]) - math.log(a[1]))
             return math.exp(math.log(a[0]) + f * (math.log(b[0]) - math.log(a[0])))
     return None
-ratio, delta = series["ratio"], series["delta"]
+default, ratio, delta = series["default"], series["ratio"], series["delta"]
 last = max(ratio)
 marches = [k for k in series if k.startswith("march")]
 def step(k):
@@ -125,19 +144,21 @@ def flat(k):  # the error changed by under 5% over the last two sample counts: b
     return 1 - series[k][n[-1]][1] / series[k][n[-2]][1] < 0.05
 floors = ", ".join(f"{series[k][max(series[k])][1]:.4f} at step {step(k)}" for k in marches if flat(k))
 falling = [k for k in marches if not flat(k)]
-# Delta against ratio at equal error: the ratio series' errors from 16 spp on.
-speed = [time_at(delta, ratio[n][1]) / ratio[n][0] for n in sorted(ratio) if n >= 9 and time_at(delta, ratio[n][1])]
-speed.sort()
-med = speed[len(speed) // 2] if speed else None
-# The march that comes closest at equal time: each march point against ratio tracking's time.
+def median_ratio(slow, fast):  # slow's time over fast's at fast's errors, from 9 samples on
+    r = sorted(time_at(slow, fast[n][1]) / fast[n][0] for n in sorted(fast)
+               if n >= 9 and time_at(slow, fast[n][1]))
+    return (r[len(r) // 2], len(r)) if r else (None, 0)
 sentence = (
-    f"On the plume in single scattering (96x96, {threads} threads), ratio tracking's error falls "
-    f"as noise does, from {ratio[1][1]:.4f} at 1 sample per pixel ({ratio[1][0]:.3f} s) to "
-    f"{ratio[last][1]:.4f} at {last} ({ratio[last][0]:.2f} s), and delta tracking's shadow rays "
-    f"reach {delta[last][1]:.4f} in {delta[last][0]:.2f} s")
-if med:
-    sentence += (f" (at equal error delta tracking takes {med:.2f}x ratio tracking's time, median "
-                 f"over {len(speed)} points from 9 samples on)")
+    f"On the plume in single scattering (96x96, {threads} threads), the default (transmittance "
+    f"integrated exactly through the voxels) falls as noise does, from {default[1][1]:.4f} at 1 "
+    f"sample per pixel ({default[1][0]:.3f} s) to {default[last][1]:.4f} at {last} "
+    f"({default[last][0]:.2f} s); ratio tracking reaches {ratio[last][1]:.4f} in "
+    f"{ratio[last][0]:.2f} s and delta tracking {delta[last][1]:.4f} in {delta[last][0]:.2f} s")
+for slow, label in ((ratio, "ratio"), (delta, "delta")):
+    med, count = median_ratio(slow, default)
+    if med:
+        sentence += (f"; at equal error {label} tracking takes {med:.2f}x the default's time "
+                     f"(median over {count} points)")
 sentence += (
     f"; ray marching costs far more per sample (a marched shadow ray at every step) and its error "
     f"stops at a floor set by its step ({floors}, each within 5% of the previous sample count's)")
@@ -146,7 +167,7 @@ if falling:
         f"step {step(k)} still falls, to {series[k][max(series[k])][1]:.4f} at {max(series[k])} "
         f"samples ({series[k][max(series[k])][0]:.2f} s)" for k in falling)
 sentence += (
-    f" (whole-image RMSE against an 8100-sample ratio-tracking reference whose own error is about "
+    f" (whole-image RMSE against an 8100-sample reference whose own error is about "
     f"{ref_error:.4f}).")
 with open(finding, "w") as out:
     out.write(sentence + "\n")
@@ -155,8 +176,8 @@ with open(table, "w") as out:
               "--media-bounces=0, seed 1): RMSE over the whole image against the converged "
               f"reference (own error about {ref_error:.4f}), and the render time in seconds "
               f"({threads} threads, fastest of the rounds).\n\n")
-    names = ["ratio", "delta"] + marches
-    heads = ["ratio tracking", "delta tracking"] + [f"march, step {step(k)}" for k in marches]
+    names = ["default", "ratio", "delta"] + marches
+    heads = ["default (exact)", "ratio tracking", "delta tracking"] + [f"march, step {step(k)}" for k in marches]
     out.write("| spp | " + " | ".join(heads) + " |\n")
     out.write("|---:|" + "---:|" * len(heads) + "\n")
     for n in sorted(ratio):
@@ -166,17 +187,6 @@ with open(table, "w") as out:
             cells.append(f"{p[1]:.4f} ({p[0]:.3g} s)" if p else "")
         out.write(f"| {n} | " + " | ".join(cells) + " |\n")
 PY
-
-# Point labels are plotted after every line and point, in an opaque box (set style textbox), so
-# no later series draws its dots over them.
-draw() {
-    local name=$1
-    printf '%s\n%s\n' "set style textbox opaque noborder margins 0.5,0.5" "$2" >"$data/$name.gp"
-    gnuplot -e "set terminal svg size 720,480 font 'sans,12' background rgb 'white'" \
-            -e "set output '$charts/$name.svg'" "$data/$name.gp"
-    gnuplot -e "set terminal pngcairo size 720,480 font 'sans,10'" \
-            -e "set output '$charts/$name.png'" "$data/$name.gp"
-}
 
 draw ch17-convergence "
 set title 'Single-scattering plume: error against time (96x96, points at 1, 4, 9, 16, 36, ... spp)'
@@ -189,19 +199,25 @@ set grid
 set yrange [0.0008:0.5]
 set key top right reverse Left box opaque font ',8'
 set label sprintf('own error of the reference (estimated): %.4f', $refError) at graph 0.55, first $refError offset 0,0.7 font ',9' tc rgb 'gray40'
-plot '$data/convergence.dat' index 0 using 2:3 with linespoints pt 7 lw 2.5 lc rgb '#dd3333' title 'ratio tracking (shadows), delta tracking (camera rays)', \\
-     '' index 1 using 2:3 with linespoints pt 5 lw 2 lc rgb '#e8a33d' title 'delta tracking (shadows and camera rays)', \\
-     '' index 2 using 2:3 with linespoints pt 6 lc rgb '#8fb3d9' title 'ray marching, step 0.1', \\
-     '' index 3 using 2:3 with linespoints pt 4 lc rgb '#4a7fbf' title 'ray marching, step 0.05', \\
-     '' index 4 using 2:3 with linespoints pt 8 lc rgb '#1f4e8c' title 'ray marching, step 0.02', \\
-     '' index 5 using 2:3 with linespoints pt 10 lc rgb '#0b2447' title 'ray marching, step 0.01', \\
+plot '$data/convergence.dat' index 0 using 2:3 with linespoints pt 7 lw 2.5 lc rgb '#2a9d4a' title 'default: transmittance integrated exactly through the voxels', \\
+     '' index 1 using 2:3 with linespoints pt 7 lw 2 lc rgb '#dd3333' title 'ratio tracking of the transmittance', \\
+     '' index 2 using 2:3 with linespoints pt 5 lw 2 lc rgb '#e8a33d' title 'delta tracking of the transmittance', \\
+     '' index 3 using 2:3 with linespoints pt 6 lc rgb '#8fb3d9' title 'ray marching, step 0.1', \\
+     '' index 4 using 2:3 with linespoints pt 4 lc rgb '#4a7fbf' title 'ray marching, step 0.05', \\
+     '' index 5 using 2:3 with linespoints pt 8 lc rgb '#1f4e8c' title 'ray marching, step 0.02', \\
+     '' index 6 using 2:3 with linespoints pt 10 lc rgb '#0b2447' title 'ray marching, step 0.01', \\
      $refError with lines dt 2 lc rgb 'gray50' notitle, \\
-     '' index 0 using 2:3:1 with labels boxed offset char -0.8,-1 font ',8' tc rgb '#dd3333' notitle, \\
-     '' index 5 using 2:3:1 with labels boxed offset char 0.8,1 font ',8' tc rgb '#0b2447' notitle
+     '' index 0 using 2:3:1 with labels boxed offset char -0.8,-1 font ',8' tc rgb '#2a9d4a' notitle, \\
+     '' index 6 using 2:3:1 with labels boxed offset char 0.8,1 font ',8' tc rgb '#0b2447' notitle
 "
+else
+    echo "charts: ch17-convergence not asked for (CH17_CHARTS)"
+fi
 
 # The majorant grid.
-if [ -x "$majorant" ]; then
+if ! wants majorant; then
+    echo "charts: ch17-majorant not asked for (CH17_CHARTS)"
+elif [ -x "$majorant" ]; then
     (cd "$root" && "$majorant" scenes/assets/plume.nvdb 100000) | tee "$data/majorant.out"
     grep -v '^target ' "$data/majorant.out" >"$charts/ch17-majorant.txt"
     awk '$1 ~ /^[0-9]+$/ && NF == 8' "$data/majorant.out" >"$data/majorant.dat"
@@ -229,7 +245,9 @@ else
     echo "charts: $majorant not built; ch17-majorant not redrawn"
 fi
 
-if command -v povray >/dev/null; then
+if ! wants povray; then
+    echo "charts: ch17-povray not asked for (CH17_CHARTS)"
+elif command -v povray >/dev/null; then
     bash "$root/tests/perf/ch17/media_vs_povray.sh" "$build" "$data/povray" | tee "$data/povray.txt"
     grep -v '^target ' "$data/povray.txt" >"$charts/ch17-povray.txt"
     draw ch17-povray "

@@ -4,7 +4,7 @@
 --   (its light is almost all multiply scattered: a path scatters hundreds of times);
 --   white ball: unit sphere at (1.1, 0, 0), kd 0.8;
 --   one point light without falloff at (2, 4, 5), intensity 1; ambient 0.1; black background;
---   16 jittered samples a pixel, multiple scattering on (--media-bounces 256, the default).
+--   16 jittered samples a pixel, multiple scattering on (no cap on the walk, the default).
 gr.antialias{sampler = 'jittered', samples = 16}
 local root = gr.node('root')
 
