@@ -135,25 +135,19 @@ def main():
         if 4 in held:
             fail("throw", f"the failed tile 4 is in the journal: {held}")
         resume_case("throw", rt_fault, image, held, reference)
-    # A tile that never finishes: rank 0 stops the job once the lease is 2 s overdue.
-    hung = (r"^rt: rank 1 \(host \S+, pid \d+\) has returned nothing for over 2 s "
-            r"\(--tile-timeout\) while rendering " + TILE.format(k=1) +
-            r", so the job stops without writing an image; " + resume)
-    if done := fault_case("hang", rt_fault, out, "rank:1,tile:1,kind:hang",
-                          ["--tile-timeout", "2", "--partial"], hung):
-        image, held, text = done
-        check_partial("hang", image, len(held), text, TILES)
-        resume_case("hang", rt_fault, image, held, reference)
-    # A tile that never finishes on rank 0, which watches the others: its watcher thread sees
-    # its own lease overdue (the main thread, the one that may call MPI, is the hung one).
-    hung0 = (r"^rt: rank 0 \(host \S+, pid \d+\) has finished nothing for over 2 s "
-             r"\(--tile-timeout\) while rendering " + TILE.format(k=6) +
-             r", so the job stops without writing an image; " + resume)
-    if done := fault_case("hang0", rt_fault, out, "rank:0,tile:6,kind:hang",
-                          ["--tile-timeout", "2", "--partial"], hung0):
-        image, held, text = done
-        check_partial("hang0", image, len(held), text, TILES)
-        resume_case("hang0", rt_fault, image, held, reference)
+    # A tile that never finishes: rank 0 stops the job once the lease is 2 s overdue. On a
+    # worker, rank 0's main thread sees it; on rank 0 itself, its watcher thread does (the main
+    # thread, the one that may call MPI, is the hung one).
+    for name, rank, tile, verb in (("hang", 1, 1, "has returned nothing"),
+                                   ("hang0", 0, 6, "has finished nothing")):
+        hung = (rf"^rt: rank {rank} \(host \S+, pid \d+\) {verb} for over 2 s "
+                r"\(--tile-timeout\) while rendering " + TILE.format(k=tile) +
+                r", so the job stops without writing an image; " + resume)
+        if done := fault_case(name, rt_fault, out, f"rank:{rank},tile:{tile},kind:hang",
+                              ["--tile-timeout", "2", "--partial"], hung):
+            image, held, text = done
+            check_partial(name, image, len(held), text, TILES)
+            resume_case(name, rt_fault, image, held, reference)
     return finish()
 
 
