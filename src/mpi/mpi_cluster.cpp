@@ -358,8 +358,10 @@ void MpiCluster::watch() {
             endJob();
         }
         if (ownLeaseOverdue()) {
+            // Copied under the lock: the main thread may yet finish the lease and clear it.
+            const OwnLease own = *ownLease_;
             lock.unlock();
-            endForOwnHang();
+            endForOwnHang(own);
         }
         wake_.wait_for(lock, std::chrono::milliseconds(10));
     }
@@ -457,13 +459,8 @@ bool MpiCluster::ownLeaseOverdue() const {
     return std::chrono::duration<double>(elapsed).count() > ownLease_->limit;
 }
 
-void MpiCluster::endForOwnHang() {
+void MpiCluster::endForOwnHang(const OwnLease& own) {
     // Step 1: rank 0's own lease is overdue: say so, as for a worker.
-    OwnLease own;
-    {
-        std::lock_guard lock(mutex_);
-        own = *ownLease_;
-    }
     sayHang({{0, own.tiles}}, own.limit, *own.work);
     // Step 2: end the job without an MPI call (only the main thread may make one, and it is the
     // hung one). The workers of this machine get SIGTERM and exit silently, since rank 0 is

@@ -93,9 +93,9 @@ class MpiCluster final : public Cluster {
                                  const TileWork& work);
     /// Rank 0, under the watcher's lock: its own lease has run past its limit.
     bool ownLeaseOverdue() const;
-    /// Rank 0's watcher: its own lease is overdue (a tile that never finishes). Say so, then
-    /// end the job without an MPI call (exit 1).
-    [[noreturn]] void endForOwnHang();
+    /// Rank 0's watcher: its own lease `own` is overdue (a tile that never finishes). Say so,
+    /// then end the job without an MPI call (exit 1).
+    [[noreturn]] void endForOwnHang(const OwnLease& own);
     /// Rank 0: the lease it renders now, or none.
     void setOwnLease(std::optional<OwnLease> lease) {
         std::lock_guard lock(mutex_);
