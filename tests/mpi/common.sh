@@ -10,6 +10,11 @@ mpi() { "${MPIRUN[@]}" "$@"; }
 command -v mpirun >/dev/null || { echo "FAIL mpirun not found (make mpi installs Open MPI)"; exit 1; }
 
 SHOWCASE=$ROOT/scenes/showcase.lua
+# Under the sanitizers (make test-sanitize sets RB_SANITIZE=1) a render is several times slower,
+# and what they check is the code each case runs, not how many pixels it runs on: the tests
+# that render the showcase again and again divide its width and height by SHRINK.
+SHRINK=1
+[ -n "${RB_SANITIZE:-}" ] && SHRINK=2
 # The showcase with every chapter's sampling on but cheap: --preview's one sample of each, then
 # jittered antialiasing, 2x2 area-light and glossy samples, 4 lens samples and two photon passes
 # of 20,000 (chapters 1-16 all take part: tone map, photons, CSG, quadrics, textures, bump, ...).

@@ -32,10 +32,13 @@ compare() {
     done
 }
 
-compare showcase "1x1 1x2 2x1 2x2 3x1 3x2 4x1 4x2" "${SHOWCASE_OPTIONS[@]}" --size 128x80
-compare adaptive-seed7 "2x2 3x1" --quiet --size 96x64 --aa=adaptive --light-samples=1 \
-    --glossy-samples=1 --dof-samples=1 --photon-passes=1 --photons=20000 --seed 7
-compare static "3x1" "${SHOWCASE_OPTIONS[@]}" --size 96x64 --mpi-lease static
+# The sizes are halved under the sanitizers (SHRINK, common.sh).
+compare showcase "1x1 1x2 2x1 2x2 3x1 3x2 4x1 4x2" "${SHOWCASE_OPTIONS[@]}" \
+    --size $((128 / SHRINK))x$((80 / SHRINK))
+compare adaptive-seed7 "2x2 3x1" --quiet --size $((96 / SHRINK))x$((64 / SHRINK)) --aa=adaptive \
+    --light-samples=1 --glossy-samples=1 --dof-samples=1 --photon-passes=1 --photons=20000 --seed 7
+compare static "3x1" "${SHOWCASE_OPTIONS[@]}" --size $((96 / SHRINK))x$((64 / SHRINK)) \
+    --mpi-lease static
 # Rendering to an error: the ranks share the pilot (each takes every size-th tile), then every
 # pixel's planned samples; the same bytes as one process.
 compare target-error "1x2 3x1" --quiet --size 48x32 --target-error 0.05 --light-samples=1 \

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """What the job says when it ends early under mpirun (src/mpi/job_end.h).
 
-The showcase at 256x160 (160 tiles, so that under load the signal lands long before the end) renders on 3 ranks; once its journal holds a few tiles:
+The showcase at 256x160 (160 tiles, so that under load the signal lands long before the end;
+128x80 under the sanitizers, SHRINK) renders on 3 ranks; once its journal holds a few tiles:
 - Ctrl-C to mpirun (SIGINT), with --partial: mpirun exits 1; rank 0 says, once, that mpirun
   stopped the job and how many tiles the journal holds (its whole records), with the command
   that resumes; the partial image holds exactly those tiles;
@@ -23,12 +24,13 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from mpi_helpers import (MPIRUN, OPTIONS, SHOWCASE, fail, finish, journal_positions, ok,
+from mpi_helpers import (MPIRUN, OPTIONS, SHOWCASE, SHRINK, fail, finish, journal_positions, ok,
                          rank_pid, setup, start, wait, when_journal_grows)
 from png_read import read_png
 
-SIZE = "256x160"
-TILES = (256 // 16) * (160 // 16)
+WIDTH, HEIGHT = 256 // SHRINK, 160 // SHRINK
+SIZE = f"{WIDTH}x{HEIGHT}"
+TILES = (WIDTH // 16) * (HEIGHT // 16)
 
 
 def lit_tiles(path):

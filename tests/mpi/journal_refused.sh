@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # A journal from another render is refused: a render killed halfway leaves a journal of the
-# showcase at 256x160, seed 0; --resume with another seed, size or scene, a journal whose rt
-# version differs, and a file that is no journal each end with one clear message naming what
-# differs, exit code 1 and no image, and leave the journal as it was. The right --resume then
-# still finishes the image byte-identical to one process's.
+# showcase at 256x160 (128x80 under the sanitizers: SHRINK, common.sh), seed 0; --resume with
+# another seed, size or scene, a journal whose rt version differs, and a file that is no journal
+# each end with one clear message naming what differs, exit code 1 and no image, and leave the
+# journal as it was. The right --resume then still finishes the image byte-identical to one
+# process's.
 # Usage: bash tests/mpi/journal_refused.sh RT_BINARY OUT_DIR
 set -u
 source "$(dirname "$0")/../check_helpers.sh"
@@ -12,7 +13,9 @@ rt_and_out_dir "$@"
 cd "$OUT" && rm -f ./*.png ./*.journal ./*.txt
 
 OPTIONS=("${SHOWCASE_OPTIONS[@]}" --light-samples=3 --threads 1)
-kill_halfway 2 1 $((256 * 160 * 12)) out.png "${OPTIONS[@]}" --size 256x160 "$SHOWCASE" \
+W=$((256 / SHRINK)) H=$((160 / SHRINK))
+SIZE=${W}x$H TALLER=${W}x$((H + 16))
+kill_halfway 2 1 $((W * H * 12)) out.png "${OPTIONS[@]}" --size $SIZE "$SHOWCASE" \
     >/dev/null || fail "setup" "the render ended before it could be killed"
 cp out.png.journal saved.journal
 
@@ -32,23 +35,23 @@ refused() {
         ok "$name refused: $(grep '^rt: error:' "$name.txt")"
     fi
 }
-refused "another seed" "another render: seed 0, this render has 3" --size 256x160 --seed 3 "$SHOWCASE"
-refused "another size" "another render: size 256x160, this render has 256x176" --size 256x176 "$SHOWCASE"
+refused "another seed" "another render: seed 0, this render has 3" --size $SIZE --seed 3 "$SHOWCASE"
+refused "another size" "another render: size $SIZE, this render has $TALLER" --size $TALLER "$SHOWCASE"
 other=$OUT/other-scene.lua
 sed 's/0\.12/0.125/' "$SHOWCASE" >"$other"  # a wider aperture: another scene
-refused "another scene" "another render: scene" --size 256x160 --assets "$ROOT/scenes" "$other"
+refused "another scene" "another render: scene" --size $SIZE --assets "$ROOT/scenes" "$other"
 sed -i '2s/^version=.*/version=0.0.1 (commit 0000000)/' out.png.journal
 cp out.png.journal saved.journal
-refused "another rt version" "another render: version 0.0.1" --size 256x160 "$SHOWCASE"
+refused "another rt version" "another render: version 0.0.1" --size $SIZE "$SHOWCASE"
 cp saved.journal old.journal
 echo "not a journal" >out.png.journal && cp out.png.journal saved.journal
-refused "a file that is no journal" "not a raybook tile journal" --size 256x160 "$SHOWCASE"
+refused "a file that is no journal" "not a raybook tile journal" --size $SIZE "$SHOWCASE"
 
 # The kept journal still finishes the image.
-kill_halfway 2 1 $((256 * 160 * 12)) out.png "${OPTIONS[@]}" --size 256x160 "$SHOWCASE" \
+kill_halfway 2 1 $((W * H * 12)) out.png "${OPTIONS[@]}" --size $SIZE "$SHOWCASE" \
     >/dev/null || fail "setup" "the render ended before it could be killed"
-"$RT" "${OPTIONS[@]}" --size 256x160 --output reference.png "$SHOWCASE"
-if timeout 300 "${MPIRUN[@]}" -np 2 "$RT" "${OPTIONS[@]}" --resume --size 256x160 \
+"$RT" "${OPTIONS[@]}" --size $SIZE --output reference.png "$SHOWCASE"
+if timeout 300 "${MPIRUN[@]}" -np 2 "$RT" "${OPTIONS[@]}" --resume --size $SIZE \
     --output out.png "$SHOWCASE" && cmp -s out.png reference.png; then
     ok "the right --resume finishes the image byte-identical to one process's"
 else

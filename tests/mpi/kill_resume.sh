@@ -12,7 +12,7 @@ kill=${3:?usage: kill_resume.sh RT_BINARY OUT_DIR KILL}
 rt_and_out_dir "$1" "$2"
 cd "$OUT" && rm -f ./*.png ./*.journal ./*.txt
 
-W=256 H=160
+W=$((256 / SHRINK)) H=$((160 / SHRINK))
 OPTIONS=("${SHOWCASE_OPTIONS[@]}" --light-samples=3 --size ${W}x$H "$SHOWCASE")
 TILES=$(((W + 15) / 16 * ((H + 15) / 16)))
 "$RT" "${OPTIONS[@]}" --output reference.png || fail "reference" "rt alone failed"

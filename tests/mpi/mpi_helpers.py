@@ -14,6 +14,10 @@ OPTIONS = ["--quiet", "--preview", "--aa=jittered", "--light-samples=2", "--glos
            "--dof-samples=4", "--photon-passes=2", "--photons=20000", "--threads", "1"]
 # CI runs as root on 2 cores; -q keeps Open MPI's banners off stderr.
 MPIRUN = ["mpirun", "-q", "--oversubscribe"]
+# Under the sanitizers (make test-sanitize sets RB_SANITIZE=1) a render is several times slower,
+# and they check the code each case runs, not how many pixels: tests that render the showcase
+# again and again divide its width and height by SHRINK (as common.sh does).
+SHRINK = 2 if os.environ.get("RB_SANITIZE") else 1
 TIMEOUT = 120  # seconds one mpirun may take before a test gives up on it
 
 checks = {"passed": 0, "failed": 0}
