@@ -541,11 +541,8 @@ Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& r
         if (pointsOn(piece, points)) {
             for (const PointLight& source : ctx.scene.lights) {
                 const PiecePoints place = piecePoints(ray, piece, source);
-                // Step 1: how many: `points` where it is a whole number, else (below 1) one
-                // point with that chance, its estimate divided by the chance.
-                const int n = points >= 1.0                   ? static_cast<int>(points)
-                              : ctx.sampler.next1D() < points ? 1
-                                                              : 0;
+                // Step 1: `points` of them (a whole number).
+                const int n = static_cast<int>(points);
                 for (int k = 0; k < n; ++k) {
                     // Step 2: a point on the piece, where this light's single scattering is
                     // (the points stratified: one in each equal share of the distribution).
@@ -595,9 +592,7 @@ Colour ParticipatingMedia::trackedScattered(const ShadeContext& ctx, const Ray& 
     if (spread.total > 0.0)
         for (const PointLight& source : ctx.scene.lights) {
             const PiecePoints place = piecePoints(ray, piece, source);
-            const int n = points >= 1.0                   ? static_cast<int>(points)
-                          : ctx.sampler.next1D() < points ? 1
-                                                          : 0;
+            const int n = static_cast<int>(points);
             for (int k = 0; k < n; ++k) {
                 const double u = (k + ctx.sampler.next1D()) / n;
                 if (place.equiangular) {

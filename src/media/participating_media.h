@@ -49,8 +49,8 @@ struct MediaSettings {
     MediaDirect direct = MediaDirect::Mis;  ///< Where single scattering is sampled.
     /// Lamp points per lamp per pixel, shared among the pixel's samples (--media-points).
     int points = 64;
-    /// Lamp points per lamp along a path's first ray: points / samples per pixel, a whole
-    /// number where that is 1 or more, else the chance of one point (its later rays take none).
+    /// Lamp points per lamp along a path's first ray: points / samples per pixel rounded, and
+    /// at least 1 (its later rays take none).
     double pointsPerRay = 4.0;
 };
 
@@ -90,7 +90,7 @@ class ParticipatingMedia final : public MediaTerm {
         const Ray* ray;
         Piece piece;
         double t;
-        double points;  ///< Lamp points per lamp on that ray (0: none; below 1, a chance).
+        double points;  ///< Lamp points per lamp on that ray (0: none).
     };
 
     /// The light that a particle at x of medium m scatters along the unit direction `travel`
