@@ -319,17 +319,14 @@ int run(int argc, char** argv, Cluster& cluster) {
             throw InputError(
                 "--aov sample-count maps the samples of a --target-error render; "
                 "give --target-error E (or the scene's target_error)");
-        // The samples each pixel took are known where it was rendered: on one process.
+        // The samples each pixel took, and its estimated error: under MPI each rank records
+        // its own tiles', and the first gathers them after the render.
         std::optional<SampleMap> sampleMap;
-        if (settings.target.on() && !cluster.distributed()) {
+        if (settings.target.on()) {
             sampleMap.emplace(world->source.job.width, world->source.job.height,
                               settings.target.minSamples);
             settings.sampleMap = &*sampleMap;
         }
-        if (cl.aovSampleCount && !sampleMap)
-            throw InputError(
-                "--aov sample-count: under MPI the ranks bring back only colours; "
-                "render on one process for the heat map");
         PartialImage partial;
         if (cl.partial) settings.partial = &partial;
         RayCounters counters;
@@ -410,12 +407,15 @@ int run(int argc, char** argv, Cluster& cluster) {
                              "  target     error %.4g; %d pilot samples, then %d to %d per pixel\n",
                              settings.target.error, settings.target.minSamples,
                              settings.target.minSamples, settings.target.maxSamples);
-                if (sampleMap)
-                    std::fprintf(stderr,
-                                 "  samples    mean %.1f, max %u per pixel; estimated RMS error "
-                                 "%.4g\n",
-                                 sampleMap->meanSamples(), sampleMap->maxSamples(),
-                                 sampleMap->rmsError());
+                std::fprintf(stderr,
+                             "  samples    mean %.1f, max %u per pixel; estimated RMS error %.4g",
+                             sampleMap->meanSamples(), sampleMap->maxSamples(),
+                             sampleMap->rmsError());
+                const std::size_t all = sampleMap->samples.size();
+                if (const std::size_t n = sampleMap->recordedPixels(); n < all)
+                    std::fprintf(stderr, " (over the %zu of %zu pixels rendered now; --resume "
+                                 "took the others from the journal)", n, all);
+                std::fputc('\n', stderr);
             }
             std::fprintf(stderr, "  speed      %.2f Mrays/s\n",
                          counters.total() / std::max(renderSeconds, 1e-9) / 1e6);

@@ -306,6 +306,13 @@ double renderImageTile(const ImageTile& tile, const Pipeline& pipeline,
     return 0.0;
 }
 
+/// Under many processes, the samples each rank recorded for its tiles, into the first's `map`.
+/// Collective: every process calls it after the same renderTiles.
+void gatherSampleMap(Cluster& cluster, SampleMap& map) {
+    const std::vector<std::byte> mine = map.packRecorded();
+    for (const std::vector<std::byte>& part : cluster.gatherToFirst(mine)) map.recordPacked(part);
+}
+
 /// Black out a tile a stop left half-done, as the tiles not reached are.
 void dropTile(const ImageTile& tile, Image& image) {
     for (int y = tile.y0; y < tile.y1; ++y)
@@ -447,7 +454,7 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         const auto renderOne = [&](int k, Image& film, RayCounters& rays) {
             PixelStop stop(settings.shouldStop, clusterStopped);
             renderImageTile(tiles[k], pipeline, integrator, camera, width, height, settings, plan,
-                            nullptr, film, rays, stop);
+                            settings.sampleMap, film, rays, stop);
         };
         std::atomic<std::size_t> tilesDone{0};  // in this film (rank 0: every rank's)
         const auto started = [&](int k) { progress.tileStarted(k); };
@@ -470,6 +477,8 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
             throw;
         }
         progress.finish();
+        // Each rank recorded the samples of its own tiles: the first gathers them (--stats).
+        if (settings.sampleMap) gatherSampleMap(*settings.cluster, *settings.sampleMap);
         return image;
     }
 

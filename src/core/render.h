@@ -60,8 +60,8 @@ struct RenderSettings {
     /// --target-error: each pixel samples until its error is at most target.error (between a
     /// floor and a ceiling), in place of samplesPerPixel and of any pixel sampler (chapter 8).
     TargetError target;
-    /// Under a target, on one process: receives each pixel's sample count and spread (the
-    /// cluster brings back only colours). Null: not kept.
+    /// Under a target: receives each pixel's sample count and spread (under a cluster, each
+    /// process its own tiles', and the first all of them once the render ends). Null: not kept.
     SampleMap* sampleMap = nullptr;
 };
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <stdexcept>
 
 #include "core/error.h"
 
@@ -122,21 +124,60 @@ void SampleMap::record(int x, int y, int count, double varianceOfMean) {
     meanVariance[i] = static_cast<float>(varianceOfMean);
 }
 
+std::size_t SampleMap::recordedPixels() const {
+    return samples.size() -
+           static_cast<std::size_t>(std::count(samples.begin(), samples.end(), 0u));
+}
+
 double SampleMap::meanSamples() const {
+    const std::size_t n = recordedPixels();
     double sum = 0.0;
-    for (std::uint32_t n : samples) sum += n;
-    return samples.empty() ? 0.0 : pilot + sum / static_cast<double>(samples.size());
+    for (std::uint32_t k : samples) sum += k;
+    return n == 0 ? 0.0 : pilot + sum / static_cast<double>(n);
 }
 
 std::uint32_t SampleMap::maxSamples() const {
-    return samples.empty() ? 0 : pilot + *std::max_element(samples.begin(), samples.end());
+    return recordedPixels() == 0 ? 0
+                                 : pilot + *std::max_element(samples.begin(), samples.end());
 }
 
 double SampleMap::rmsError() const {
-    if (samples.empty()) return 0.0;
-    double sum = 0.0;
+    const std::size_t n = recordedPixels();
+    if (n == 0) return 0.0;
+    double sum = 0.0;  // A pixel not recorded adds its 0.
     for (float v : meanVariance) sum += v;
-    return std::sqrt(sum / static_cast<double>(samples.size()));
+    return std::sqrt(sum / static_cast<double>(n));
+}
+
+namespace {
+/// One recorded pixel as packRecorded writes it.
+struct PackedPixel {
+    std::uint32_t index;
+    std::uint32_t samples;
+    float meanVariance;
+};
+}  // namespace
+
+std::vector<std::byte> SampleMap::packRecorded() const {
+    std::vector<PackedPixel> pixels;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        if (samples[i] != 0)
+            pixels.push_back({static_cast<std::uint32_t>(i), samples[i], meanVariance[i]});
+    const auto bytes = std::as_bytes(std::span(pixels));
+    return {bytes.begin(), bytes.end()};
+}
+
+void SampleMap::recordPacked(std::span<const std::byte> packed) {
+    if (packed.size() % sizeof(PackedPixel) != 0)
+        throw std::runtime_error("a sample map's bytes are not whole pixels");
+    for (std::size_t at = 0; at < packed.size(); at += sizeof(PackedPixel)) {
+        PackedPixel p;
+        std::memcpy(&p, packed.data() + at, sizeof p);
+        if (p.index >= samples.size())
+            throw std::runtime_error("a sample map's pixel lies outside the image");
+        samples[p.index] = p.samples;
+        meanVariance[p.index] = p.meanVariance;
+    }
 }
 
 Image sampleHeatMap(const SampleMap& map) {

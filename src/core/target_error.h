@@ -12,7 +12,9 @@
 /// proportion to the spread minimise the total variance for a given number of samples).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -90,14 +92,23 @@ struct SampleMap {
           meanVariance(static_cast<std::size_t>(w) * h, 0.0f) {}
     /// Record that pixel (x, y) took `count` fresh samples, with `varianceOfMean`.
     void record(int x, int y, int count, double varianceOfMean);
-    /// Mean samples per pixel, pilot included.
+    /// The pixels recorded: every pixel of a whole render, fewer when --resume took some from
+    /// a journal (a pixel's fresh samples are at least the floor, so 0 means not recorded).
+    std::size_t recordedPixels() const;
+    /// Mean samples per recorded pixel, pilot included.
     double meanSamples() const;
     /// The most samples any pixel took, pilot included.
     std::uint32_t maxSamples() const;
-    /// The image's estimated RMS error: the root of the mean, over pixels, of each pixel's
-    /// estimated variance of its mean. Unbiased for the mean squared error, since each count
-    /// was fixed before its samples were drawn.
+    /// The estimated RMS error of the recorded pixels: the root of the mean, over them, of each
+    /// pixel's estimated variance of its mean. Unbiased for the mean squared error, since each
+    /// count was fixed before its samples were drawn.
     double rmsError() const;
+
+    /// The recorded pixels as bytes, for another process's map (under MPI each rank records
+    /// the pixels of its own tiles).
+    std::vector<std::byte> packRecorded() const;
+    /// Record the pixels another map packed (packRecorded), over this map's.
+    void recordPacked(std::span<const std::byte> packed);
 };
 
 /// The samples each pixel of `map` took (pilot included) as a heat map: black at 0, through

@@ -2,7 +2,8 @@
 # Rendering on many processes gives the bytes one process gives: the showcase (every chapter,
 # cheap settings, see common.sh) on ranks {1, 2, 3, 4} x threads {1, 2}, compared byte for byte
 # with rt run alone; then other seeds and samplers (adaptive antialiasing, chapter 8's pixel
-# sampler, and --seed) on 2 and 3 ranks, a static split, and a render to a target error.
+# sampler, and --seed) on 2 and 3 ranks, a static split, and a render to a target error, whose
+# --stats line and sample-count heat map on 3 ranks are one process's too.
 # Usage: bash tests/mpi/identical.sh RT_BINARY OUT_DIR
 set -u
 source "$(dirname "$0")/../check_helpers.sh"
@@ -41,6 +42,20 @@ compare static "3x1" "${SHOWCASE_OPTIONS[@]}" --size $((96 / SHRINK))x$((64 / SH
     --mpi-lease static
 # Rendering to an error: the ranks share the pilot (each takes every size-th tile), then every
 # pixel's planned samples; the same bytes as one process.
-compare target-error "1x2 3x1" --quiet --size 48x32 --target-error 0.05 --light-samples=1 \
-    --glossy-samples=1 --photon-passes=1 --photons=20000
+TARGET=(--quiet --size 48x32 --target-error 0.05 --light-samples=1 --glossy-samples=1
+        --photon-passes=1 --photons=20000)
+compare target-error "1x2 3x1" "${TARGET[@]}"
+# What it spent and estimated: rank 0 gathers each rank's samples, so --stats says what one
+# process says and --aov sample-count draws the same heat map.
+"$RT" "${TARGET[@]}" --stats --aov sample-count --output spent-ref.png "$SHOWCASE" 2>spent-ref.txt
+timeout 120 "${MPIRUN[@]}" -np 3 "$RT" "${TARGET[@]}" --threads 1 --stats --aov sample-count \
+    --output spent-3.png "$SHOWCASE" 2>spent-3.txt
+spent=$(grep -h '^  samples ' spent-ref.txt)
+if [ -z "$spent" ] || [ "$spent" != "$(grep -h '^  samples ' spent-3.txt)" ]; then
+    fail "target-error --stats on 3 ranks" "one process: '$spent'; 3 ranks: '$(grep -h '^  samples ' spent-3.txt)'"
+elif ! cmp -s spent-ref.samples.png spent-3.samples.png; then
+    fail "target-error --aov sample-count on 3 ranks" "the heat map differs from one process's"
+else
+    ok "target-error on 3 ranks: --stats says what one process says ($(echo $spent)), and the heat map is the same bytes"
+fi
 finish
