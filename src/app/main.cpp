@@ -407,14 +407,15 @@ int run(int argc, char** argv, Cluster& cluster) {
                              "  target     error %.4g; %d pilot samples, then %d to %d per pixel\n",
                              settings.target.error, settings.target.minSamples,
                              settings.target.minSamples, settings.target.maxSamples);
-                std::fprintf(stderr,
-                             "  samples    mean %.1f, max %u per pixel; estimated RMS error %.4g",
-                             sampleMap->meanSamples(), sampleMap->maxSamples(),
-                             sampleMap->rmsError());
+                std::fprintf(
+                    stderr, "  samples    mean %.1f, max %u per pixel; estimated RMS error %.4g",
+                    sampleMap->meanSamples(), sampleMap->maxSamples(), sampleMap->rmsError());
                 const std::size_t all = sampleMap->samples.size();
                 if (const std::size_t n = sampleMap->recordedPixels(); n < all)
-                    std::fprintf(stderr, " (over the %zu of %zu pixels rendered now; --resume "
-                                 "took the others from the journal)", n, all);
+                    std::fprintf(stderr,
+                                 " (over the %zu of %zu pixels rendered now; --resume "
+                                 "took the others from the journal)",
+                                 n, all);
                 std::fputc('\n', stderr);
             }
             std::fprintf(stderr, "  speed      %.2f Mrays/s\n",

@@ -137,8 +137,7 @@ double SampleMap::meanSamples() const {
 }
 
 std::uint32_t SampleMap::maxSamples() const {
-    return recordedPixels() == 0 ? 0
-                                 : pilot + *std::max_element(samples.begin(), samples.end());
+    return recordedPixels() == 0 ? 0 : pilot + *std::max_element(samples.begin(), samples.end());
 }
 
 double SampleMap::rmsError() const {

@@ -140,7 +140,9 @@ Feature mediaFeature() {
               "single scattering in homogeneous media: free flights, lamp points, or both by MIS",
               "mis"},
              {"media-points", "N",
-              "lamp points per lamp per pixel, shared by its samples, at least one each (1 to 1024)", "64"},
+              "lamp points per lamp per pixel, shared by its samples, at least one each (1 to "
+              "1024)",
+              "64"},
              {"media-step", "S", "ray-marching step, in scene units",
               "1/400 of the scene's size (fog box diagonal)"},
              {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
