@@ -8,10 +8,12 @@ thread: rank 1's first leases are tiles 0-2, rank 2's tiles 3-5, so both faults 
 to fire) renders on 3 ranks:
 - kind:throw on rank 2: mpirun exits 1, with one line naming the rank, its host and pid, the
   tile and its pixels, the fault, what the journal holds and the command that resumes; no image;
-- kind:hang on rank 1, with --tile-timeout 2 and --partial: rank 0 sees the lease overdue and
-  stops the job: exit 1, one line naming the rank, its pid and the tile, the journal and the
-  resume command; no image, and the partial image holds exactly the journal's tiles;
-- kind:hang on rank 0 itself (its first lease is tile 6), with --tile-timeout 2 and --partial:
+- kind:hang on rank 1, with --tile-timeout 2 (15 under the sanitizers) and --partial: rank 0
+  sees the lease overdue and stops the job: exit 1, one line naming the rank, its pid and the
+  tile, the journal and the resume command; no image, and the partial image holds exactly the
+  journal's tiles;
+- kind:hang on rank 0 itself (its first lease is tile 6), with the same --tile-timeout and
+  --partial:
   rank 0's watcher sees its own lease overdue and says so in the same words, and the job ends
   as above (exit 1, one line, no image, the partial image holds the journal's tiles);
 - after each, --resume without the fault says it reused the journal's tiles and writes the
@@ -37,6 +39,10 @@ RENDER = OPTIONS + ["--size", SIZE]
 # A tile's name in rt's message: its position, then first..last column x first..last row.
 TILE = r"tile {k} \(pixels (\d+)\.\.(\d+) x (\d+)\.\.(\d+)\)"
 LIMIT = 60  # seconds a run may take (each takes a few here)
+# --tile-timeout for the hang cases: 2 s, or 15 s under the sanitizers (RB_SANITIZE), where a
+# rank's honest tile on a busy machine once took over 2 s, and rank 0 took its own slow tile
+# for a hang before the injected one was due. A hang never ends, so either limit catches it.
+HANG_LIMIT = 15 if os.environ.get("RB_SANITIZE") else 2
 
 
 def run(command, fault=None):
@@ -135,16 +141,16 @@ def main():
         if 4 in held:
             fail("throw", f"the failed tile 4 is in the journal: {held}")
         resume_case("throw", rt_fault, image, held, reference)
-    # A tile that never finishes: rank 0 stops the job once the lease is 2 s overdue. On a
+    # A tile that never finishes: rank 0 stops the job once the lease is HANG_LIMIT s overdue. On a
     # worker, rank 0's main thread sees it; on rank 0 itself, its watcher thread does (the main
     # thread, the one that may call MPI, is the hung one).
     for name, rank, tile, verb in (("hang", 1, 1, "has returned nothing"),
                                    ("hang0", 0, 6, "has finished nothing")):
-        hung = (rf"^rt: rank {rank} \(host \S+, pid \d+\) {verb} for over 2 s "
+        hung = (rf"^rt: rank {rank} \(host \S+, pid \d+\) {verb} for over {HANG_LIMIT} s "
                 r"\(--tile-timeout\) while rendering " + TILE.format(k=tile) +
                 r", so the job stops without writing an image; " + resume)
         if done := fault_case(name, rt_fault, out, f"rank:{rank},tile:{tile},kind:hang",
-                              ["--tile-timeout", "2", "--partial"], hung):
+                              ["--tile-timeout", str(HANG_LIMIT), "--partial"], hung):
             image, held, text = done
             check_partial(name, image, len(held), text, TILES)
             resume_case(name, rt_fault, image, held, reference)
