@@ -14,7 +14,7 @@ SHOWCASE=$ROOT/scenes/showcase.lua
 # and what they check is the code each case runs, not how many pixels it runs on: the tests
 # that render the showcase again and again divide its width and height by SHRINK.
 SHRINK=1
-[ -n "${RB_SANITIZE:-}" ] && SHRINK=2
+[ "${RB_SANITIZE:-0}" = 1 ] && SHRINK=2
 # The showcase with every chapter's sampling on but cheap: --preview's one sample of each, then
 # jittered antialiasing, 2x2 area-light and glossy samples, 4 lens samples and two photon passes
 # of 20,000 (chapters 1-16 all take part: tone map, photons, CSG, quadrics, textures, bump, ...).

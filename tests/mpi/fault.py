@@ -42,7 +42,7 @@ LIMIT = 60  # seconds a run may take (each takes a few here)
 # --tile-timeout for the hang cases: 2 s, or 15 s under the sanitizers (RB_SANITIZE), where a
 # rank's honest tile on a busy machine once took over 2 s, and rank 0 took its own slow tile
 # for a hang before the injected one was due. A hang never ends, so either limit catches it.
-HANG_LIMIT = 15 if os.environ.get("RB_SANITIZE") else 2
+HANG_LIMIT = 15 if os.environ.get("RB_SANITIZE") == "1" else 2
 
 
 def run(command, fault=None):

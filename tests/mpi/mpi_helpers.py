@@ -17,7 +17,7 @@ MPIRUN = ["mpirun", "-q", "--oversubscribe"]
 # Under the sanitizers (make test-sanitize sets RB_SANITIZE=1) a render is several times slower,
 # and they check the code each case runs, not how many pixels: tests that render the showcase
 # again and again divide its width and height by SHRINK (as common.sh does).
-SHRINK = 2 if os.environ.get("RB_SANITIZE") else 1
+SHRINK = 2 if os.environ.get("RB_SANITIZE") == "1" else 1
 TIMEOUT = 120  # seconds one mpirun may take before a test gives up on it
 
 checks = {"passed": 0, "failed": 0}
