@@ -33,8 +33,12 @@ compare() {
     done
 }
 
-# The sizes are halved under the sanitizers (SHRINK, common.sh).
-compare showcase "1x1 1x2 2x1 2x2 3x1 3x2 4x1 4x2" "${SHOWCASE_OPTIONS[@]}" \
+# The sizes are halved under the sanitizers (SHRINK, common.sh), and the showcase there takes
+# each rank count and each thread count once, not every pair: what they check is the code each
+# case runs.
+PAIRS="1x1 1x2 2x1 2x2 3x1 3x2 4x1 4x2"
+[ "$SHRINK" = 2 ] && PAIRS="1x2 2x1 3x2 4x1"
+compare showcase "$PAIRS" "${SHOWCASE_OPTIONS[@]}" \
     --size $((128 / SHRINK))x$((80 / SHRINK))
 compare adaptive-seed7 "2x2 3x1" --quiet --size $((96 / SHRINK))x$((64 / SHRINK)) --aa=adaptive \
     --light-samples=1 --glossy-samples=1 --dof-samples=1 --photon-passes=1 --photons=20000 --seed 7
