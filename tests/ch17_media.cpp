@@ -932,6 +932,75 @@ SCENARIO("A dense medium renders without black or NaN pixels", "[ch17][ex17.1][e
     }
 }
 
+SCENARIO("A walk's near flights deep inside a lone medium change no bit",
+         "[ch17][ex17.1][ex17.2]") {
+    // Source: nearFlight draws the numbers the full flight would draw (a copy of the sampler,
+    // kept only when the flight ends nearer than the boundary can be), so the same path
+    // results. A depth that overstated the boundary's distance would let flights leave the
+    // medium unseen: those paths, and so the pixels, would differ.
+    const auto same = [](const std::string& lua) {
+        const rb::Image on = renderMedia(lua, 4);
+        const rb::Image off = renderMedia(lua, 4, {{"media-near-flights", "off"}});
+        return rbtest::bitIdentical(on, off);
+    };
+    GIVEN("a dense box of smoke (σs = 200) that no other shape's bounds meet") {
+        THEN("the image is the same bits with near flights on and off") {
+            CHECK(same(mediumScene("{sigma_s = 200, sigma_a = 0.05}")));
+        }
+    }
+    GIVEN("a dense ellipsoid, turned 30° about x and y, then scaled (0.6, 1.2, 0.9)") {
+        // Not a rotation times one scale: the bound on how far it stretches (worldPerObject)
+        // is then below the true one, never above.
+        const std::string lua = R"(
+local root = gr.node('root')
+local egg = gr.sphere('egg')
+egg:rotate('x', 30)
+egg:rotate('y', 30)
+egg:scale(0.6, 1.2, 0.9)
+egg:set_medium(gr.medium{sigma_s = 80, sigma_a = 0.1})
+root:add_child(egg)
+gr.render(root, 'x.png', 32, 32, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 40, {0.1, 0.1, 0.1},
+          {gr.light({1, 2, 3}, {1, 1, 1}, {1, 0, 0})})
+)";
+        THEN("the image is the same bits with near flights on and off") {
+            CHECK(same(lua));
+        }
+    }
+    GIVEN("the dense box with a white ball inside it (the box is not lone: no near flights)") {
+        const std::string lua = mediumScene("{sigma_s = 200}", R"(
+local ball = gr.sphere('ball')
+ball:scale(0.3, 0.3, 0.3)
+ball:translate(0, 0, -0.5)
+ball:set_material(gr.material({0.8, 0.8, 0.8}, {0, 0, 0}, 1))
+root:add_child(ball)
+)");
+        THEN("the image is the same bits with near flights on and off") {
+            CHECK(same(lua));
+        }
+    }
+}
+
+SCENARIO("A shape says how deep a point lies inside it", "[ch17]") {
+    // Source: the unit sphere's surface is 1 − |p| from an inner point p; the unit cube's is
+    // the nearest of the six faces, min(p, 1 − p) over the axes.
+    GIVEN("the unit sphere") {
+        const rb::Sphere sphere;
+        THEN("(0.3, 0.4, 0) lies 0.5 deep, its centre 1, and a point outside 0") {
+            CHECK(sphere.depthInside(Vec3(0.3, 0.4, 0.0)) == Approx(0.5));
+            CHECK(sphere.depthInside(Vec3(0.0)) == Approx(1.0));
+            CHECK(sphere.depthInside(Vec3(1.5, 0.0, 0.0)) == 0.0);
+        }
+    }
+    GIVEN("the unit cube") {
+        const rb::Box box;
+        THEN("(0.2, 0.5, 0.9) lies 0.1 deep, its centre 0.5, and a point outside 0") {
+            CHECK(box.depthInside(Vec3(0.2, 0.5, 0.9)) == Approx(0.1));
+            CHECK(box.depthInside(Vec3(0.5)) == Approx(0.5));
+            CHECK(box.depthInside(Vec3(-0.1, 0.5, 0.5)) == 0.0);
+        }
+    }
+}
+
 SCENARIO(
     "An ambient furnace: a dense white medium lit by ambient light alone returns no more "
     "than the ambient term",

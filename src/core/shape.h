@@ -35,6 +35,13 @@ class Shape {
     /// True when no line crosses the surface more than twice (a sphere, a box): chapter 17
     /// stops looking for a medium boundary's crossings once a ray has left it.
     virtual bool convex() const { return false; }
+    /// How deep object-space point p lies inside the shape: a distance within which no point
+    /// of its surface lies (0 outside, or where the shape cannot say). Chapter 17's walks
+    /// through a dense medium need no intersection for a flight shorter than this.
+    virtual double depthInside(const Vec3& p) const {
+        (void)p;
+        return 0.0;
+    }
     /// The shape's own surface coordinates at object-space point p on part `primitive` (the
     /// uv its hits carry), with the derivatives dp/du and dp/dv; false when it has none of its
     /// own. Chapter 10's 'surface' mapping reads them for shapes it does not know (chapter 15's

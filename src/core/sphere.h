@@ -2,6 +2,8 @@
 /// The unit sphere: centre at the origin, radius 1 (A4's gr.sphere).
 #pragma once
 
+#include <algorithm>
+
 #include "core/shape.h"
 
 namespace rb {
@@ -37,6 +39,7 @@ class Sphere final : public Shape {
     bool intersect(const Ray& ray, double tMax, ObjectHit& hit) const override;
     AABB bounds() const override { return AABB{Vec3(-1.0), Vec3(1.0)}; }
     bool convex() const override { return true; }
+    double depthInside(const Vec3& p) const override { return std::max(0.0, 1.0 - glm::length(p)); }
 };
 
 }  // namespace rb

@@ -54,6 +54,10 @@ MediaSettings mediaSettings(const RenderContext& context) {
         throw InputError("--media-direct: expected 'mis', 'flight' or 'light', got '" + direct +
                          "'");
     s.points = wholeOption(context, "media-points", 1, 1024, s.points);
+    const std::string near = context.cliOption("media-near-flights", "on");
+    if (near != "on" && near != "off")
+        throw InputError("--media-near-flights: expected 'on' or 'off', got '" + near + "'");
+    s.nearFlights = near == "on";
     // The pixel's samples: --spp, else the scene's antialiasing (chapter 8's gr.antialias),
     // else 1. A pixel's rays share its points, but each takes at least one: with fewer than one
     // a ray, a pixel's single scattering would rest on its 64 points however many samples it
@@ -110,11 +114,14 @@ void installMedia(Pipeline& pipeline, Scene& scene, const RenderContext& context
         boundaries.begin(), boundaries.end(),
         [](const Instance& a, const Instance& b) { return a.mediumIndex < b.mediumIndex; });
     const AABB box = fogBounds(scene.instances, scene, context.job);
+    // Every instance's bounds, so that a medium's boundary can tell whether it is lone.
+    std::vector<AABB> everything;
+    for (const Instance& i : scene.instances) everything.push_back(i.worldBounds);
     // A shape that only bounds a medium is no surface.
     std::erase_if(scene.instances, [](const Instance& i) { return i.mediumBoundaryOnly; });
     if (settings.step == 0.0) settings.step = glm::length(box.hi - box.lo) / 400.0;
     pipeline.media =
-        std::make_shared<ParticipatingMedia>(std::move(boundaries), fog, box, settings);
+        std::make_shared<ParticipatingMedia>(std::move(boundaries), fog, box, settings, everything);
 }
 // [install-media]
 
@@ -147,7 +154,11 @@ Feature mediaFeature() {
               "1/400 of the scene's size (fog box diagonal)"},
              {"media-majorant", "N", "majorant grid cells per axis (1 to 128)", "16"},
              {"media-bounces", "N", "scatterings after the first (0: single scattering)",
-              "the scene's media_bounces, else 1000000 (no cap a scene meets)"}},
+              "the scene's media_bounces, else 1000000 (no cap a scene meets)"},
+             {"media-near-flights", "on|off",
+              "a walk's flight that ends deep inside a lone homogeneous medium skips the scene "
+              "(off: every flight asks it; the same image, slower)",
+              "on"}},
             {},
             mediaWarps};
 }

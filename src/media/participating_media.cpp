@@ -23,6 +23,19 @@ double maxChannel(const Colour& c) {
     return std::max({c.r, c.g, c.b});
 }
 
+/// A bound on the largest factor by which the linear part A of `m` stretches a vector, ‖A‖₂:
+/// the root of Gershgorin's bound on the largest eigenvalue of AᵀA (exact for a rotation
+/// times a uniform scale, where AᵀA = s²I).
+double linearNormBound(const Mat4& m) {
+    const glm::dmat3 a(m);
+    const glm::dmat3 ata = glm::transpose(a) * a;
+    double largest = 0.0;
+    for (int i = 0; i < 3; ++i)
+        largest =
+            std::max(largest, std::abs(ata[i][0]) + std::abs(ata[i][1]) + std::abs(ata[i][2]));
+    return std::sqrt(largest);
+}
+
 /// Where the ray crosses the surface of `boundary`, from t = 0 to infinity, in order.
 int crossings(const Instance& boundary, const Ray& ray, double* ts) {
     double lo = 0.0, hi = kInfinity;
@@ -158,7 +171,8 @@ struct MajorantPoints {
 }  // namespace
 
 ParticipatingMedia::ParticipatingMedia(std::vector<Instance> boundaries, const Medium* fog,
-                                       const AABB& fogBox, const MediaSettings& settings)
+                                       const AABB& fogBox, const MediaSettings& settings,
+                                       const std::vector<AABB>& everything)
     : boundaries_(std::move(boundaries)), fogBox_(fogBox), settings_(settings) {
     if (boundaries_.size() > 63)
         throw InputError("at most 63 nodes may hold a medium, the scene has " +
@@ -179,6 +193,18 @@ ParticipatingMedia::ParticipatingMedia(std::vector<Instance> boundaries, const M
         tracked_.push_back(
             std::make_unique<TrackedMedium>(*fog, Mat4(1.0), fogBox, settings_.majorantResolution));
         fog_ = tracked_.back().get();
+    }
+    if (!settings_.nearFlights) return;
+    for (std::size_t k = 0; k < boundaries_.size(); ++k) {
+        const Instance& b = boundaries_[k];
+        if (!b.shape->convex() || !b.medium->homogeneous()) continue;
+        // Lone: the only instance whose bounds meet its own (itself).
+        const auto meets = [&](const AABB& o) {
+            return glm::all(glm::lessThanEqual(o.lo, b.worldBounds.hi)) &&
+                   glm::all(glm::lessThanEqual(b.worldBounds.lo, o.hi));
+        };
+        if (std::count_if(everything.begin(), everything.end(), meets) != 1) continue;
+        lone_.push_back({tracked_[k].get(), &b, 1.0 / linearNormBound(b.worldToObject)});
     }
 }
 
@@ -347,39 +373,49 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
     // The walk's guess of the largest transmittance to a light at its next scattering
     // (walkLight): 1 until a shadow ray has measured it.
     double shadowGuess = 1.0;
+    const TrackedMedium* at = nullptr;  // The medium of the last scattering.
     for (int bounce = 0;; ++bounce) {
-        // Step 0: the media along this ray, and single scattering towards the lights at points
-        // placed for each (equiangular, or by transmittance), weighted against what the free
-        // flight of step 1 finds (multiple importance sampling).
-        pieces(r, end, stretches);
+        Vec3 x;
+        const Medium* m = nullptr;
         // Only the first ray takes lamp points: on the later rays of a walk through thin fog
         // they cost more than they save (chapter 17's scene: 2.4 times the time for a tenth
         // less error).
         const double points = bounce == 0 ? settings_.pointsPerRay : 0.0;
-        // On heterogeneous pieces the points carry all the single scattering (and A4's ambient
-        // light), and their ratio-tracking passes show the surface beyond (`seen`) in place
-        // of the free flight's coin toss.
-        const auto tracked = [&](const Piece& p) { return trackedOn(p, points); };
-        const bool anyTracked =
-            !ctx.scene.lights.empty() && std::any_of(stretches.begin(), stretches.end(), tracked);
-        Colour seen(1.0);
-        if (points > 0 && settings_.direct != MediaDirect::FreeFlight)
-            radiance +=
-                beta * pointsScattered(ctx, r, stretches, points, anyTracked ? &seen : nullptr);
-        // A path that may not scatter again needs no free flight where nothing is left to it.
-        if (anyTracked && settings_.bounces == 0 &&
-            std::all_of(stretches.begin(), stretches.end(), [&](const Piece& p) {
-                return tracked(p) || !(maxChannel(p.medium->medium.sigmaS) > 0.0);
-            })) {
-            throughput = seen;
-            return radiance;
-        }
-        Vec3 x;
-        const Medium* m = nullptr;
         FlightSite site{nullptr, {}, 0.0, points};
-        const FreeFlight::Event event =
-            bounce == 0 ? firstFlight(ctx, r, stretches, beta, x, m, site, throughput)
-                        : track(ctx, r, stretches, beta, x, m, site);
+        FreeFlight::Event event = FreeFlight::Event::None;
+        bool anyTracked = false;
+        Colour seen(1.0);
+        if (bounce == 0 || !nearFlight(ctx, r, at, beta, x, m, site, event)) {
+            // Step 0: the surface this ray reaches (the first ray's is the caller's), the media
+            // along it, and single scattering towards the lights at points placed for each
+            // (equiangular, or by transmittance), weighted against what the free flight of
+            // step 1 finds (multiple importance sampling).
+            if (bounce > 0) {
+                found = ctx.scene.aggregate->intersect(r, kInfinity, hit);
+                end = found ? hit.t : kInfinity;
+            }
+            pieces(r, end, stretches);
+            // On heterogeneous pieces the points carry all the single scattering (and A4's
+            // ambient light), and their ratio-tracking passes show the surface beyond (`seen`)
+            // in place of the free flight's coin toss.
+            const auto tracked = [&](const Piece& p) { return trackedOn(p, points); };
+            anyTracked = !ctx.scene.lights.empty() &&
+                         std::any_of(stretches.begin(), stretches.end(), tracked);
+            if (points > 0 && settings_.direct != MediaDirect::FreeFlight)
+                radiance +=
+                    beta * pointsScattered(ctx, r, stretches, points, anyTracked ? &seen : nullptr);
+            // A path that may not scatter again needs no free flight where nothing is left to
+            // it.
+            if (anyTracked && settings_.bounces == 0 &&
+                std::all_of(stretches.begin(), stretches.end(), [&](const Piece& p) {
+                    return tracked(p) || !(maxChannel(p.medium->medium.sigmaS) > 0.0);
+                })) {
+                throughput = seen;
+                return radiance;
+            }
+            event = bounce == 0 ? firstFlight(ctx, r, stretches, beta, x, m, site, throughput)
+                                : track(ctx, r, stretches, beta, x, m, site);
+        }
         if (anyTracked) throughput = seen;
         if (event == FreeFlight::Event::Absorbed) return radiance;
         if (event == FreeFlight::Event::None) {
@@ -398,13 +434,14 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
             return radiance +
                    beta * (found ? ctx.integrator.shade(next, r, hit) : ctx.scene.background);
         }
+        at = site.piece.medium;
         // Step 1: a particle at x scatters the lights' light towards us (single scattering,
         // each light's MIS share), and at the path's first scattering A4's ambient light, which
         // stands for all the indirect light: the rest of the path must not count it again.
         const Vec3 travel = glm::normalize(r.d);
         radiance += beta * (bounce == 0 ? lightScattered(ctx, x, travel, *m, &site)
                                         : walkLight(ctx, r.o, x, travel, *m, shadowGuess));
-        if (bounce == 0 && ctx.ambient && !(anyTracked && tracked(site.piece)))
+        if (bounce == 0 && ctx.ambient && !(anyTracked && trackedOn(site.piece, points)))
             radiance += beta * ctx.scene.ambient;
         // Step 2: and light from one direction the phase function draws (its pdf cancels the
         // phase function), until the path has scattered `bounces` more times.
@@ -412,9 +449,34 @@ Colour ParticipatingMedia::segment(const ShadeContext& ctx, const Ray& ray, doub
             return radiance;
         r = Ray{x, sampleHenyeyGreenstein(travel, m->g, ctx.sampler.next2D())};
         ctx.counters.add(RayKind::Scatter);
-        found = ctx.scene.aggregate->intersect(r, std::numeric_limits<double>::infinity(), hit);
-        end = found ? hit.t : std::numeric_limits<double>::infinity();
     }
+}
+
+bool ParticipatingMedia::nearFlight(const ShadeContext& ctx, const Ray& ray,
+                                    const TrackedMedium* at, Colour& beta, Vec3& x,
+                                    const Medium*& m, FlightSite& site,
+                                    FreeFlight::Event& event) const {
+    const auto lone =
+        std::find_if(lone_.begin(), lone_.end(), [&](const Lone& l) { return l.medium == at; });
+    if (lone == lone_.end()) return false;
+    // Step 1: how far the boundary is at least, in the ray's parameter.
+    const Instance& b = *lone->boundary;
+    const double depth = b.shape->depthInside(transformPoint(b.worldToObject, ray.o)) *
+                         lone->worldPerObject / glm::length(ray.d);
+    if (!(depth > 0.0)) return false;
+    // Step 2: the flight over [0, depth), which is the full flight's start: the same piece
+    // (its medium from t = 0 to beyond depth), so the same numbers give the same flight.
+    Sampler copy = ctx.sampler;
+    const FreeFlight flight = sampleFreeFlight(*at, ray, 0.0, depth, copy);
+    if (flight.event == FreeFlight::Event::None) return false;
+    ctx.sampler = copy;
+    event = flight.event;
+    if (event == FreeFlight::Event::Absorbed) return true;
+    beta *= flight.weight;
+    x = ray.o + flight.t * ray.d;
+    m = &at->medium;
+    site = {&ray, {0.0, depth, at}, flight.t, 0.0};
+    return true;
 }
 // [media-segment]
 

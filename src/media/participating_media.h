@@ -52,6 +52,9 @@ struct MediaSettings {
     /// Lamp points per lamp along a path's first ray: points / samples per pixel rounded, and
     /// at least 1 (its later rays take none).
     double pointsPerRay = 4.0;
+    /// A walk's flight that ends deep inside a lone medium skips the scene (nearFlight);
+    /// --media-near-flights off traces every flight, for the same image, slower.
+    bool nearFlights = true;
 };
 
 /// The media of one render: the closed shapes that bound media (node:set_medium) and the fog
@@ -60,9 +63,10 @@ class ParticipatingMedia final : public MediaTerm {
   public:
     /// `boundaries` are the instances whose medium is set, in the scene graph's order (a node's
     /// medium nested under another's comes later and wins inside it). `fogBox` is where fog
-    /// ends: beyond it rays reach the background.
+    /// ends: beyond it rays reach the background. `everything` holds the world bounds of every
+    /// instance, boundaries included: a boundary whose bounds meet no other's is lone.
     ParticipatingMedia(std::vector<Instance> boundaries, const Medium* fog, const AABB& fogBox,
-                       const MediaSettings& settings);
+                       const MediaSettings& settings, const std::vector<AABB>& everything = {});
     Colour segment(const ShadeContext& ctx, const Ray& ray, double tEnd,
                    Colour& throughput) const override;
     Colour transmittance(const Vec3& a, const Vec3& b, Sampler& sampler,
@@ -109,6 +113,23 @@ class ParticipatingMedia final : public MediaTerm {
                      const Vec3& travel, const Medium& m, double& guess) const;
 
   private:
+    /// A homogeneous medium inside a convex boundary whose bounds meet no other instance's:
+    /// from a point inside it, no surface and no other medium is nearer than its boundary.
+    struct Lone {
+        const TrackedMedium* medium;
+        const Instance* boundary;
+        /// World length per unit of object length, at least, in any direction: 1 / ‖A‖ for
+        /// the linear part A of the boundary's world-to-object transform.
+        double worldPerObject;
+    };
+    /// A walk's flight along `ray` from a scattering in `at` (the previous flight's medium),
+    /// when it ends nearer than the lone medium's boundary: then no surface or other medium
+    /// can lie before it, and the scene and the pieces are not asked (a walk through milk
+    /// scatters hundreds of times, nearly all deep inside). It draws the numbers the full
+    /// flight would draw, from a copy of the sampler, which it keeps only when the flight ends
+    /// there: the image is the same bits either way. False when it does not apply.
+    bool nearFlight(const ShadeContext& ctx, const Ray& ray, const TrackedMedium* at, Colour& beta,
+                    Vec3& x, const Medium*& m, FlightSite& site, FreeFlight::Event& event) const;
     /// What a ray meets in the media along `stretches` (its pieces): nothing (`beta` holds the
     /// transmittance), absorption, or a scattering at x in medium m (`beta` holds the path's
     /// weight), at `site`.
@@ -162,6 +183,7 @@ class ParticipatingMedia final : public MediaTerm {
     std::vector<Instance> boundaries_;
     std::vector<std::unique_ptr<TrackedMedium>> tracked_;  ///< One per boundary, then the fog.
     const TrackedMedium* fog_ = nullptr;
+    std::vector<Lone> lone_;  ///< The lone media (nearFlight), usually none or a few.
     AABB fogBox_;
     MediaSettings settings_;
 };
