@@ -699,9 +699,10 @@ def run_line_by_line(command, timeout, cwd, env, on_line) -> tuple[int, str]:
 
 
 # A first make check compiles every chapter up to the assignment's and its tests: chapter 17's
-# export, 114 files, took 11 to 28 minutes on a busy 2-core machine (issue 39; 16 minutes
-# under a load near 10 while this was written), about 12 to 30 seconds of one core per file.
-CORE_SECONDS_PER_FILE = (12, 30)
+# export, 119 files, compiled in 3.7 minutes on a quiet 2-core machine with an empty ccache
+# (2026-11-30; the whole make check took 3 min 53 s), and took 11 to 28 minutes on a busy one
+# (issue 39; 16 minutes under a load near 10): about 4 to 30 seconds of one core per file.
+CORE_SECONDS_PER_FILE = (4, 30)
 
 
 def build_targets(build: Path, targets: list[str], say=None) -> tuple[int, str]:
