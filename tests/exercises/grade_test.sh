@@ -52,9 +52,15 @@ EOF
 echo "the bug: exercise $bug_name ($bug_file) replaced by its blank"
 
 status=0
-out=$(python3 "$SCRIPT" grade "$CLASS" --csv "$WORK/grades.csv") || status=$?
+out=$(python3 "$SCRIPT" grade "$CLASS" --csv "$WORK/grades.csv" 2>"$WORK/grade.err") || status=$?
 echo "$out"
+cat "$WORK/grade.err"
 [[ $status -eq 0 ]] || { echo "FAIL: make grade exited with $status"; exit 1; }
+# A class takes minutes: make grade says so at the start and a line as each student is graded.
+for line in 'grade: 4 students' 'grade: \[1/4\] .* reuse its objects' 'grade: \[2/4\] .* min left' 'grade: \[4/4\] .* all in '; do
+    grep -qE -- "$line" "$WORK/grade.err" || { echo "FAIL: make grade's progress lacks '$line'"; exit 1; }
+done
+echo "ok   make grade says what it is doing: a line at the start and one per student"
 
 python3 - "$WORK/grades.csv" "$bug_name" <<'EOF'
 import csv, sys
