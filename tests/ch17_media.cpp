@@ -40,6 +40,7 @@ using Catch::Contains;
 using rb::Colour;
 using rb::Vec3;
 using rbtest::meanAndError;
+using rbtest::samples;
 using rbtest::sidak;
 
 namespace {
@@ -347,11 +348,13 @@ SCENARIO("A slab lit from behind shows single scattering's closed form",
     const std::map<std::string, std::string> single{{"media-bounces", "0"}};
     const rb::Ray ray{Vec3(-1.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)};
     const double z = rbtest::zCritical(sidak(0.001, 2));
+    const int n = samples(200000);
+    const std::string traced = "the ray along the axis is traced " + std::to_string(n) + " times";
     GIVEN("a homogeneous slab, σa = 0.25, σs = 0.5, g = 0.5, ℓ = 1, single scattering only") {
         const rb::Medium m = medium(sa, ss, std::make_shared<rb::ConstantDensity>(), g);
         const Slab slab(m, length, single);
-        WHEN("the ray along the axis is traced 200000 times") {
-            const auto [mean, error] = meanAndError(200000, [&](int i) {
+        WHEN(traced) {
+            const auto [mean, error] = meanAndError(n, [&](int i) {
                 rb::RayCounters counters;
                 const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
                 rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 4);
@@ -366,8 +369,8 @@ SCENARIO("A slab lit from behind shows single scattering's closed form",
     GIVEN("the same slab tracked as if heterogeneous, majorant 3× (delta and ratio tracking)") {
         const rb::Medium m = medium(sa, ss, std::make_shared<TrackedConstant>(3.0), g);
         const Slab slab(m, length, single);
-        WHEN("the ray along the axis is traced 200000 times") {
-            const auto [mean, error] = meanAndError(200000, [&](int i) {
+        WHEN(traced) {
+            const auto [mean, error] = meanAndError(n, [&](int i) {
                 rb::RayCounters counters;
                 const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
                 rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 5);
@@ -388,13 +391,13 @@ SCENARIO("A slab lit from behind shows single scattering's closed form",
         m.sigmaA = Colour(0.1, 0.3, 0.5);
         m.sigmaS = Colour(0.6, 0.4, 0.2);
         const Slab slab(m, length, single);
-        WHEN("the ray along the axis is traced 200000 times") {
-            std::vector<Colour> samples(200000);
-            for (int i = 0; i < 200000; ++i) {
+        WHEN(traced) {
+            std::vector<Colour> traces(n);
+            for (int i = 0; i < n; ++i) {
                 rb::RayCounters counters;
                 const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
                 rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 7);
-                samples[i] = integrator.trace(ray, sampler, counters, 0);
+                traces[i] = integrator.trace(ray, sampler, counters, 0);
             }
             THEN(
                 "each channel passes a z-test against π p(1) σs ℓ e^(−σt ℓ) with its own "
@@ -404,7 +407,7 @@ SCENARIO("A slab lit from behind shows single scattering's closed form",
                     const double want = kPi * rb::henyeyGreenstein(1.0, g) * m.sigmaS[c] * length *
                                         std::exp(-(m.sigmaA[c] + m.sigmaS[c]) * length);
                     const auto [mean, error] =
-                        meanAndError(200000, [&](int i) { return samples[i][c]; });
+                        meanAndError(n, [&](int i) { return traces[i][c]; });
                     INFO("channel " << c << ": mean " << mean << " ± " << error << " against "
                                     << want);
                     CHECK(std::abs(mean - want) < zc * error);
@@ -518,6 +521,7 @@ SCENARIO("A lamp inside fog: free flights, light points and both under MIS agree
     const rb::Medium m = medium(sa, ss, std::make_shared<rb::ConstantDensity>(), g);
     const rb::Ray ray{Vec3(-1.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)};
     const double z = rbtest::zCritical(sidak(0.001, 6));
+    const int n = samples(100000);
     struct Lamp {
         const char* what;
         Vec3 falloff;
@@ -539,12 +543,13 @@ SCENARIO("A lamp inside fog: free flights, light points and both under MIS agree
             for (int k = 1; k < intervals; ++k)
                 expected += (k % 2 ? 4.0 : 2.0) * integrand(k * length / intervals);
             expected *= length / intervals / 3.0;
-            WHEN("the ray along the axis is traced 100000 times with each --media-direct") {
+            WHEN("the ray along the axis is traced " + std::to_string(n) +
+                 " times with each --media-direct") {
                 std::map<std::string, std::pair<double, double>> estimates;
                 for (const std::string direct : {"flight", "light", "mis"}) {
                     const Slab slab(m, length, {{"media-bounces", "0"}, {"media-direct", direct}},
                                     lamp, l.falloff);
-                    estimates[direct] = meanAndError(100000, [&](int i) {
+                    estimates[direct] = meanAndError(n, [&](int i) {
                         rb::RayCounters counters;
                         const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
                         rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 9);
@@ -584,6 +589,7 @@ SCENARIO("A lamp inside a ramp of smoke: ratio-tracked lamp points and free flig
     const rb::Medium m = medium(sa, ss, std::make_shared<RampDensity>(a, b * length, 1.0, 1.0), g);
     const rb::Ray ray{Vec3(-1.0, 1.0, 1.0), Vec3(1.0, 0.0, 0.0)};
     const double z = rbtest::zCritical(sidak(0.001, 3));
+    const int n = samples(100000);
     GIVEN(
         "density 0.5 + 0.5x, σa = 0.1, σs = 0.4, g = 0.5, ℓ = 4, a lamp 0.5 off the ray, "
         "ambient light 0.1 and a sky of 0.25") {
@@ -603,13 +609,13 @@ SCENARIO("A lamp inside a ramp of smoke: ratio-tracked lamp points and free flig
         expected *= length / intervals / 3.0;
         const double through = std::exp(-st * depth(length));
         expected += ambient * ss / st * (1.0 - through) + sky * through;
-        WHEN("the ray is traced 100000 times with each --media-direct") {
+        WHEN("the ray is traced " + std::to_string(n) + " times with each --media-direct") {
             std::map<std::string, std::pair<double, double>> estimates;
             for (const std::string direct : {"flight", "light", "mis"}) {
                 Slab slab(m, length, {{"media-bounces", "0"}, {"media-direct", direct}}, lamp);
                 slab.world.scene.ambient = Colour(ambient);
                 slab.world.scene.background = Colour(sky);
-                estimates[direct] = meanAndError(100000, [&](int i) {
+                estimates[direct] = meanAndError(n, [&](int i) {
                     rb::RayCounters counters;
                     const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
                     rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 11);
@@ -750,8 +756,10 @@ rb::Image renderMedia(const std::string& lua, int spp,
 
 SCENARIO("The image does not depend on the majorant", "[ch17][ex17.2][ex17.3]") {
     GIVEN("a lit wall behind a box of ramp smoke, σ(x) = 0.2 + 3x in the box's own space") {
-        // 32 × 32 pixels looking at the box, 64 paths each, for one majorant set-up.
-        const auto render = [](double slack, int cells) {
+        // 32 × 32 pixels looking at the box, 64 paths each (6 in the sanitizer tree), for one
+        // majorant set-up.
+        const int paths = samples(64);
+        const auto render = [paths](double slack, int cells) {
             const rb::Medium m =
                 medium(0.5, 2.0, std::make_shared<RampDensity>(0.2, 3.0, 1.0, slack), 0.3);
             rb::Box box;
@@ -774,14 +782,14 @@ SCENARIO("The image does not depend on the majorant", "[ch17][ex17.2][ex17.3]") 
             for (int p = 0; p < 32 * 32; ++p) {
                 const Vec3 target(-1.2 + 2.4 * (p % 32 + 0.5) / 32,
                                   -1.2 + 2.4 * (p / 32 + 0.5) / 32, 0.5);
-                for (int k = 0; k < 64; ++k) {
+                for (int k = 0; k < paths; ++k) {
                     rb::Sampler sampler(seed(), static_cast<std::uint64_t>(p), k + 64 * cells);
                     rb::RayCounters counters;
                     image[p] += integrator
                                     .trace(rb::Ray{Vec3(0, 0, 4), target - Vec3(0, 0, 4)}, sampler,
                                            counters, 0)
                                     .g /
-                                64;
+                                paths;
                 }
             }
             return image;

@@ -435,6 +435,20 @@ inline std::uint64_t ulpDistance(double a, double b) {
     return ia > ib ? static_cast<std::uint64_t>(ia - ib) : static_cast<std::uint64_t>(ib - ia);
 }
 
+/// How many times fewer samples a test's heaviest Monte Carlo loops draw in the sanitizer tree
+/// (make test-sanitize; CMake defines RB_SANITIZE_TESTS there). The sanitizers check the code
+/// each sample runs, and a tenth of the samples runs the same code, at several times the cost of
+/// a sample in the normal tree. A z-test on fewer samples is still a z-test: its error bar
+/// widens with them. The normal tree runs every test at full strength.
+#ifdef RB_SANITIZE_TESTS
+constexpr int kSanitizerShare = 10;
+#else
+constexpr int kSanitizerShare = 1;
+#endif
+
+/// n samples, or a kSanitizerShare-th of them in the sanitizer tree.
+constexpr int samples(int n) { return n / kSanitizerShare; }
+
 /// The mean of n draws draw(0), ..., draw(n − 1), and the standard error of that mean (the
 /// sample standard deviation over √n): what the z-tests of a Monte Carlo estimator compare.
 template <class Draw>
