@@ -278,11 +278,11 @@ CHECK_CMAKE = """
 # make check (an assignment): chapter {n}'s tests alone, so that a check builds only them, and
 # the shared test files that hold some of them{shared_note}.
 file(GLOB RB_CHECK_SOURCES CONFIGURE_DEPENDS ${{CMAKE_SOURCE_DIR}}/tests/ch{nn}_*.cpp)
-add_executable(raybook_check EXCLUDE_FROM_ALL test_main.cpp source_dir.cpp ${{RB_CHECK_SOURCES}}
+add_executable(raybook_check EXCLUDE_FROM_ALL source_dir.cpp ${{RB_CHECK_SOURCES}}
                {shared})
 target_include_directories(raybook_check PRIVATE ${{CMAKE_SOURCE_DIR}}/src
                            ${{CMAKE_SOURCE_DIR}}/tests)
-target_link_libraries(raybook_check PRIVATE raybook Catch2::Catch2)
+target_link_libraries(raybook_check PRIVATE rb_catch_main raybook Catch2::Catch2)
 """
 
 
