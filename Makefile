@@ -7,7 +7,8 @@ CHAPTERS   := $(sort $(patsubst 0%,%,$(shell ls scenes 2>/dev/null | sed -n 's/^
 CHAPTERS   := $(shell echo $(CHAPTERS) | tr ' ' '\n' | sort -n | tr '\n' ' ')
 LAST       := $(lastword $(CHAPTERS))
 CHAPTER_TARGETS := $(addprefix chapter,$(CHAPTERS))
-# ninja-build: a new build folder builds with Ninja (NEW_GENERATOR, below).
+# ninja-build: make test's assignments round trip builds its exports with Ninja (assignment.py
+# use_ninja); everything else builds with CMake's Makefiles.
 DEBS       := g++ cmake make pkg-config libglm-dev libstb-dev catch2 liblua5.4-dev doxygen graphviz libjs-mathjax python3 libnanovdb-dev ccache \
               ninja-build
 BENCH_DEBS := povray libembree-dev hyperfine gnuplot-nox blender
@@ -22,8 +23,7 @@ FUZZ_TARGETS := obj lua_scene options journal stats compare vdb
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: deps bench-deps mpi-deps mpi configure rt test test-exercises test-assignments assignment grade \
-        test-sanitize sanitize-ctest sanitize-build soak demo docs golden-update bench charts fuzz web web-deps \
-        web-locked web-bundle clean \
+        test-sanitize sanitize-ctest sanitize-build soak demo docs golden-update bench charts fuzz web web-bundle clean \
         $(CHAPTER_TARGETS)
 
 # Install the Debian packages that are missing (nothing when all are present).
@@ -40,16 +40,8 @@ bench-deps:
 mpi-deps:
 	@$(MAKE) --no-print-directory deps DEBS="$(MPI_DEBS)"
 
-# A new build folder builds with Ninja when it is installed (make deps installs it); one that
-# exists keeps the generator it was made with (CMake cannot switch). Ninja checks a build with
-# nothing to do in a fraction of a second, where CMake's Makefiles take seconds. It also runs
-# each compile from the build folder itself, as the assignments' exports do (the round trip,
-# make grade): their compiler cache (ccache, keyed on the command from there) then finds the
-# tests' objects this build compiled, not only the chapters'. Under Makefiles a test compiles
-# from build/tests, so a cold CI compiled every test file twice.
-NEW_GENERATOR = $(if $(wildcard $(1)/CMakeCache.txt),,$(if $(shell command -v ninja),-G Ninja))
-$(BUILD)/CMakeCache.txt: CMakeLists.txt | deps
-	cmake -S . -B $(BUILD) $(call NEW_GENERATOR,$(BUILD)) -DCMAKE_BUILD_TYPE=Release
+$(BUILD)/CMakeCache.txt: CMakeLists.txt
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 
 configure: deps $(BUILD)/CMakeCache.txt
 
@@ -193,7 +185,7 @@ sanitize-ctest:
 # bugs in exported copies; make test-exercises, which plants them in src/, must not run beside
 # it).
 sanitize-build: deps
-	cmake -S . -B $(SANITIZE_BUILD) $(call NEW_GENERATOR,$(SANITIZE_BUILD)) -DCMAKE_BUILD_TYPE=Release -DRB_SANITIZE=ON
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DRB_SANITIZE=ON
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 
 # make soak (issue 40): SOAK_N random legal scenes of every chapter, of seed SOAK_SEED, rendered
@@ -286,17 +278,7 @@ fuzz:
 WEB_BUILD ?= build-web
 # Node.js and npm come with the machine (emscripten needs Node.js; Debian's npm would replace it).
 WEB_DEBS  := emscripten chromium
-# One make web at a time, each under the lock build-web/.lock: CI (.ci/run) builds the tree
-# beside make test, at the idle priority, and make test's own make web (before make docs) then
-# waits for it and finds it built. The install is under the lock too: make web-deps alone
-# (beside) and then make web, or two make webs, never run apt-get at once.
 web:
-	@mkdir -p $(WEB_BUILD)
-	@flock $(WEB_BUILD)/.lock $(MAKE) --no-print-directory web-locked
-web-deps:
-	@mkdir -p $(WEB_BUILD)
-	@flock $(WEB_BUILD)/.lock $(MAKE) --no-print-directory deps DEBS="$(WEB_DEBS)"
-web-locked:
 	@$(MAKE) --no-print-directory deps DEBS="$(WEB_DEBS)"
 	@[ -f $(WEB_BUILD)/CMakeCache.txt ] || NODE_PATH=/usr/share/nodejs emcmake cmake -S . -B $(WEB_BUILD) \
 	  -DCMAKE_BUILD_TYPE=Release

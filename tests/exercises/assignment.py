@@ -840,15 +840,12 @@ def use_compiler_cache(cache: Path, strip: Path) -> None:
 
 
 def use_ninja() -> None:
-    """Build the round trip's, make grade's and mc_golden.py's exports with Ninja when it is
-    installed (make deps installs it; $RB_CMAKE_GENERATOR, when set, wins). A round-trip step
-    builds one or two changed files, and a chapter's round trip builds 2K + 1 times for K
-    exercises: with CMake's Makefiles each build spends about 3 s of CPU checking that nothing
-    else changed (make's recursion over every chapter's library and their dependency scans),
-    with Ninja 0.2 s. Ninja also runs every compile from the build folder, as raybook's own
-    build does (the Makefile's NEW_GENERATOR), so ccache finds that build's test objects too.
-    A student's make check keeps CMake's default generator: its progress lines
-    (build_targets) read the Makefiles' own."""
+    """Build the round trip's and mc_golden.py's exports with Ninja when it is installed (make
+    deps installs it; $RB_CMAKE_GENERATOR, when set, wins). A round-trip step builds one or
+    two changed files, and a chapter's round trip builds 2K + 1 times for K exercises: with
+    CMake's Makefiles each build spends about 3 s of CPU checking that nothing else changed
+    (make's recursion over every chapter's library and their dependency scans), with Ninja
+    0.2 s. make check and make grade keep CMake's default generator."""
     if "RB_CMAKE_GENERATOR" not in os.environ and shutil.which("ninja"):
         os.environ["RB_CMAKE_GENERATOR"] = "Ninja"
 
@@ -1134,7 +1131,6 @@ def grade(args) -> int:
     # compiles only the files that student changed (use_compiler_cache).
     cache_root = Path(args.build_root).resolve() if args.build_root else target
     use_compiler_cache(cache_root / ".raybook-objcache", projects[0].parent)
-    use_ninja()
     # The first student is graded alone, its build on every core: it compiles every chapter,
     # and the others take those objects from the cache. Then the rest go side by side, one a
     # core by default: after the first build a student's time is mostly tests, one process at

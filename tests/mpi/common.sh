@@ -21,6 +21,30 @@ SHRINK=1
 SHOWCASE_OPTIONS=(--quiet --preview --aa=jittered --light-samples=2 --glossy-samples=2
                   --dof-samples=4 --photon-passes=2 --photons=20000)
 
+## reference FILE ARGS...: rt alone, rendering ARGS... into FILE; returns rt's status. The
+## image is the same whatever the thread count, so tests that compare against the same render
+## may share it: with MPI_REFERENCES set (CTest gives it to kill_worker, kill_rank0 and
+## journal_refused, which all render the showcase at 256x160 with three light samples, 14 s
+## of a core natively and about 20 s under the sanitizers), the first renders it into that
+## folder, keyed by rt's file, the arguments and the scenes folder's files, and the others copy it.
+reference() {
+    local file=$1 key kept
+    shift
+    if [ -z "${MPI_REFERENCES:-}" ]; then
+        "$RT" "$@" --output "$file"
+        return
+    fi
+    key=$({ stat -L -c '%n %s %Y' "$RT"; printf '%s\n' "$@";
+            find "$ROOT/scenes" -type f -printf '%p %s %T@\n' | sort; } | sha1sum | cut -c1-16)
+    kept=$MPI_REFERENCES/$key.png
+    if [ ! -s "$kept" ]; then
+        mkdir -p "$MPI_REFERENCES"
+        "$RT" "$@" --output "$kept.$$.png" || return
+        mv -f "$kept.$$.png" "$kept"
+    fi
+    cp "$kept" "$file"
+}
+
 ## The pids under process PARENT, at any depth.
 descendants() {
     local child

@@ -14,6 +14,9 @@ cd "$OUT" && rm -f ./*.png ./*.journal ./*.txt
 
 OPTIONS=("${SHOWCASE_OPTIONS[@]}" --light-samples=3 --threads 1)
 W=$((256 / SHRINK)) H=$((160 / SHRINK))
+# kill_resume.sh's reference, shared when CTest gives MPI_REFERENCES (common.sh): the same
+# options, size and scene, in the same order (the thread count changes no bit).
+REFERENCE=("${SHOWCASE_OPTIONS[@]}" --light-samples=3 --size ${W}x$H "$SHOWCASE")
 SIZE=${W}x$H TALLER=${W}x$((H + 16))
 kill_halfway 2 1 $((W * H * 12)) out.png "${OPTIONS[@]}" --size $SIZE "$SHOWCASE" \
     >/dev/null || fail "setup" "the render ended before it could be killed"
@@ -50,7 +53,7 @@ refused "a file that is no journal" "not a raybook tile journal" --size $SIZE "$
 # The kept journal still finishes the image.
 kill_halfway 2 1 $((W * H * 12)) out.png "${OPTIONS[@]}" --size $SIZE "$SHOWCASE" \
     >/dev/null || fail "setup" "the render ended before it could be killed"
-"$RT" "${OPTIONS[@]}" --size $SIZE --output reference.png "$SHOWCASE"
+reference reference.png "${REFERENCE[@]}"
 if timeout 300 "${MPIRUN[@]}" -np 2 "$RT" "${OPTIONS[@]}" --resume --size $SIZE \
     --output out.png "$SHOWCASE" && cmp -s out.png reference.png; then
     ok "the right --resume finishes the image byte-identical to one process's"

@@ -15,7 +15,7 @@ cd "$OUT" && rm -f ./*.png ./*.journal ./*.txt
 W=$((256 / SHRINK)) H=$((160 / SHRINK))
 OPTIONS=("${SHOWCASE_OPTIONS[@]}" --light-samples=3 --size ${W}x$H "$SHOWCASE")
 TILES=$(((W + 15) / 16 * ((H + 15) / 16)))
-"$RT" "${OPTIONS[@]}" --output reference.png || fail "reference" "rt alone failed"
+reference reference.png "${OPTIONS[@]}" || fail "reference" "rt alone failed"
 
 for resume_ranks in 3 1; do
     image=killed-then-$resume_ranks.png
