@@ -34,4 +34,16 @@ if [ -s "$log" ]; then
     cat "$log"
     exit 1
 fi
-echo "docs_warnings: no Doxygen warnings"
+# Markup Doxygen let through unparsed and does not warn about: a \ref whose quoted text breaks
+# across lines leaves every later `code span` of its paragraph as literal <tt> tags (78 of them
+# on the main page, 2026-11-30).
+literal=$(grep -l '&lt;tt&gt;' "$out"/html/*.html 2>/dev/null || true)
+if [ -n "$literal" ]; then
+    echo "docs_warnings: code spans shown as literal <tt> tags (a \\ref's quoted text broken across lines?) in:"
+    for page in $literal; do
+        echo "  $(basename "$page"): $(grep -o '&lt;tt&gt;' "$page" | wc -l)"
+        grep -o '.\{0,80\}&lt;tt&gt;.\{0,40\}' "$page" | head -n 1 | sed 's/^/    /'
+    done
+    exit 1
+fi
+echo "docs_warnings: no Doxygen warnings, no literal tags"
