@@ -2,8 +2,7 @@
 /// Chapter 1 tests: rendering to an error, not a sample count (--target-error).
 ///
 /// The claims: the running moments are Welford's closed forms; the plan gives each pixel
-/// samples in proportion to its neighbours' pilot spread, as few as reach the target; a
-/// pixel's pilot and fresh samples are weighed by their counts; the error
+/// fresh samples in proportion to its pilot's spread, as few as reach the target; the error
 /// --stats reports is the error the image has against a converged one; the image is unbiased,
 /// where stopping each pixel when it looks converged is not (the same test finds that bias);
 /// a small, bright, rarely hit feature keeps its brightness at any target; the image is the
@@ -78,7 +77,7 @@ struct Spheres {
         settings.seed = seed;
         settings.target = target;
         settings.shouldStop = std::move(shouldStop);
-        map = rb::SampleMap(kWidth, kHeight, target.pilotSamples());
+        map = rb::SampleMap(kWidth, kHeight, target.minSamples);
         settings.sampleMap = &map;
         rb::RayCounters counters;
         return rb::render(world.scene, world.pipeline, camera(), kWidth, kHeight, settings,
@@ -211,24 +210,19 @@ SCENARIO("Welford's running moments give the mean and the unbiased variance of t
     }
 }
 
-SCENARIO(
-    "the plan gives pixels samples in proportion to their neighbours' spread, as few as "
-    "reach E",
-    "[ch01][target-error]") {
+SCENARIO("the plan gives pixels fresh samples in proportion to their spread, as few as reach E",
+         "[ch01][target-error]") {
     const int w = 8, h = 8;
-    GIVEN("a pilot of 8 samples in which every pixel has the same variance v = 0.09") {
+    GIVEN("a pilot in which every pixel has the same variance v = 0.09") {
         const std::vector<float> pilot(w * h, 0.09f);
         for (double e : {0.1, 0.03, 0.01}) {
             WHEN("the target is E = " + std::to_string(e)) {
                 const auto plan = rb::planSamples(pilot, w, h, target(e));
-                THEN(
-                    "every pixel takes the fewest fresh n with v/(8 + n) ≤ E², n = ⌈v/E² − 8⌉, at "
-                    "least the floor, made even") {
-                    // Source: the predicted error of equal counts is v/(p + n), the pilot's p
-                    // samples counted; the smallest whole n, then the next even one (a pixel's
-                    // fresh samples come in two equal groups).
+                THEN("every pixel takes the fewest n with v/n ≤ E², n = ⌈v/E²⌉, made even") {
+                    // Source: the predicted error of equal counts is v/n; the smallest whole n,
+                    // then the next even one (a pixel's samples come in two equal groups).
                     auto expected = static_cast<std::uint32_t>(
-                        std::max(8.0, std::ceil(double(0.09f) / (e * e) - 8.0 - 1e-9)));
+                        std::max(8.0, std::ceil(double(0.09f) / (e * e) - 1e-9)));
                     expected += expected % 2;
                     for (std::uint32_t n : plan) REQUIRE(n == expected);
                 }
@@ -241,20 +235,15 @@ SCENARIO(
             for (int x = 0; x < w; ++x) pilot[y * w + x] = x < w / 2 ? 0.01f : 0.16f;
         WHEN("the target needs many samples (E = 0.01)") {
             const auto plan = rb::planSamples(pilot, w, h, target(0.01));
-            THEN(
-                "away from the border between them, the right takes 4 times the left, pilot "
-                "included: p + n ∝ s") {
-                // Source: Neyman: p + n ∝ s minimises Σ s²/(p + n) for a given Σ n; s = √v,
-                // √16 = 4.
-                const double left = 8 + plan[3 * w + 1], right = 8 + plan[3 * w + 6];
+            THEN("away from the border between them, the right takes 4 times the left: n ∝ s") {
+                // Source: Neyman: n ∝ s minimises Σ s²/n for a given Σ n; s = √v, √16 = 4.
+                const double left = plan[3 * w + 1], right = plan[3 * w + 6];
                 CAPTURE(left, right);
                 CHECK(right / left == Approx(4.0).epsilon(0.01));
             }
-            THEN(
-                "the predicted error, the root of the mean of s²/(8 + n) with each pixel's own "
-                "s², is at most E") {
+            THEN("the predicted error, the root of the mean of v/n, is at most E") {
                 double sum = 0.0;
-                for (int i = 0; i < w * h; ++i) sum += pilot[i] / (8 + plan[i]);
+                for (int i = 0; i < w * h; ++i) sum += pilot[i] / plan[i];
                 CHECK(std::sqrt(sum / (w * h)) <= 0.01 * (1 + 1e-9));
             }
         }
@@ -267,39 +256,16 @@ SCENARIO(
             for (std::uint32_t n : rb::planSamples(flat, w, h, target(0.01))) REQUIRE(n == 8u);
         }
         THEN(
-            "the noisy pixel's neighbours take more than the floor, pixels two away the floor, "
-            "and the noisy pixel itself the floor: its own pilot does not plan it") {
+            "the noisy pixel's neighbours take more than the floor (a pilot misses rare paths; "
+            "its neighbours may not), pixels two away the floor") {
             const auto plan = rb::planSamples(one, w, h, target(0.01));
+            CHECK(plan[4 * w + 4] > plan[3 * w + 3]);
             CHECK(plan[3 * w + 3] > 8u);
-            CHECK(plan[4 * w + 5] == plan[3 * w + 3]);
             CHECK(plan[2 * w + 2] == 8u);
-            CHECK(plan[4 * w + 4] == 8u);
         }
-        THEN("a target beyond reach gives the noisy pixel's neighbours the ceiling, no more") {
+        THEN("a target beyond reach gives the noisy pixel the ceiling, no more") {
             const auto plan = rb::planSamples(one, w, h, target(1e-6, 8, 500));
-            CHECK(plan[3 * w + 4] == 500u);
-        }
-    }
-    GIVEN("a 1 × 1 image, whose pixel has no neighbours") {
-        THEN("it takes the floor, however noisy its pilot") {
-            CHECK(rb::planSamples({0.9f}, 1, 1, target(0.01)) == std::vector<std::uint32_t>{8u});
-        }
-    }
-}
-
-SCENARIO("a pixel's pilot and fresh samples are weighed by their counts", "[ch01][target-error]") {
-    GIVEN(
-        "a pilot of 8 samples of mean 1 whose mean has variance 0.06, and 24 fresh samples of "
-        "mean 0.5 whose mean has variance 0.001") {
-        const rb::PixelEstimate e = rb::withPilot(rb::PixelEstimate{rb::Colour(1.0), 0.06}, 8,
-                                                  rb::PixelEstimate{rb::Colour(0.5), 0.001}, 24);
-        THEN("the pixel is (8·1 + 24·0.5)/32 = 0.625") {
-            CHECK(e.mean.g == Approx(0.625));
-        }
-        THEN("the variance of its mean is (8²·0.06 + 24²·0.001)/32² = 4.416/1024") {
-            // Source: Var((p·a + n·b)/(p + n)) = (p²·Var a + n²·Var b)/(p + n)², a and b
-            // independent.
-            CHECK(e.varianceOfMean == Approx(4.416 / 1024.0));
+            CHECK(plan[4 * w + 4] == 500u);
         }
     }
 }
@@ -372,9 +338,9 @@ SCENARIO("sampling to an error adds no bias, where stopping a pixel when it look
             double mean = 0.0;
             for (std::uint64_t seed = 1; seed <= 8; ++seed)
                 mean += imageMean(stopWhenConverged(scene, 0.05, 8, seed)) / 8;
-            // Its spread is below that of a two-stage render of 8 samples everywhere (every
-            // pixel at least as many samples): a floor of 4, 4 pilot and 4 fresh, at E = 10.
-            const double var = independentMeanVariance(scene, target(10.0, 4)) / 8;
+            // Its spread is below that of a two-stage render with the floor everywhere (every
+            // pixel at least as many samples); use that one's, E = 10.
+            const double var = independentMeanVariance(scene, target(10.0)) / 8;
             THEN(
                 "the specks come out darker than they are, by far more than the noise: "
                 "z < −3.29") {

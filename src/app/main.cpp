@@ -324,7 +324,7 @@ int run(int argc, char** argv, Cluster& cluster) {
         std::optional<SampleMap> sampleMap;
         if (settings.target.on()) {
             sampleMap.emplace(world->source.job.width, world->source.job.height,
-                              settings.target.pilotSamples());
+                              settings.target.minSamples);
             settings.sampleMap = &*sampleMap;
         }
         PartialImage partial;
@@ -405,7 +405,7 @@ int run(int argc, char** argv, Cluster& cluster) {
             if (settings.target.on()) {
                 std::fprintf(stderr,
                              "  target     error %.4g; %d pilot samples, then %d to %d per pixel\n",
-                             settings.target.error, settings.target.pilotSamples(),
+                             settings.target.error, settings.target.minSamples,
                              settings.target.minSamples, settings.target.maxSamples);
                 std::fprintf(
                     stderr, "  samples    mean %.1f, max %u per pixel; estimated RMS error %.4g",

@@ -219,7 +219,7 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --target-error E   render to an RMS error of E (linear units, 1 = white; e.g.
                      0.02): a pilot of --min-spp samples a pixel measures its
                      spread, then each pixel takes fresh samples in proportion to
-                     its neighbours'; replaces --spp and the scene's antialiasing
+                     it; replaces --spp and the scene's antialiasing
                                    default: the scene's target_error, else off
   --min-spp N        pilot samples, and the fewest fresh ones a pixel takes
                                                                 default: 8

@@ -52,20 +52,17 @@ double RunningMoments::channelVariance() const {
 
 namespace {
 
-/// The fresh count k·w − p clamped to [lo, hi], for a planning weight w and p pilot
-/// samples: together, the pilot and the fresh samples are k·w.
-double plannedCount(double w, double k, int p, int lo, int hi) {
-    return std::clamp(std::ceil(k * w - p), static_cast<double>(lo), static_cast<double>(hi));
+/// The count k·s clamped to [lo, hi], for a planning variance v (s = √v).
+double plannedCount(double v, double k, int lo, int hi) {
+    return std::clamp(std::ceil(k * std::sqrt(v)), static_cast<double>(lo),
+                      static_cast<double>(hi));
 }
 
-/// The predicted mean squared error of counts k·w for the pilot's variances `s2`: the mean of
-/// s²/(p + n).
-double predictedMse(const std::vector<double>& w, const std::vector<float>& s2, double k, int p,
-                    int lo, int hi) {
+/// The predicted mean squared error of counts k·s for planning variances `v`: the mean of v/n.
+double predictedMse(const std::vector<double>& v, double k, int lo, int hi) {
     double sum = 0.0;
-    for (std::size_t i = 0; i < w.size(); ++i)
-        sum += s2[i] / (p + plannedCount(w[i], k, p, lo, hi));
-    return sum / static_cast<double>(w.size());
+    for (double vi : v) sum += vi / plannedCount(vi, k, lo, hi);
+    return sum / static_cast<double>(v.size());
 }
 
 }  // namespace
@@ -73,62 +70,53 @@ double predictedMse(const std::vector<double>& w, const std::vector<float>& s2, 
 // [plan-samples]
 std::vector<std::uint32_t> planSamples(const std::vector<float>& pilotVariance, int width,
                                        int height, const TargetError& target) {
-    const int p = target.pilotSamples(), lo = target.minSamples, hi = target.maxSamples;
-    // Step 1: each pixel's planning weight w, the root of its neighbours' spread (the 3 × 3
-    // block without the pixel itself, cut at the image's edges; none in a 1 × 1 image).
-    std::vector<double> w(pilotVariance.size(), 0.0);
+    const int lo = target.minSamples, hi = target.maxSamples;
+    // Step 1: each pixel's planning variance, the larger of its own and its 3 × 3 mean.
+    std::vector<double> v(pilotVariance.size(), 0.0);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             double sum = 0.0;
             int count = 0;
             for (int qy = std::max(0, y - 1); qy <= std::min(height - 1, y + 1); ++qy)
                 for (int qx = std::max(0, x - 1); qx <= std::min(width - 1, x + 1); ++qx) {
-                    if (qx == x && qy == y) continue;
                     sum += pilotVariance[static_cast<std::size_t>(qy) * width + qx];
                     ++count;
                 }
-            w[static_cast<std::size_t>(y) * width + x] = count == 0 ? 0.0 : std::sqrt(sum / count);
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
+            v[i] = std::max(static_cast<double>(pilotVariance[i]), sum / count);
         }
     // Step 2: the smallest k whose predicted error is at most E. The error falls as k grows,
-    // until every pixel with any weight sits at the ceiling; find a k that is enough (or
+    // until every pixel with any spread sits at the ceiling; find a k that is enough (or
     // that reaches the ceiling everywhere), then bisect.
     const double target2 = target.error * target.error;
     double kLow = 0.0, kHigh = 1.0;
-    const double wMin = [&] {
+    const double vMin = [&] {
         double m = 0.0;
-        for (double wi : w)
-            if (wi > 0.0 && (m == 0.0 || wi < m)) m = wi;
+        for (double vi : v)
+            if (vi > 0.0 && (m == 0.0 || vi < m)) m = vi;
         return m;
     }();
-    // k·wMin ≥ p + the ceiling puts every pixel with a weight at the ceiling.
-    const double kCeiling = wMin > 0.0 ? (p + hi) / wMin : 1.0;
-    while (kHigh < kCeiling && predictedMse(w, pilotVariance, kHigh, p, lo, hi) > target2) {
+    // k·√vMin ≥ the ceiling puts every pixel with a spread at the ceiling.
+    const double kCeiling = vMin > 0.0 ? hi / std::sqrt(vMin) : 1.0;
+    while (kHigh < kCeiling && predictedMse(v, kHigh, lo, hi) > target2) {
         kLow = kHigh;
         kHigh *= 2.0;
     }
     for (int i = 0; i < 64; ++i) {
         const double mid = 0.5 * (kLow + kHigh);
-        (predictedMse(w, pilotVariance, mid, p, lo, hi) > target2 ? kLow : kHigh) = mid;
+        (predictedMse(v, mid, lo, hi) > target2 ? kLow : kHigh) = mid;
     }
-    // Step 3: the counts, made even (a pixel's fresh samples come in two equal groups)
-    // without passing the ceiling.
+    // Step 3: the counts, made even (a pixel's samples come in two equal groups) without
+    // passing the ceiling.
     const auto evenCeiling = static_cast<std::uint32_t>(std::max(2, hi - hi % 2));
-    std::vector<std::uint32_t> counts(w.size());
-    for (std::size_t i = 0; i < w.size(); ++i) {
-        const auto n = static_cast<std::uint32_t>(plannedCount(w[i], kHigh, p, lo, hi));
+    std::vector<std::uint32_t> counts(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const auto n = static_cast<std::uint32_t>(plannedCount(v[i], kHigh, lo, hi));
         counts[i] = std::min(n + n % 2, evenCeiling);
     }
     return counts;
 }
 // [plan-samples]
-
-PixelEstimate withPilot(const PixelEstimate& pilot, int pilotCount, const PixelEstimate& fresh,
-                        int freshCount) {
-    const double p = pilotCount, n = freshCount, total = p + n;
-    // Var((p·a + n·b)/(p + n)) = (p²·Var a + n²·Var b)/(p + n)², a and b independent.
-    return {(p * pilot.mean + n * fresh.mean) / total,
-            (p * p * pilot.varianceOfMean + n * n * fresh.varianceOfMean) / (total * total)};
-}
 
 void SampleMap::record(int x, int y, int count, double varianceOfMean) {
     const std::size_t i = static_cast<std::size_t>(y) * width + x;

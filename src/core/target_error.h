@@ -1,11 +1,11 @@
 /// \file
 /// Rendering to an error, not a sample count (--target-error E). Two stages, after Stein:
-/// every pixel first takes a few pilot samples, which measure how much samples spread there;
-/// from its neighbours' spreads, each pixel is given its own count of fresh samples, more
-/// where the spread is wide, so that the image's expected RMS error is E; the pixel is the
-/// mean of its pilot and fresh samples together. Because a pixel's count is fixed by its
-/// neighbours' pilots, not its own samples, their mean is unbiased and their spread an
-/// unbiased estimate of the error, which is what --stats reports.
+/// every pixel first takes a few pilot samples, which measure how much its samples spread and
+/// are then set aside; from the spreads, each pixel is given its own count of fresh samples,
+/// more where the spread is wide, so that the image's expected RMS error is E; the pixel is
+/// the mean of its fresh samples alone. Because a pixel's count is fixed before its fresh
+/// samples are drawn, their mean is unbiased and their spread an unbiased estimate of the
+/// error, which is what --stats reports.
 /// Source: C. Stein, "A two-sample test for a linear hypothesis whose power is independent of
 /// the variance", Annals of Mathematical Statistics 16(3), 1945 (the two stages); J. Neyman,
 /// "On the two different aspects of the representative method", JRSS 97(4), 1934 (counts in
@@ -28,8 +28,6 @@ struct TargetError {
     double error = 0.0;     ///< E: the image's RMS error, in linear units (1 = white); 0: off.
     int minSamples = 8;     ///< The floor: pilot samples, and the fewest fresh ones a pixel takes.
     int maxSamples = 4096;  ///< The ceiling: the most fresh samples a pixel takes.
-    /// The pilot's samples: the floor, made even (they come in two equal groups).
-    int pilotSamples() const { return minSamples + minSamples % 2; }
     /// Whether the render samples to an error at all.
     bool on() const { return error > 0.0; }
 };
@@ -68,34 +66,20 @@ class RunningMoments {
 };
 
 /// Stage 2: each pixel's count of fresh samples, from the pilot's channel variances s²
-/// (row-major, width × height). A pixel is planned from the mean s² of its neighbours, the 8
-/// pixels around it, never its own: its own pilot samples are part of its estimate, and a
-/// count chosen by looking at them would bias it. With p pilot samples, p + n = k·w, w the
-/// root of that mean and n clamped to [floor, ceiling], with the smallest k whose predicted
-/// RMS error, the root of the mean of s²/(p + n) over the pixels' own s², is at most E (or the
-/// ceiling everywhere). Every step is a pure function of the pilot, in a fixed order: the same
-/// counts on any thread count or rank.
+/// (row-major, width × height). A pixel is planned with the larger of its own s² and the mean
+/// of its 3 × 3 neighbourhood's (a pilot of a few samples misses rare paths; its neighbours
+/// may not). Counts are k·s, clamped to [floor, ceiling], with the smallest k whose predicted
+/// RMS error, the root of the mean of s²/n, is at most E (or the ceiling everywhere).
+/// Every step is a pure function of the pilot, in a fixed order: the same counts on any
+/// thread count or rank.
 std::vector<std::uint32_t> planSamples(const std::vector<float>& pilotVariance, int width,
                                        int height, const TargetError& target);
-
-/// One pixel's estimate: the mean of its samples and the estimated variance of that mean,
-/// averaged over the channels.
-struct PixelEstimate {
-    Colour mean{0.0};
-    double varianceOfMean = 0.0;
-};
-
-/// Stage 3's pixel: the mean of all its samples, `pilotCount` pilot samples (their estimate
-/// `pilot`) and `freshCount` fresh ones (`fresh`), each weighed by its count. The variance of
-/// that mean is (p²·u + n²·v)/(p + n)², from the pilot's u and the fresh samples' v.
-PixelEstimate withPilot(const PixelEstimate& pilot, int pilotCount, const PixelEstimate& fresh,
-                        int freshCount);
 
 /// What a render to a target error spent and estimated, per pixel (row-major).
 struct SampleMap {
     int width = 0, height = 0;
     int pilot = 0;                       ///< Pilot samples every pixel took first.
-    std::vector<std::uint32_t> samples;  ///< Fresh samples, after the pilot's.
+    std::vector<std::uint32_t> samples;  ///< Fresh samples: the pixel's estimate.
     std::vector<float> meanVariance;     ///< The estimated variance of the pixel's mean,
                                          ///< averaged over channels.
 
@@ -117,7 +101,7 @@ struct SampleMap {
     std::uint32_t maxSamples() const;
     /// The estimated RMS error of the recorded pixels: the root of the mean, over them, of each
     /// pixel's estimated variance of its mean. Unbiased for the mean squared error, since each
-    /// count was fixed by the neighbours' pilots, not by the pixel's own samples.
+    /// count was fixed before its samples were drawn.
     double rmsError() const;
 
     /// The recorded pixels as bytes, for another process's map (under MPI each rank records
