@@ -5,6 +5,9 @@ which the error reaches a target (0.01), interpolated on log-log axes.
 
 usage: milk_convergence.py --rt BUILD/rt_ch18 --out DIR [options] [-- extra rt options]
 
+  --scene FILE      another scene instead of the milk ball (chapter 17's own scene, to
+                    compare two binaries at equal time: render the reference with the newer
+                    one, then run the older one with the same DIR, which reuses it)
   --ref-seeds N     renders averaged into the reference (default 32), each --ref-spp samples
   --ref-spp N       samples per pixel of each reference render (default 256)
   --ref-args "..."  rt options for the reference only (default: --media-bounces 1000000,
@@ -15,7 +18,7 @@ usage: milk_convergence.py --rt BUILD/rt_ch18 --out DIR [options] [-- extra rt o
   --label NAME      the series' name in the table
   --fresh           render the reference again even when DIR holds one
 
-The reference is kept in DIR/milk-reference.txt (one linear value per line, the mean of the
+The reference is kept in DIR/<scene>-reference.txt (one linear value per line, the mean of the
 renders) and reused. Times are CPU seconds (user + system) of rt with --threads 1: on a shared
 machine the wall time of a render swings with the load, its CPU time much less. Each point
 also gives the render phase's wall seconds from --stats, for reference. Prints a table and a
@@ -40,11 +43,11 @@ ROOT = Path(__file__).resolve().parents[3]
 SCENE = ROOT / "tests" / "perf" / "ch17" / "milk.lua"
 
 
-def render(rt, spp, seed, out, extra, threads=1):
-    """Render the milk ball; returns (linear pixels, CPU seconds, render wall seconds)."""
+def render(rt, scene, spp, seed, out, extra, threads=1):
+    """Render `scene`; returns (linear pixels, CPU seconds, render wall seconds)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     cmd = [rt, "--quiet", "--stats", "--threads", str(threads), "--spp", str(spp), "--seed",
-           str(seed), "--output", str(out)] + extra + [str(SCENE)]
+           str(seed), "--output", str(out)] + extra + [str(scene)]
     run = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if run.returncode != 0:
@@ -60,12 +63,12 @@ def render(rt, spp, seed, out, extra, threads=1):
 
 def reference(args, tmp):
     """The mean of --ref-seeds renders, each --ref-spp samples a pixel (cached in DIR)."""
-    path = Path(args.out) / "milk-reference.txt"
+    path = Path(args.out) / f"{Path(args.scene).stem}-reference.txt"
     if path.exists() and not args.fresh:
         return [float(v) for v in path.read_text().split()]
     total = None
     for k in range(args.ref_seeds):
-        pixels, cpu, _ = render(args.rt, args.ref_spp, k + 1, tmp / "ref.hdr",
+        pixels, cpu, _ = render(args.rt, args.scene, args.ref_spp, k + 1, tmp / "ref.hdr",
                                 args.ref_args.split(), threads=args.ref_threads)
         total = pixels if total is None else [a + b for a, b in zip(total, pixels)]
         print(f"  reference render {k + 1}/{args.ref_seeds}: {cpu:.1f} CPU s", file=sys.stderr)
@@ -93,6 +96,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--rt", required=True)
     parser.add_argument("--out", required=True)
+    parser.add_argument("--scene", default=str(SCENE))
     parser.add_argument("--ref-seeds", type=int, default=32)
     parser.add_argument("--ref-spp", type=int, default=256)
     parser.add_argument("--ref-threads", type=int, default=2)
@@ -117,7 +121,7 @@ def main():
         for spp in [int(s) for s in args.spp.split(",")]:
             mse = cpu = wall = 0.0
             for seed in range(1000, 1000 + args.seeds):
-                pixels, c, w = render(args.rt, spp, seed, tmp / "x.hdr", args.extra)
+                pixels, c, w = render(args.rt, args.scene, spp, seed, tmp / "x.hdr", args.extra)
                 mse += sum((a - b) ** 2 for a, b in zip(pixels, ref)) / n
                 cpu += c
                 wall += w
