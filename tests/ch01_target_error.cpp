@@ -2,11 +2,13 @@
 /// Chapter 1 tests: rendering to an error, not a sample count (--target-error).
 ///
 /// The claims: the running moments are Welford's closed forms; the plan gives each pixel
-/// fresh samples in proportion to its pilot's spread, as few as reach the target; the error
-/// --stats reports is the error the image has against a converged one; the image is unbiased,
-/// where stopping each pixel when it looks converged is not (the same test finds that bias);
-/// a small, bright, rarely hit feature keeps its brightness at any target; the image is the
-/// same on 1 and 2 threads; and a target that cannot work is refused with the allowed range.
+/// samples in proportion to the spread its planning group and its neighbours' kept pilots
+/// show, as few as reach the target; a pixel's kept pilot and fresh samples are weighed by
+/// their counts; the error --stats reports is the error the image has against a converged one;
+/// the image is unbiased, where stopping each pixel when it looks converged is not (the same
+/// test finds that bias); a small, bright, rarely hit feature keeps its brightness at any
+/// target; the image is the same on 1 and 2 threads; and a target that cannot work is refused
+/// with the allowed range.
 /// The scenes are chapter 1's: spheres on black, whose edges are the only noise (a pixel's
 /// samples hit or miss). Rendering them needs exercises 1.1 (the sphere) and 1.2 (the camera
 /// ray), so those scenarios carry both tags: in an assignment they sit in row 1.2.
@@ -77,7 +79,7 @@ struct Spheres {
         settings.seed = seed;
         settings.target = target;
         settings.shouldStop = std::move(shouldStop);
-        map = rb::SampleMap(kWidth, kHeight, target.minSamples);
+        map = rb::SampleMap(kWidth, kHeight, target.pilotSamples());
         settings.sampleMap = &map;
         rb::RayCounters counters;
         return rb::render(world.scene, world.pipeline, camera(), kWidth, kHeight, settings,
@@ -100,8 +102,8 @@ struct Reference {
     rb::SampleMap map;
 };
 
-/// The specks' or the balls' reference, made once: every pixel takes the same 512 fresh
-/// samples (floor = ceiling), seed 1000.
+/// The specks' or the balls' reference, made once: every pixel is the mean of the same 514
+/// samples (a floor of 512: 512 kept pilot and the 2 fresh that reach E = 1), seed 1000.
 const Reference& referenceOf(const Spheres& scene, bool tiny) {
     static const auto make = [](const Spheres& s) {
         Reference r;
@@ -210,19 +212,26 @@ SCENARIO("Welford's running moments give the mean and the unbiased variance of t
     }
 }
 
-SCENARIO("the plan gives pixels fresh samples in proportion to their spread, as few as reach E",
-         "[ch01][target-error]") {
+SCENARIO(
+    "the plan gives pixels samples in proportion to the spread they and their neighbours show, "
+    "as few as reach E",
+    "[ch01][target-error]") {
     const int w = 8, h = 8;
-    GIVEN("a pilot in which every pixel has the same variance v = 0.09") {
+    // The default floor of 8: a planning group of 4 set aside, 8 pilot samples kept, and at
+    // least 2 fresh ones.
+    GIVEN("a pilot in which every pixel's samples have the same variance v = 0.09") {
         const std::vector<float> pilot(w * h, 0.09f);
         for (double e : {0.1, 0.03, 0.01}) {
             WHEN("the target is E = " + std::to_string(e)) {
-                const auto plan = rb::planSamples(pilot, w, h, target(e));
-                THEN("every pixel takes the fewest n with v/n ≤ E², n = ⌈v/E²⌉, made even") {
-                    // Source: the predicted error of equal counts is v/n; the smallest whole n,
-                    // then the next even one (a pixel's samples come in two equal groups).
+                const auto plan = rb::planSamples(pilot, pilot, w, h, target(e));
+                THEN(
+                    "every pixel takes the fewest fresh n with v/(8 + n) ≤ E², n = ⌈v/E² − 8⌉, at "
+                    "least the fresh floor 2, made even") {
+                    // Source: the predicted error of equal counts is v/(q + n), the q = 8 kept
+                    // pilot samples counted; the smallest whole n, then the next even one (a
+                    // pixel's fresh samples come in two equal groups).
                     auto expected = static_cast<std::uint32_t>(
-                        std::max(8.0, std::ceil(double(0.09f) / (e * e) - 1e-9)));
+                        std::max(2.0, std::ceil(double(0.09f) / (e * e) - 8.0 - 1e-9)));
                     expected += expected % 2;
                     for (std::uint32_t n : plan) REQUIRE(n == expected);
                 }
@@ -234,16 +243,21 @@ SCENARIO("the plan gives pixels fresh samples in proportion to their spread, as 
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) pilot[y * w + x] = x < w / 2 ? 0.01f : 0.16f;
         WHEN("the target needs many samples (E = 0.01)") {
-            const auto plan = rb::planSamples(pilot, w, h, target(0.01));
-            THEN("away from the border between them, the right takes 4 times the left: n ∝ s") {
-                // Source: Neyman: n ∝ s minimises Σ s²/n for a given Σ n; s = √v, √16 = 4.
-                const double left = plan[3 * w + 1], right = plan[3 * w + 6];
+            const auto plan = rb::planSamples(pilot, pilot, w, h, target(0.01));
+            THEN(
+                "away from the border between them, the right takes 4 times the left, kept "
+                "pilot included: q + n ∝ s") {
+                // Source: Neyman: q + n ∝ s minimises Σ s²/(q + n) for a given Σ n; s = √v,
+                // √16 = 4.
+                const double left = 8 + plan[3 * w + 1], right = 8 + plan[3 * w + 6];
                 CAPTURE(left, right);
                 CHECK(right / left == Approx(4.0).epsilon(0.01));
             }
-            THEN("the predicted error, the root of the mean of v/n, is at most E") {
+            THEN(
+                "the predicted error, the root of the mean of s²/(8 + n) with each pixel's own "
+                "kept s², is at most E") {
                 double sum = 0.0;
-                for (int i = 0; i < w * h; ++i) sum += pilot[i] / plan[i];
+                for (int i = 0; i < w * h; ++i) sum += pilot[i] / (8 + plan[i]);
                 CHECK(std::sqrt(sum / (w * h)) <= 0.01 * (1 + 1e-9));
             }
         }
@@ -252,20 +266,73 @@ SCENARIO("the plan gives pixels fresh samples in proportion to their spread, as 
         const std::vector<float> flat(w * h, 0.0f);
         std::vector<float> one(w * h, 0.0f);
         one[4 * w + 4] = 0.9f;
-        THEN("without spread every pixel takes the floor") {
-            for (std::uint32_t n : rb::planSamples(flat, w, h, target(0.01))) REQUIRE(n == 8u);
+        THEN("without spread every pixel takes the fresh floor") {
+            for (std::uint32_t n : rb::planSamples(flat, flat, w, h, target(0.01)))
+                REQUIRE(n == 2u);
         }
         THEN(
-            "the noisy pixel's neighbours take more than the floor (a pilot misses rare paths; "
-            "its neighbours may not), pixels two away the floor") {
-            const auto plan = rb::planSamples(one, w, h, target(0.01));
-            CHECK(plan[4 * w + 4] > plan[3 * w + 3]);
-            CHECK(plan[3 * w + 3] > 8u);
-            CHECK(plan[2 * w + 2] == 8u);
+            "where both its groups saw the noise, the noisy pixel takes the most, 3 times its "
+            "neighbours (√9: its own s² against their block's mean, a ninth of it), and pixels "
+            "two away the floor") {
+            const auto plan = rb::planSamples(one, one, w, h, target(0.01));
+            CAPTURE(plan[4 * w + 4], plan[3 * w + 3]);
+            // Each count is rounded up to a whole even number, by less than 2: the
+            // neighbours' 8 + 40 by up to 2 in 46, 4.3%.
+            CHECK(double(8 + plan[4 * w + 4]) / (8 + plan[3 * w + 3]) == Approx(3.0).epsilon(0.05));
+            CHECK(plan[4 * w + 5] == plan[3 * w + 3]);
+            CHECK(plan[2 * w + 2] == 2u);
         }
-        THEN("a target beyond reach gives the noisy pixel the ceiling, no more") {
-            const auto plan = rb::planSamples(one, w, h, target(1e-6, 8, 500));
+        THEN(
+            "where only its planning group saw it, among pixels of equal spread, the pixel alone "
+            "takes more than the rest: the group set aside plans it and nothing else") {
+            const std::vector<float> even(w * h, 0.01f);
+            std::vector<float> planningSaw = even;
+            planningSaw[4 * w + 4] = 0.9f;
+            const auto plan = rb::planSamples(planningSaw, even, w, h, target(0.01));
+            CHECK(plan[4 * w + 4] > plan[1 * w + 1]);
+            CHECK(plan[3 * w + 3] == plan[1 * w + 1]);
+        }
+        THEN(
+            "where only its kept pilot saw it, among pixels of equal spread, its neighbours take "
+            "more than the rest and the pixel itself no more: its kept samples never plan it") {
+            const std::vector<float> even(w * h, 0.01f);
+            std::vector<float> keptSaw = even;
+            keptSaw[4 * w + 4] = 0.9f;
+            const auto plan = rb::planSamples(even, keptSaw, w, h, target(0.01));
+            CHECK(plan[3 * w + 3] > plan[1 * w + 1]);
+            CHECK(plan[4 * w + 4] == plan[1 * w + 1]);
+        }
+        THEN(
+            "a target beyond reach gives the noisy pixel and its neighbours the ceiling, no more") {
+            const auto plan = rb::planSamples(one, one, w, h, target(1e-6, 8, 500));
             CHECK(plan[4 * w + 4] == 500u);
+            CHECK(plan[3 * w + 4] == 500u);
+        }
+    }
+    GIVEN("a 1 × 1 image, whose pixel is its own block") {
+        THEN("a quiet pixel takes the fresh floor, and a noisy one the fewest that reach E") {
+            CHECK(rb::planSamples({0.0f}, {0.0f}, 1, 1, target(0.01)) ==
+                  std::vector<std::uint32_t>{2u});
+            // Source: 0.25/(8 + n) ≤ 0.05² gives n = 92.
+            CHECK(rb::planSamples({0.25f}, {0.25f}, 1, 1, target(0.05)) ==
+                  std::vector<std::uint32_t>{92u});
+        }
+    }
+}
+
+SCENARIO("a pixel's pilot and fresh samples are weighed by their counts", "[ch01][target-error]") {
+    GIVEN(
+        "a pilot of 8 samples of mean 1 whose mean has variance 0.06, and 24 fresh samples of "
+        "mean 0.5 whose mean has variance 0.001") {
+        const rb::PixelEstimate e = rb::withPilot(rb::PixelEstimate{rb::Colour(1.0), 0.06}, 8,
+                                                  rb::PixelEstimate{rb::Colour(0.5), 0.001}, 24);
+        THEN("the pixel is (8·1 + 24·0.5)/32 = 0.625") {
+            CHECK(e.mean.g == Approx(0.625));
+        }
+        THEN("the variance of its mean is (8²·0.06 + 24²·0.001)/32² = 4.416/1024") {
+            // Source: Var((p·a + n·b)/(p + n)) = (p²·Var a + n²·Var b)/(p + n)², a and b
+            // independent.
+            CHECK(e.varianceOfMean == Approx(4.416 / 1024.0));
         }
     }
 }
@@ -323,8 +390,8 @@ SCENARIO("sampling to an error adds no bias, where stopping a pixel when it look
                 most = std::max(most, map.maxSamples());
             }
             const double var = independentMeanVariance(scene, target(0.01)) / 8;
-            THEN("the plan was adaptive: some pixel took more than the floor and the pilot") {
-                CHECK(most > 16u);
+            THEN("the plan was adaptive: some pixel took more than the pilot and the fresh floor") {
+                CHECK(most > 14u);
             }
             THEN("the mean agrees with the reference's: |z| < 3.29 (two-sided, α = 0.001)") {
                 const double z = (mean - refMean) / std::sqrt(var + refVar);
@@ -338,9 +405,10 @@ SCENARIO("sampling to an error adds no bias, where stopping a pixel when it look
             double mean = 0.0;
             for (std::uint64_t seed = 1; seed <= 8; ++seed)
                 mean += imageMean(stopWhenConverged(scene, 0.05, 8, seed)) / 8;
-            // Its spread is below that of a two-stage render with the floor everywhere (every
-            // pixel at least as many samples); use that one's, E = 10.
-            const double var = independentMeanVariance(scene, target(10.0)) / 8;
+            // Its spread is below that of a two-stage render of 8 samples everywhere (every
+            // pixel at least as many samples): a floor of 6, 6 kept pilot and 2 fresh, at
+            // E = 10.
+            const double var = independentMeanVariance(scene, target(10.0, 6)) / 8;
             THEN(
                 "the specks come out darker than they are, by far more than the noise: "
                 "z < −3.29") {
@@ -371,8 +439,10 @@ SCENARIO("a small, bright, rarely hit feature keeps its brightness at any target
                     for (std::uint32_t n : map.samples) fewest = std::min(fewest, n);
                     most = std::max(most, map.maxSamples());
                 }
-                THEN("every pixel took at least the floor of fresh samples after its pilot") {
-                    CHECK(fewest >= 8u);
+                THEN(
+                    "every pixel's value is the mean of more than the floor: 8 kept pilot and at "
+                    "least 2 fresh samples") {
+                    CHECK(fewest >= 2u);
                     CAPTURE(most);
                 }
                 THEN("their mean brightness is the reference's: |z| < 3.29") {

@@ -324,7 +324,7 @@ int run(int argc, char** argv, Cluster& cluster) {
         std::optional<SampleMap> sampleMap;
         if (settings.target.on()) {
             sampleMap.emplace(world->source.job.width, world->source.job.height,
-                              settings.target.minSamples);
+                              settings.target.pilotSamples());
             settings.sampleMap = &*sampleMap;
         }
         PartialImage partial;
@@ -404,9 +404,11 @@ int run(int argc, char** argv, Cluster& cluster) {
                     std::fprintf(stderr, "  %s\n", line.c_str());
             if (settings.target.on()) {
                 std::fprintf(stderr,
-                             "  target     error %.4g; %d pilot samples, then %d to %d per pixel\n",
-                             settings.target.error, settings.target.minSamples,
-                             settings.target.minSamples, settings.target.maxSamples);
+                             "  target     error %.4g; a pilot of %d samples (%d plan, %d kept), "
+                             "then %d to %d per pixel\n",
+                             settings.target.error, settings.target.pilotSamples(),
+                             settings.target.planningSamples(), settings.target.keptPilotSamples(),
+                             settings.target.freshFloor(), settings.target.maxSamples);
                 std::fprintf(
                     stderr, "  samples    mean %.1f, max %u per pixel; estimated RMS error %.4g",
                     sampleMap->meanSamples(), sampleMap->maxSamples(), sampleMap->rmsError());

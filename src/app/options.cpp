@@ -217,16 +217,17 @@ Renders every gr.render call of a CS488 A4 Lua scene (or a seed dialect).
   --spp N            samples per pixel                          default: 1, one ray
                                                                 through each pixel centre
   --target-error E   render to an RMS error of E (linear units, 1 = white; e.g.
-                     0.02): a pilot of --min-spp samples a pixel measures its
-                     spread, then each pixel takes fresh samples in proportion to
-                     it; replaces --spp and the scene's antialiasing
+                     0.02): a pilot measures each pixel's spread, then each
+                     pixel takes fresh samples in proportion to its own and its
+                     neighbours'; replaces --spp and the scene's antialiasing
                                    default: the scene's target_error, else off
-  --min-spp N        pilot samples, and the fewest fresh ones a pixel takes
+  --min-spp N        the floor: a pixel keeps a pilot of N (made even), after
+                     N/2 (at least 2) that plan it, then takes 2 or more fresh
                                                                 default: 8
   --max-spp N        the most fresh samples a pixel takes       default: 4096
   --aov sample-count write NAME.samples.png beside the image: a heat map of the
                      samples each pixel took (black none, white the most, or
-                     8 times --min-spp if no pixel took that many)
+                     8 times the pilot if no pixel took that many)
   --max-depth N      recursion limit for secondary rays         default: the scene's
                                                                 max_depth, else 5
   --size WxH         override the image size                    default: gr.render's

@@ -162,49 +162,6 @@ void renderTile(const ImageTile& tile, const Integrator& integrator, const Pinho
 }
 
 // [target-error-tile]
-/// Take samples first, first + 1, ... of pixel (x, y), `count` of them, and return their
-/// moments: the pilot. Each is independent (a uniformly jittered film position and, through a
-/// lens, a uniform lens point), so that their spread measures the pixel's noise. Sample s draws
-/// what an --spp render's sample s draws.
-RunningMoments samplePixel(int x, int y, int first, int count, const Integrator& integrator,
-                           const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
-                           std::uint64_t seed, RayCounters& rays) {
-    const std::uint64_t pixelIndex = static_cast<std::uint64_t>(y) * width + x;
-    RunningMoments moments;
-    for (int s = first; s < first + count; ++s) {
-        Sampler sampler(seed, pixelIndex, s);
-        const Vec2 offset = sampler.next2D();
-        const Vec2 film(x + offset.x, y + offset.y);
-        const Ray ray = lens ? lens->generate(camera, film, {seed, pixelIndex, 0, 1}, sampler)
-                             : camera.generateRay(film.x, film.y);
-        rays.add(RayKind::Camera);
-        moments.add(integrator.trace(ray, sampler, rays, 0));
-    }
-    return moments;
-}
-
-/// Stage 1 for one tile: each pixel's pilot samples (0 ... floor − 1), and their channel
-/// variance into `pilot` (row-major, the image's width); `stop` is asked after each pixel.
-void pilotTile(const ImageTile& tile, const Integrator& integrator, const PinholeCamera& camera,
-               const CameraRayGenerator* lens, int width, std::uint64_t seed,
-               const TargetError& target, std::vector<float>& pilot, RayCounters& rays,
-               PixelStop& stop) {
-    for (int y = tile.y0; y < tile.y1; ++y)
-        for (int x = tile.x0; x < tile.x1; ++x) {
-            pilot[static_cast<std::size_t>(y) * width + x] = static_cast<float>(
-                samplePixel(x, y, 0, target.minSamples, integrator, camera, lens, width, seed, rays)
-                    .channelVariance());
-            stop.afterPixel(rays.total());
-        }
-}
-
-/// Stage 3's result for one pixel: the mean of its fresh samples and the estimated variance of
-/// that mean, averaged over the channels.
-struct PixelEstimate {
-    Colour mean{0.0};
-    double varianceOfMean = 0.0;
-};
-
 /// A permutation of 0 … m − 1, drawn from `sampler` (Fisher and Yates's shuffle).
 std::vector<std::uint32_t> shuffled(int m, Sampler& sampler) {
     std::vector<std::uint32_t> order(static_cast<std::size_t>(m));
@@ -216,16 +173,17 @@ std::vector<std::uint32_t> shuffled(int m, Sampler& sampler) {
     return order;
 }
 
-/// Streams of rb::Sampler far beyond any sample's: the shuffles of a pixel's two groups.
+/// Streams of rb::Sampler far beyond any sample's: the shuffles of a pixel's groups.
 constexpr std::uint64_t kShuffleStream = std::uint64_t{1} << 40;
 
-/// The mean of one group of m fresh samples of pixel (x, y), sample streams first … first +
-/// m − 1: a Latin hypercube over the pixel, its x and its y each cut into m strata that the
-/// group's samples take one each, in an order shuffled per group; through a lens (chapter 13)
-/// its own m strata are paired with the samples the same way (RaySlot index i of m).
+/// The mean of one group of m samples of pixel (x, y), sample streams first … first + m − 1:
+/// a Latin hypercube over the pixel, its x and its y each cut into m strata that the group's
+/// samples take one each, in an order shuffled per group; through a lens (chapter 13) its own
+/// m strata are paired with the samples the same way (RaySlot index i of m). Each sample is
+/// also added to `spread`.
 Colour sampleGroup(int x, int y, int group, int first, int m, const Integrator& integrator,
                    const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
-                   std::uint64_t seed, RayCounters& rays) {
+                   std::uint64_t seed, RayCounters& rays, RunningMoments& spread) {
     const std::uint64_t pixelIndex = static_cast<std::uint64_t>(y) * width + x;
     Sampler shuffle(seed, pixelIndex, kShuffleStream + group);
     const std::vector<std::uint32_t> columns = shuffled(m, shuffle), rows = shuffled(m, shuffle);
@@ -239,41 +197,83 @@ Colour sampleGroup(int x, int y, int group, int first, int m, const Integrator& 
         const Ray ray = lens ? lens->generate(camera, film, {seed, lensKey, i, m}, sampler)
                              : camera.generateRay(film.x, film.y);
         rays.add(RayKind::Camera);
-        sum += integrator.trace(ray, sampler, rays, 0);
+        const Colour value = integrator.trace(ray, sampler, rays, 0);
+        spread.add(value);
+        sum += value;
     }
     return sum / static_cast<double>(m);
 }
 
-/// Stage 3 for one pixel: `count` (even) fresh samples after the pilot's, in two independent
-/// groups of count/2. Strata lower the noise of each group's mean, and since the groups are
-/// independent, the squared difference of their means over 4 is an unbiased estimate of the
-/// variance of the pixel's mean, strata or not (one degree of freedom a pixel; the image's sum
-/// of them has many).
-PixelEstimate sampleFresh(int x, int y, int first, int count, const Integrator& integrator,
-                          const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
-                          std::uint64_t seed, RayCounters& rays) {
-    const int m = count / 2;
-    const Colour a = sampleGroup(x, y, 0, first, m, integrator, camera, lens, width, seed, rays);
-    const Colour b =
-        sampleGroup(x, y, 1, first + m, m, integrator, camera, lens, width, seed, rays);
+/// Two independent groups of m samples each (groups `group` and `group` + 1, sample streams
+/// first … first + 2m − 1), and their mean. Strata lower the noise of each group's mean, and
+/// since the groups are independent, the squared difference of their means over 4 is an
+/// unbiased estimate of the variance of the pixel's mean, strata or not (one degree of
+/// freedom a pixel; the image's sum of them has many). `spread` gets every sample.
+PixelEstimate sampleTwoGroups(int x, int y, int group, int first, int m,
+                              const Integrator& integrator, const PinholeCamera& camera,
+                              const CameraRayGenerator* lens, int width, std::uint64_t seed,
+                              RayCounters& rays, RunningMoments& spread) {
+    const Colour a =
+        sampleGroup(x, y, group, first, m, integrator, camera, lens, width, seed, rays, spread);
+    const Colour b = sampleGroup(x, y, group + 1, first + m, m, integrator, camera, lens, width,
+                                 seed, rays, spread);
     const Colour d = a - b;
     return {0.5 * (a + b), (d.r * d.r + d.g * d.g + d.b * d.b) / 12.0};
 }
 
+/// Stage 1's result for the image (row-major): each pixel's kept pilot estimate, which is
+/// part of its final one, its kept samples' channel variance s², which plans its neighbours,
+/// and its planning group's, which plans it.
+struct PilotImage {
+    std::vector<PixelEstimate> estimate;
+    std::vector<float> kept;
+    std::vector<float> planning;
+};
+
+/// The kept pilot's groups; the fresh samples' are 0 and 1, the planning group's 4.
+constexpr int kPilotGroup = 2;
+constexpr int kPlanningGroup = 4;
+
+/// Stage 1 for one tile: each pixel's pilot. Its planning group (samples 0 … a − 1) gives
+/// a spread that plans the pixel and is set aside; its two kept groups (a … a + q − 1) come
+/// as the fresh ones do, make part of the pixel, and their spread plans its neighbours. All
+/// go into `pilot`; `stop` is asked after each pixel.
+void pilotTile(const ImageTile& tile, const Integrator& integrator, const PinholeCamera& camera,
+               const CameraRayGenerator* lens, int width, std::uint64_t seed,
+               const TargetError& target, PilotImage& pilot, RayCounters& rays, PixelStop& stop) {
+    const int a = target.planningSamples(), m = target.keptPilotSamples() / 2;
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
+            RunningMoments planning, kept;
+            sampleGroup(x, y, kPlanningGroup, 0, a, integrator, camera, lens, width, seed, rays,
+                        planning);
+            pilot.planning[i] = static_cast<float>(planning.channelVariance());
+            pilot.estimate[i] = sampleTwoGroups(x, y, kPilotGroup, a, m, integrator, camera, lens,
+                                                width, seed, rays, kept);
+            pilot.kept[i] = static_cast<float>(kept.channelVariance());
+            stop.afterPixel(rays.total());
+        }
+}
+
 /// Stage 3 for one tile: each pixel's planned fresh samples, after the pilot's; the pixel is
-/// their mean. Returns the sum over the tile's pixels of their estimated variance of the mean
-/// (for the progress line). `stop` is asked after each pixel.
+/// the mean of them and the kept pilot's. Returns the sum over the tile's pixels of their
+/// estimated variance of the mean (for the progress line). `stop` is asked after each pixel.
 double renderTileToError(const ImageTile& tile, const Integrator& integrator,
                          const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
-                         std::uint64_t seed, const TargetError& target,
+                         std::uint64_t seed, const TargetError& target, const PilotImage& pilot,
                          const std::vector<std::uint32_t>& plan, Image& image, SampleMap* map,
                          RayCounters& rays, PixelStop& stop) {
+    const int p = target.pilotSamples(), q = target.keptPilotSamples();
     double varianceSum = 0.0;
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
-            const auto count = static_cast<int>(plan[static_cast<std::size_t>(y) * width + x]);
-            const PixelEstimate e = sampleFresh(x, y, target.minSamples, count, integrator, camera,
-                                                lens, width, seed, rays);
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
+            const auto count = static_cast<int>(plan[i]);
+            RunningMoments unused;
+            const PixelEstimate fresh = sampleTwoGroups(x, y, 0, p, count / 2, integrator, camera,
+                                                        lens, width, seed, rays, unused);
+            const PixelEstimate e = withPilot(pilot.estimate[i], q, fresh, count);
             image.set(x, y, e.mean);
             if (map) map->record(x, y, count, e.varianceOfMean);
             varianceSum += e.varianceOfMean;
@@ -289,14 +289,14 @@ double renderTileToError(const ImageTile& tile, const Integrator& integrator,
 /// the render is to stop, throws TileAbandoned with the tile half-done.
 double renderImageTile(const ImageTile& tile, const Pipeline& pipeline,
                        const Integrator& integrator, const PinholeCamera& camera, int width,
-                       int height, const RenderSettings& settings,
+                       int height, const RenderSettings& settings, const PilotImage& pilot,
                        const std::vector<std::uint32_t>& plan, SampleMap* map, Image& image,
                        RayCounters& rays, PixelStop& stop) {
     const int spp = std::max(1, settings.samplesPerPixel);
     const std::uint64_t seed = settings.seed;
     if (settings.target.on())
         return renderTileToError(tile, integrator, camera, pipeline.cameraRays.get(), width, seed,
-                                 settings.target, plan, image, map, rays, stop);
+                                 settings.target, pilot, plan, image, map, rays, stop);
     if (pipeline.pixelSampler)
         pipeline.pixelSampler->renderTile(tile, integrator, camera, width, height, seed, image,
                                           rays, stop);
@@ -335,15 +335,23 @@ std::vector<WorkUnit> plannedWork(const std::vector<ImageTile>& tiles,
     return units;
 }
 
-/// Stage 1 of a target-error render: every pixel's pilot variance (row-major). On one
-/// process the tiles go to threads; under a cluster, process r takes tiles r, r + size, ...
-/// and every process receives every tile's values. Throws RenderStopped when asked to stop,
-/// and a tile's exception after the others finish.
-std::vector<float> pilotVariances(const std::vector<ImageTile>& tiles, const Integrator& integrator,
-                                  const PinholeCamera& camera, const CameraRayGenerator* lens,
-                                  int width, int height, const RenderSettings& settings,
-                                  int threads, std::vector<RayCounters>& perThread) {
-    std::vector<float> pilot(static_cast<std::size_t>(width) * height, 0.0f);
+/// One pixel's pilot as the processes exchange it.
+struct PackedPilot {
+    double r, g, b, varianceOfMean;
+    float kept, planning;
+};
+
+/// Stage 1 of a target-error render: every pixel's pilot mean and variances. On one process
+/// the tiles go to threads; under a cluster, process r takes tiles r, r + size, ... and every
+/// process receives every tile's values. Throws RenderStopped when asked to stop, and a
+/// tile's exception after the others finish.
+PilotImage pilotPass(const std::vector<ImageTile>& tiles, const Integrator& integrator,
+                     const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
+                     int height, const RenderSettings& settings, int threads,
+                     std::vector<RayCounters>& perThread) {
+    const auto pixels = static_cast<std::size_t>(width) * height;
+    PilotImage pilot{std::vector<PixelEstimate>(pixels), std::vector<float>(pixels, 0.0f),
+                     std::vector<float>(pixels, 0.0f)};
     Cluster* cluster =
         settings.cluster && settings.cluster->distributed() ? settings.cluster : nullptr;
     const int rank = cluster ? cluster->rank() : 0, size = cluster ? cluster->size() : 1;
@@ -374,20 +382,28 @@ std::vector<float> pilotVariances(const std::vector<ImageTile>& tiles, const Int
     if (stopped) throw RenderStopped("the render was stopped before it finished", 1);
     if (!cluster) return pilot;
     // Under a cluster: this process's tiles' values, in tile order, to every process.
-    std::vector<float> mine;
+    std::vector<PackedPilot> mine;
     for (int k = rank; k < count; k += size)
         for (int y = tiles[k].y0; y < tiles[k].y1; ++y)
-            for (int x = tiles[k].x0; x < tiles[k].x1; ++x)
-                mine.push_back(pilot[static_cast<std::size_t>(y) * width + x]);
+            for (int x = tiles[k].x0; x < tiles[k].x1; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y) * width + x;
+                const PixelEstimate& e = pilot.estimate[i];
+                mine.push_back({e.mean.r, e.mean.g, e.mean.b, e.varianceOfMean, pilot.kept[i],
+                                pilot.planning[i]});
+            }
     const std::vector<std::byte> all = cluster->joinInOrder(std::as_bytes(std::span(mine)));
     std::size_t at = 0;
     for (int r = 0; r < size; ++r)
         for (int k = r; k < count; k += size)
             for (int y = tiles[k].y0; y < tiles[k].y1; ++y)
                 for (int x = tiles[k].x0; x < tiles[k].x1; ++x) {
-                    std::memcpy(&pilot[static_cast<std::size_t>(y) * width + x], all.data() + at,
-                                sizeof(float));
-                    at += sizeof(float);
+                    PackedPilot one;
+                    std::memcpy(&one, all.data() + at, sizeof one);
+                    at += sizeof one;
+                    const std::size_t i = static_cast<std::size_t>(y) * width + x;
+                    pilot.estimate[i] = {Colour(one.r, one.g, one.b), one.varianceOfMean};
+                    pilot.kept[i] = one.kept;
+                    pilot.planning[i] = one.planning;
                 }
     return pilot;
 }
@@ -430,6 +446,7 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
     const std::vector<ImageTile> tiles = tilesInRenderOrder(width, height);
     if (settings.tileThreads) settings.tileThreads->assign(tiles.size(), -1);
     // Under a target error (--target-error): the pilot, and each pixel's plan of fresh samples.
+    PilotImage pilot;
     std::vector<std::uint32_t> plan;
     if (settings.target.on()) {
         // The pilot runs before the bar can price the work: say what is happening meanwhile.
@@ -437,11 +454,10 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
             std::fprintf(stderr,
                          "rt: target error %.3g: a pilot of %d samples a pixel measures the "
                          "noise, then the bar follows the planned samples\n",
-                         settings.target.error, settings.target.minSamples);
-        const std::vector<float> pilot =
-            pilotVariances(tiles, integrator, camera, pipeline.cameraRays.get(), width, height,
-                           settings, threads, perThread);
-        plan = planSamples(pilot, width, height, settings.target);
+                         settings.target.error, settings.target.pilotSamples());
+        pilot = pilotPass(tiles, integrator, camera, pipeline.cameraRays.get(), width, height,
+                          settings, threads, perThread);
+        plan = planSamples(pilot.planning, pilot.kept, width, height, settings.target);
     }
     ProgressBar progress(settings.progress, tiles, settings.target,
                          plan.empty() ? workUnits(tiles) : plannedWork(tiles, plan, width));
@@ -453,8 +469,8 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         std::atomic<bool> clusterStopped{false};
         const auto renderOne = [&](int k, Image& film, RayCounters& rays) {
             PixelStop stop(settings.shouldStop, clusterStopped);
-            renderImageTile(tiles[k], pipeline, integrator, camera, width, height, settings, plan,
-                            settings.sampleMap, film, rays, stop);
+            renderImageTile(tiles[k], pipeline, integrator, camera, width, height, settings, pilot,
+                            plan, settings.sampleMap, film, rays, stop);
         };
         std::atomic<std::size_t> tilesDone{0};  // in this film (rank 0: every rank's)
         const auto started = [&](int k) { progress.tileStarted(k); };
@@ -510,8 +526,9 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
         double varianceSum = 0.0;
         try {
             PixelStop stop(settings.shouldStop, stopped);
-            varianceSum = renderImageTile(tiles[k], pipeline, integrator, camera, width, height,
-                                          settings, plan, settings.sampleMap, image, rays, stop);
+            varianceSum =
+                renderImageTile(tiles[k], pipeline, integrator, camera, width, height, settings,
+                                pilot, plan, settings.sampleMap, image, rays, stop);
         } catch (const TileAbandoned&) {
             dropTile(tiles[k], image);  // stopped is set
             continue;

@@ -52,71 +52,86 @@ double RunningMoments::channelVariance() const {
 
 namespace {
 
-/// The count k·s clamped to [lo, hi], for a planning variance v (s = √v).
-double plannedCount(double v, double k, int lo, int hi) {
-    return std::clamp(std::ceil(k * std::sqrt(v)), static_cast<double>(lo),
-                      static_cast<double>(hi));
+/// The fresh count k·w − q clamped to [lo, hi], for a planning weight w and q kept pilot
+/// samples: together, the kept pilot and the fresh samples are k·w.
+double plannedCount(double w, double k, int q, int lo, int hi) {
+    return std::clamp(std::ceil(k * w - q), static_cast<double>(lo), static_cast<double>(hi));
 }
 
-/// The predicted mean squared error of counts k·s for planning variances `v`: the mean of v/n.
-double predictedMse(const std::vector<double>& v, double k, int lo, int hi) {
+/// The predicted mean squared error of counts k·w for the kept pilots' variances `s2`: the
+/// mean of s²/(q + n).
+double predictedMse(const std::vector<double>& w, const std::vector<float>& s2, double k, int q,
+                    int lo, int hi) {
     double sum = 0.0;
-    for (double vi : v) sum += vi / plannedCount(vi, k, lo, hi);
-    return sum / static_cast<double>(v.size());
+    for (std::size_t i = 0; i < w.size(); ++i)
+        sum += s2[i] / (q + plannedCount(w[i], k, q, lo, hi));
+    return sum / static_cast<double>(w.size());
 }
 
 }  // namespace
 
 // [plan-samples]
-std::vector<std::uint32_t> planSamples(const std::vector<float>& pilotVariance, int width,
-                                       int height, const TargetError& target) {
-    const int lo = target.minSamples, hi = target.maxSamples;
-    // Step 1: each pixel's planning variance, the larger of its own and its 3 × 3 mean.
-    std::vector<double> v(pilotVariance.size(), 0.0);
+std::vector<std::uint32_t> planSamples(const std::vector<float>& planning,
+                                       const std::vector<float>& kept, int width, int height,
+                                       const TargetError& target) {
+    const int q = target.keptPilotSamples(), lo = target.freshFloor(), hi = target.maxSamples;
+    // Step 1: each pixel's planning weight w, the root of the larger of its planning group's
+    // spread and its 3 × 3 block's mean spread, the neighbours' kept pilots' (the block cut at
+    // the image's edges).
+    std::vector<double> w(planning.size(), 0.0);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
             double sum = 0.0;
             int count = 0;
             for (int qy = std::max(0, y - 1); qy <= std::min(height - 1, y + 1); ++qy)
                 for (int qx = std::max(0, x - 1); qx <= std::min(width - 1, x + 1); ++qx) {
-                    sum += pilotVariance[static_cast<std::size_t>(qy) * width + qx];
+                    const std::size_t j = static_cast<std::size_t>(qy) * width + qx;
+                    sum += j == i ? planning[i] : kept[j];
                     ++count;
                 }
-            const std::size_t i = static_cast<std::size_t>(y) * width + x;
-            v[i] = std::max(static_cast<double>(pilotVariance[i]), sum / count);
+            w[i] = std::sqrt(std::max(static_cast<double>(planning[i]), sum / count));
         }
     // Step 2: the smallest k whose predicted error is at most E. The error falls as k grows,
-    // until every pixel with any spread sits at the ceiling; find a k that is enough (or
+    // until every pixel with any weight sits at the ceiling; find a k that is enough (or
     // that reaches the ceiling everywhere), then bisect.
     const double target2 = target.error * target.error;
     double kLow = 0.0, kHigh = 1.0;
-    const double vMin = [&] {
+    const double wMin = [&] {
         double m = 0.0;
-        for (double vi : v)
-            if (vi > 0.0 && (m == 0.0 || vi < m)) m = vi;
+        for (double wi : w)
+            if (wi > 0.0 && (m == 0.0 || wi < m)) m = wi;
         return m;
     }();
-    // k·√vMin ≥ the ceiling puts every pixel with a spread at the ceiling.
-    const double kCeiling = vMin > 0.0 ? hi / std::sqrt(vMin) : 1.0;
-    while (kHigh < kCeiling && predictedMse(v, kHigh, lo, hi) > target2) {
+    // k·wMin ≥ q + the ceiling puts every pixel with a weight at the ceiling.
+    const double kCeiling = wMin > 0.0 ? (q + hi) / wMin : 1.0;
+    while (kHigh < kCeiling && predictedMse(w, kept, kHigh, q, lo, hi) > target2) {
         kLow = kHigh;
         kHigh *= 2.0;
     }
     for (int i = 0; i < 64; ++i) {
         const double mid = 0.5 * (kLow + kHigh);
-        (predictedMse(v, mid, lo, hi) > target2 ? kLow : kHigh) = mid;
+        (predictedMse(w, kept, mid, q, lo, hi) > target2 ? kLow : kHigh) = mid;
     }
-    // Step 3: the counts, made even (a pixel's samples come in two equal groups) without
-    // passing the ceiling.
+    // Step 3: the counts, made even (a pixel's fresh samples come in two equal groups)
+    // without passing the ceiling.
     const auto evenCeiling = static_cast<std::uint32_t>(std::max(2, hi - hi % 2));
-    std::vector<std::uint32_t> counts(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const auto n = static_cast<std::uint32_t>(plannedCount(v[i], kHigh, lo, hi));
+    std::vector<std::uint32_t> counts(w.size());
+    for (std::size_t i = 0; i < w.size(); ++i) {
+        const auto n = static_cast<std::uint32_t>(plannedCount(w[i], kHigh, q, lo, hi));
         counts[i] = std::min(n + n % 2, evenCeiling);
     }
     return counts;
 }
 // [plan-samples]
+
+PixelEstimate withPilot(const PixelEstimate& pilot, int pilotCount, const PixelEstimate& fresh,
+                        int freshCount) {
+    const double p = pilotCount, n = freshCount, total = p + n;
+    // Var((p·a + n·b)/(p + n)) = (p²·Var a + n²·Var b)/(p + n)², a and b independent.
+    return {(p * pilot.mean + n * fresh.mean) / total,
+            (p * p * pilot.varianceOfMean + n * n * fresh.varianceOfMean) / (total * total)};
+}
 
 void SampleMap::record(int x, int y, int count, double varianceOfMean) {
     const std::size_t i = static_cast<std::size_t>(y) * width + x;

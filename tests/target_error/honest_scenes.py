@@ -32,7 +32,7 @@ SCENES = {
     "chapter07-glossy": ("32x24", 256, (0.04, 0.02), []),
     "chapter13-depth-of-field": ("40x30", 512, (0.05, 0.025), []),
     "chapter16-photon-mapping": ("32x24", 128, (0.04, 0.02), ["--photon-gather=4"]),
-    "chapter17-media": ("40x30", 256, (0.05, 0.03), []),
+    "chapter17-media": ("40x30", 256, (0.02, 0.012), []),
     "chapter18-path-tracing": ("40x30", 1024, (0.1, 0.05), []),
 }
 

@@ -31,8 +31,10 @@ mkdir -p "$data" "$outdir"
 # One line per scene, fields separated by |:
 #   scene file | size | uniform --spp counts | --target-error values (largest first) |
 #   arguments for every render of the scene | arguments for the uniform renders only
-# Each scene's largest E is about the error of the floor alone (8 pilot + 8 fresh samples a
-# pixel): a larger E buys nothing. The sizes keep the whole run near 8 minutes: the reference at
+# Each scene's largest E was about the error of the floor alone when the whole pilot was set
+# aside; the floor (4 planning samples set aside, 8 kept, 2 fresh) may reach the first one, and
+# that row shows what the floor costs. The sizes keep the whole run near 8 minutes: the
+# reference at
 # a quarter of the smallest E costs 16 times that render. Scenes whose sampler wants n x n rays
 # get square counts; the uniform counts are at least the scene's lens samples (chapter 13: 16,
 # the bathhouse: 10, the garage: 9), which --spp cannot go below. The bathhouse keeps its
