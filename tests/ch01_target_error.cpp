@@ -266,6 +266,10 @@ SCENARIO(
         const std::vector<float> flat(w * h, 0.0f);
         std::vector<float> one(w * h, 0.0f);
         one[4 * w + 4] = 0.9f;
+        // The same noisy pixel among pixels of equal spread 0.01.
+        const std::vector<float> even(w * h, 0.01f);
+        std::vector<float> evenAndOne = even;
+        evenAndOne[4 * w + 4] = 0.9f;
         THEN("without spread every pixel takes the fresh floor") {
             for (std::uint32_t n : rb::planSamples(flat, flat, w, h, target(0.01)))
                 REQUIRE(n == 2u);
@@ -285,20 +289,14 @@ SCENARIO(
         THEN(
             "where only its planning group saw it, among pixels of equal spread, the pixel alone "
             "takes more than the rest: the group set aside plans it and nothing else") {
-            const std::vector<float> even(w * h, 0.01f);
-            std::vector<float> planningSaw = even;
-            planningSaw[4 * w + 4] = 0.9f;
-            const auto plan = rb::planSamples(planningSaw, even, w, h, target(0.01));
+            const auto plan = rb::planSamples(evenAndOne, even, w, h, target(0.01));
             CHECK(plan[4 * w + 4] > plan[1 * w + 1]);
             CHECK(plan[3 * w + 3] == plan[1 * w + 1]);
         }
         THEN(
             "where only its kept pilot saw it, among pixels of equal spread, its neighbours take "
             "more than the rest and the pixel itself no more: its kept samples never plan it") {
-            const std::vector<float> even(w * h, 0.01f);
-            std::vector<float> keptSaw = even;
-            keptSaw[4 * w + 4] = 0.9f;
-            const auto plan = rb::planSamples(even, keptSaw, w, h, target(0.01));
+            const auto plan = rb::planSamples(even, evenAndOne, w, h, target(0.01));
             CHECK(plan[3 * w + 3] > plan[1 * w + 1]);
             CHECK(plan[4 * w + 4] == plan[1 * w + 1]);
         }
