@@ -10,7 +10,8 @@
 /// scattering in a slab lit from behind, L = π p(0) σs ℓ e^(−σt ℓ) I in A4's units, a
 /// chi-square test of equiangular points, a lamp inside fog (with and without falloff) whose
 /// single scattering free flights, light points and MIS all match (Simpson's rule of the
-/// integral), a surface behind homogeneous fog seen through exactly e^(−σt ℓ), and a furnace:
+/// integral), a panel light whose lamp points take one of its strata each (its mean kept), a
+/// surface behind homogeneous fog seen through exactly e^(−σt ℓ), and a furnace:
 /// an albedo-1 medium under a uniform sky returns the sky. End to end: the image does
 /// not depend on the majorant grid, the camera may sit inside a medium, concave, nested and
 /// overlapping media hold the medium the scene graph says, interfaces cost no depth, a dense
@@ -33,6 +34,7 @@
 #include "media/medium.h"
 #include "media/participating_media.h"
 #include "media/tracking.h"
+#include "soft_shadows/area_light.h"
 #include "test_helpers.h"
 #include "test_messages.h"
 
@@ -318,7 +320,8 @@ namespace {
 /// told otherwise).
 struct Slab {
     Slab(const rb::Medium& m, double length, const std::map<std::string, std::string>& options,
-         const Vec3& lamp = Vec3(10.0, 0.0, 0.0), const Vec3& falloff = Vec3(1.0, 0.0, 0.0)) {
+         const Vec3& lamp = Vec3(10.0, 0.0, 0.0), const Vec3& falloff = Vec3(1.0, 0.0, 0.0),
+         std::shared_ptr<const rb::LightShape> shape = nullptr) {
         world.add(box, rbtest::boxFromTo(Vec3(0.0, -5.0, -5.0), Vec3(length, 5.0, 5.0)), nullptr,
                   "slab");
         rb::Instance& slab = world.scene.instances.back();
@@ -328,6 +331,7 @@ struct Slab {
         rb::PointLight light;
         light.position = lamp;
         light.falloff = falloff;
+        light.shape = std::move(shape);  // Before the build: chapter 6 samples it then.
         world.scene.lights.push_back(light);
         world.build(rbtest::chapters(17), -1, options);
     }
@@ -570,6 +574,72 @@ SCENARIO("A lamp inside fog: free flights, light points and both under MIS agree
                 }
             }
         }
+}
+
+SCENARIO("A panel light inside fog: lamp points that take one of its strata each keep its mean",
+         "[ch17][ex17.1][ex17.4]") {
+    // Source: the panel's light is the mean over its area A of a point light's, each point y
+    // weighted by the panel's cosine towards the scattering point (chapter 6's samplePoint), so
+    // along the ray p(x) = (x, 0, 0) single scattering is
+    // L = ∫ σs e^(−σt x) (1/A) ∫_A π p(cos θ) e^(−σt r) max(0, n·(p − y)/r) dA dx, r = |y − p|
+    // (A4's units, no falloff): Simpson's rule along the ray, the midpoint rule over the panel.
+    const double sa = 0.1, ss = 0.4, g = 0.5, length = 4.0, side = 2.0;
+    const Vec3 centre(2.0, 1.5, 0.0), normal(0.0, -1.0, 0.0), left(1.0, 0.0, 0.0);
+    const Vec3 up = glm::cross(normal, left);
+    const rb::Medium m = medium(sa, ss, std::make_shared<rb::ConstantDensity>(), g);
+    const rb::Ray ray{Vec3(-1.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)};
+    const double z = rbtest::zCritical(sidak(0.001, 2));
+    const int n = samples(100000);
+    GIVEN(
+        "a 2 × 2 panel 1.5 above the ray, sampled at 3 × 3 points, in a slab σa = 0.1, "
+        "σs = 0.4, g = 0.5, ℓ = 4, and 4 lamp points a ray (fewer than its 9 strata)") {
+        const double st = sa + ss;
+        const int cells = 40;
+        const auto integrand = [&](double x) {
+            const Vec3 at(x, 0.0, 0.0);
+            double sum = 0.0;
+            for (int i = 0; i < cells; ++i)
+                for (int j = 0; j < cells; ++j) {
+                    const Vec3 y = centre + ((i + 0.5) / cells - 0.5) * side * left +
+                                   ((j + 0.5) / cells - 0.5) * side * up;
+                    const Vec3 toLamp = y - at;
+                    const double r = glm::length(toLamp);
+                    const double cosLight = std::max(0.0, glm::dot(normal, -toLamp) / r);
+                    sum +=
+                        kPi * rb::henyeyGreenstein(toLamp.x / r, g) * std::exp(-st * r) * cosLight;
+                }
+            return ss * std::exp(-st * x) * sum / (cells * cells);
+        };
+        const int intervals = 400;
+        double expected = integrand(0.0) + integrand(length);
+        for (int k = 1; k < intervals; ++k)
+            expected += (k % 2 ? 4.0 : 2.0) * integrand(k * length / intervals);
+        expected *= length / intervals / 3.0;
+        WHEN("the ray is traced " + std::to_string(n) +
+             " times by lamp points alone and by free flights alone") {
+            std::map<std::string, std::pair<double, double>> estimates;
+            for (const std::string direct : {"light", "flight"}) {
+                const Slab slab(
+                    m, length,
+                    {{"media-bounces", "0"}, {"media-direct", direct}, {"media-points", "4"}},
+                    centre, Vec3(1.0, 0.0, 0.0),
+                    std::make_shared<rb::RectangleLight>(side, side, normal, left, 3));
+                estimates[direct] = meanAndError(n, [&](int i) {
+                    rb::RayCounters counters;
+                    const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+                    rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 12);
+                    return integrator.trace(ray, sampler, counters, 0).r;
+                });
+            }
+            THEN("both pass a z-test against the integral") {
+                for (const auto& [direct, estimate] : estimates) {
+                    INFO(direct << ": mean " << estimate.first << " ± " << estimate.second
+                                << " against " << expected);
+                    CHECK(std::abs(estimate.first - expected) < z * estimate.second);
+                }
+            }
+        }
+    }
 }
 
 SCENARIO("A lamp inside a ramp of smoke: ratio-tracked lamp points and free flights agree",

@@ -168,6 +168,22 @@ struct MajorantPoints {
     }
 };
 
+/// Points per axis at which a scattering samples `source`: n × n on an area light, 1 on a
+/// point light.
+int lightSamplesPerAxis(const ShadeContext& ctx, const PointLight& source) {
+    if (!(source.shape && ctx.scene.sampleAreaLights)) return 1;
+    return ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples : source.shape->samplesPerAxis();
+}
+
+/// The first of an area light's n × n strata for a ray's lamp points (point k samples stratum
+/// first + k, modulo n²): uniform, so each point's one sample stands for the whole light. A
+/// point light has one stratum and draws no number.
+int firstStratum(const ShadeContext& ctx, const PointLight& source) {
+    const int n = lightSamplesPerAxis(ctx, source);
+    if (n == 1) return 0;
+    return std::min(n * n - 1, static_cast<int>(ctx.sampler.next1D() * (n * n)));
+}
+
 }  // namespace
 
 ParticipatingMedia::ParticipatingMedia(std::vector<Instance> boundaries, const Medium* fog,
@@ -519,13 +535,14 @@ double shadowRayChance(const Colour& tr) {
 
 Colour ParticipatingMedia::lightFrom(const ShadeContext& ctx, const PointLight& source,
                                      const Vec3& x, const Vec3& travel, const Medium& m,
-                                     bool roulette, double* largest) const {
+                                     bool roulette, double* largest, int stratum) const {
     const bool area = source.shape && ctx.scene.sampleAreaLights;
-    const int perAxis = !area                        ? 1
-                        : ctx.scene.lightSamples > 0 ? ctx.scene.lightSamples
-                                                     : source.shape->samplesPerAxis();
+    const int perAxis = lightSamplesPerAxis(ctx, source);
+    // All n × n points, or the one of them a lamp point takes.
+    const int first = stratum < 0 ? 0 : stratum % (perAxis * perAxis);
+    const int end = stratum < 0 ? perAxis * perAxis : first + 1;
     Colour sum(0.0);
-    for (int k = 0; k < perAxis * perAxis; ++k) {
+    for (int k = first; k < end; ++k) {
         double emission = 1.0;
         const Vec3 from = area ? source.shape->samplePoint(source.position, x, k, perAxis,
                                                            ctx.sampler.next2D(), emission)
@@ -552,7 +569,7 @@ Colour ParticipatingMedia::lightFrom(const ShadeContext& ctx, const PointLight& 
         sum += emission * source.intensityAt(r) * phase *
                transmittance(x, from, ctx.sampler, ctx.counters);
     }
-    return sum / static_cast<double>(perAxis * perAxis);
+    return sum / static_cast<double>(end - first);
 }
 // [media-light-scattered]
 
@@ -603,8 +620,10 @@ Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& r
         if (pointsOn(piece, points)) {
             for (const PointLight& source : ctx.scene.lights) {
                 const PiecePoints place = piecePoints(ray, piece, source);
-                // Step 1: `points` of them (a whole number).
+                // Step 1: `points` of them (a whole number), each sampling one stratum of an
+                // area light: the points average over the light as they average over the ray.
                 const int n = static_cast<int>(points);
+                const int stratum = firstStratum(ctx, source);
                 for (int k = 0; k < n; ++k) {
                     // Step 2: a point on the piece, where this light's single scattering is
                     // (the points stratified: one in each equal share of the distribution).
@@ -619,7 +638,8 @@ Colour ParticipatingMedia::pointsScattered(const ShadeContext& ctx, const Ray& r
                     // media before it (closed form in this piece), over the point's density.
                     const Colour back = tr * transmittanceFrom(m, e.s - place.seg.a, e.fall);
                     light += back * m.sigmaS * (share / (points * e.pdf)) *
-                             lightFrom(ctx, source, ray.o + t * ray.d, travel, m);
+                             lightFrom(ctx, source, ray.o + t * ray.d, travel, m, false, nullptr,
+                                       stratum + k);
                 }
             }
         }
@@ -648,6 +668,7 @@ Colour ParticipatingMedia::trackedScattered(const ShadeContext& ctx, const Ray& 
         double t;
         double pdf;  // Per unit world length.
         const PointLight* light;
+        int stratum;  // The area light's stratum it samples (lightFrom).
     };
     std::vector<Point> spots;
     const MajorantPoints spread(*piece.medium, ray, piece.t0, piece.t1);
@@ -655,14 +676,15 @@ Colour ParticipatingMedia::trackedScattered(const ShadeContext& ctx, const Ray& 
         for (const PointLight& source : ctx.scene.lights) {
             const PiecePoints place = piecePoints(ray, piece, source);
             const int n = static_cast<int>(points);
+            const int stratum = firstStratum(ctx, source);
             for (int k = 0; k < n; ++k) {
                 const double u = (k + ctx.sampler.next1D()) / n;
                 if (place.equiangular) {
                     const EquiangularSample e = sampleEquiangular(place.seg, u);
-                    spots.push_back({e.s / length, e.pdf, &source});
+                    spots.push_back({e.s / length, e.pdf, &source, stratum + k});
                 } else {
                     const auto [t, pdf] = spread.sample(u);
-                    spots.push_back({t, pdf / length, &source});
+                    spots.push_back({t, pdf / length, &source, stratum + k});
                 }
             }
         }
@@ -687,7 +709,8 @@ Colour ParticipatingMedia::trackedScattered(const ShadeContext& ctx, const Ray& 
         const double density = m.density->at(local.o + spots[i].t * local.d);
         if (!(density > 0.0)) continue;
         light += trAt[i] * m.sigmaS * (density / (points * spots[i].pdf)) *
-                 lightFrom(ctx, *spots[i].light, ray.o + spots[i].t * ray.d, travel, m);
+                 lightFrom(ctx, *spots[i].light, ray.o + spots[i].t * ray.d, travel, m, false,
+                           nullptr, spots[i].stratum);
     }
     // Step 4: A4's ambient light scattered once along the piece needs no points: the density
     // scales σs and σt alike, so ∫ σs ρ T dt = σs/σt (1 − T(t1)), read from the same pass.

@@ -150,10 +150,13 @@ class ParticipatingMedia final : public MediaTerm {
     /// The light of one source, scattered at x along `travel` reversed (lightScattered's term).
     /// With `roulette` (a walk's later scatterings), a shadow ray whose transmittance is below
     /// kShadowRouletteBelow is traced with the chance shadowRayChance, its light divided by it,
-    /// and `largest` (if given) becomes at least the largest transmittance measured.
+    /// and `largest` (if given) becomes at least the largest transmittance measured. An area
+    /// light is sampled at its n × n points, or with `stratum` ≥ 0 (a lamp point's) at point
+    /// stratum mod n² alone, which stands for the whole light when the caller draws it
+    /// uniformly.
     Colour lightFrom(const ShadeContext& ctx, const PointLight& source, const Vec3& x,
                      const Vec3& travel, const Medium& m, bool roulette = false,
-                     double* largest = nullptr) const;
+                     double* largest = nullptr, int stratum = -1) const;
     /// Single scattering towards every light along the ray's `stretches`, at `points` stratified
     /// points per light on each piece (equiangular, or by transmittance for a light without
     /// falloff): on a homogeneous piece MIS-weighted against free flights, on a heterogeneous
