@@ -7,6 +7,9 @@
 #                        (default: docs/charts; make bench passes BUILD_DIR/bench/target-error)
 #   TARGET_ERROR_SCENES  an extended regular expression: only the scenes whose name matches
 #                        (a partial run, for trying it out; use an OUT_DIR outside docs/)
+#   TARGET_ERROR_TIGHTEN F  one more target per scene, F times its smallest (0 < F < 1), and the
+#                        reference at a quarter of that: the ratio at a tighter error, for 16/F²
+#                        times the tightest render's cost in the reference
 # About 8 minutes on 2 idle cores. Needs BUILD_DIR/rt_ch18 and python3 (no imaging package).
 #
 # Per scene, all with --threads 2, at a small size, written as .hdr (linear radiance):
@@ -108,6 +111,11 @@ for entry in "${scenes[@]}"; do
   scene=$(trim "$scene"); size=$(trim "$size"); args=$(trim "$args"); uargs=$(trim "$uargs")
   name=$(basename "$scene" .lua)
   [[ -z ${TARGET_ERROR_SCENES:-} || $name =~ $TARGET_ERROR_SCENES ]] || continue
+  if [[ -n ${TARGET_ERROR_TIGHTEN:-} ]]; then
+    # shellcheck disable=SC2086  # the list is meant to split
+    errors="$errors $(printf "%s\n" $errors | sort -g | head -1 |
+      awk -v f="$TARGET_ERROR_TIGHTEN" '{ printf "%.6g", $1 * f }')"
+  fi
   # shellcheck disable=SC2086  # the lists and arguments are meant to split
   {
     record "$name" "$scene" "$size" reference "$(quarter $errors)" $args \
