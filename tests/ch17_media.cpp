@@ -339,6 +339,26 @@ struct Slab {
     rbtest::TestWorld world;
 };
 
+/// The mean red radiance of `n` traces of `ray` through `slab` and its standard error, trace i
+/// drawing from stream (seed(), i, `stream`).
+std::pair<double, double> tracedMean(const Slab& slab, const rb::Ray& ray, int n,
+                                     std::uint64_t stream) {
+    return meanAndError(n, [&](int i) {
+        rb::RayCounters counters;
+        const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
+        rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), stream);
+        return integrator.trace(ray, sampler, counters, 0).r;
+    });
+}
+
+/// Simpson's rule for the integral of f over [0, length] with `intervals` (even) intervals.
+template <class F>
+double simpson(const F& f, double length, int intervals) {
+    double sum = f(0.0) + f(length);
+    for (int k = 1; k < intervals; ++k) sum += (k % 2 ? 4.0 : 2.0) * f(k * length / intervals);
+    return sum * length / intervals / 3.0;
+}
+
 }  // namespace
 
 SCENARIO("A slab lit from behind shows single scattering's closed form",
@@ -358,12 +378,7 @@ SCENARIO("A slab lit from behind shows single scattering's closed form",
         const rb::Medium m = medium(sa, ss, std::make_shared<rb::ConstantDensity>(), g);
         const Slab slab(m, length, single);
         WHEN(traced) {
-            const auto [mean, error] = meanAndError(n, [&](int i) {
-                rb::RayCounters counters;
-                const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
-                rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 4);
-                return integrator.trace(ray, sampler, counters, 0).r;
-            });
+            const auto [mean, error] = tracedMean(slab, ray, n, 4);
             THEN("the radiance passes a z-test against π p(1) σs ℓ e^(−σt ℓ)") {
                 INFO("mean " << mean << " ± " << error << " against " << expected);
                 CHECK(std::abs(mean - expected) < z * error);
@@ -374,12 +389,7 @@ SCENARIO("A slab lit from behind shows single scattering's closed form",
         const rb::Medium m = medium(sa, ss, std::make_shared<TrackedConstant>(3.0), g);
         const Slab slab(m, length, single);
         WHEN(traced) {
-            const auto [mean, error] = meanAndError(n, [&](int i) {
-                rb::RayCounters counters;
-                const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
-                rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 5);
-                return integrator.trace(ray, sampler, counters, 0).r;
-            });
+            const auto [mean, error] = tracedMean(slab, ray, n, 5);
             THEN("the radiance passes the same z-test") {
                 INFO("mean " << mean << " ± " << error << " against " << expected);
                 CHECK(std::abs(mean - expected) < z * error);
@@ -542,23 +552,14 @@ SCENARIO("A lamp inside fog: free flights, light points and both under MIS agree
                 return ss * kPi * rb::henyeyGreenstein(toLamp.x / r, g) * std::exp(-(sa + ss) * r) /
                        (l.falloff.x + l.falloff.z * r * r) * std::exp(-(sa + ss) * x);
             };
-            const int intervals = 200000;
-            double expected = integrand(0.0) + integrand(length);
-            for (int k = 1; k < intervals; ++k)
-                expected += (k % 2 ? 4.0 : 2.0) * integrand(k * length / intervals);
-            expected *= length / intervals / 3.0;
+            double expected = simpson(integrand, length, 200000);
             WHEN("the ray along the axis is traced " + std::to_string(n) +
                  " times with each --media-direct") {
                 std::map<std::string, std::pair<double, double>> estimates;
                 for (const std::string direct : {"flight", "light", "mis"}) {
                     const Slab slab(m, length, {{"media-bounces", "0"}, {"media-direct", direct}},
                                     lamp, l.falloff);
-                    estimates[direct] = meanAndError(n, [&](int i) {
-                        rb::RayCounters counters;
-                        const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
-                        rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 9);
-                        return integrator.trace(ray, sampler, counters, 0).r;
-                    });
+                    estimates[direct] = tracedMean(slab, ray, n, 9);
                 }
                 THEN("each passes a z-test against the integral") {
                     for (const auto& [direct, estimate] : estimates) {
@@ -610,11 +611,7 @@ SCENARIO("A panel light inside fog: lamp points that take one of its strata each
                 }
             return ss * std::exp(-st * x) * sum / (cells * cells);
         };
-        const int intervals = 400;
-        double expected = integrand(0.0) + integrand(length);
-        for (int k = 1; k < intervals; ++k)
-            expected += (k % 2 ? 4.0 : 2.0) * integrand(k * length / intervals);
-        expected *= length / intervals / 3.0;
+        double expected = simpson(integrand, length, 400);
         WHEN("the ray is traced " + std::to_string(n) +
              " times by lamp points alone and by free flights alone") {
             std::map<std::string, std::pair<double, double>> estimates;
@@ -624,12 +621,7 @@ SCENARIO("A panel light inside fog: lamp points that take one of its strata each
                     {{"media-bounces", "0"}, {"media-direct", direct}, {"media-points", "4"}},
                     centre, Vec3(1.0, 0.0, 0.0),
                     std::make_shared<rb::RectangleLight>(side, side, normal, left, 3));
-                estimates[direct] = meanAndError(n, [&](int i) {
-                    rb::RayCounters counters;
-                    const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
-                    rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 12);
-                    return integrator.trace(ray, sampler, counters, 0).r;
-                });
+                estimates[direct] = tracedMean(slab, ray, n, 12);
             }
             THEN("both pass a z-test against the integral") {
                 for (const auto& [direct, estimate] : estimates) {
@@ -672,11 +664,7 @@ SCENARIO("A lamp inside a ramp of smoke: ratio-tracked lamp points and free flig
             return ss * (a + b * x) * kPi * rb::henyeyGreenstein(toLamp.x / r, g) *
                    std::exp(-st * toLampDepth) * std::exp(-st * depth(x));
         };
-        const int intervals = 200000;
-        double expected = integrand(0.0) + integrand(length);
-        for (int k = 1; k < intervals; ++k)
-            expected += (k % 2 ? 4.0 : 2.0) * integrand(k * length / intervals);
-        expected *= length / intervals / 3.0;
+        double expected = simpson(integrand, length, 200000);
         const double through = std::exp(-st * depth(length));
         expected += ambient * ss / st * (1.0 - through) + sky * through;
         WHEN("the ray is traced " + std::to_string(n) + " times with each --media-direct") {
@@ -685,12 +673,7 @@ SCENARIO("A lamp inside a ramp of smoke: ratio-tracked lamp points and free flig
                 Slab slab(m, length, {{"media-bounces", "0"}, {"media-direct", direct}}, lamp);
                 slab.world.scene.ambient = Colour(ambient);
                 slab.world.scene.background = Colour(sky);
-                estimates[direct] = meanAndError(n, [&](int i) {
-                    rb::RayCounters counters;
-                    const rb::Integrator integrator(slab.world.scene, slab.world.pipeline);
-                    rb::Sampler sampler(seed(), static_cast<std::uint64_t>(i), 11);
-                    return integrator.trace(ray, sampler, counters, 0).r;
-                });
+                estimates[direct] = tracedMean(slab, ray, n, 11);
             }
             THEN("each passes a z-test against the integral") {
                 for (const auto& [direct, estimate] : estimates) {
