@@ -347,7 +347,8 @@ struct PackedPilot {
 /// tile's exception after the others finish.
 PilotImage pilotPass(const std::vector<ImageTile>& tiles, const Integrator& integrator,
                      const PinholeCamera& camera, const CameraRayGenerator* lens, int width,
-                     int height, const RenderSettings& settings, int threads,
+                     int height, const RenderSettings& settings,
+                     [[maybe_unused]] int threads,  // The WebAssembly build has no OpenMP.
                      std::vector<RayCounters>& perThread) {
     const auto pixels = static_cast<std::size_t>(width) * height;
     PilotImage pilot{std::vector<PixelEstimate>(pixels), std::vector<float>(pixels, 0.0f),
@@ -413,7 +414,8 @@ PilotImage pilotPass(const std::vector<ImageTile>& tiles, const Integrator& inte
 void startRenderThreads(int threads) {
     // --threads holds for every later parallel loop too (chapter 12's tone map).
     if (threads > 0) omp_set_num_threads(threads);
-    const int n = threads > 0 ? threads : omp_get_max_threads();
+    // Unused without OpenMP (the WebAssembly build).
+    [[maybe_unused]] const int n = threads > 0 ? threads : omp_get_max_threads();
     std::atomic<int> started{0};
 #pragma omp parallel num_threads(n)
     ++started;  // a body, so the region is not optimised away

@@ -62,7 +62,6 @@ class PathTracer final : public RadianceEstimator, public PrePass {
     bool mirrors_ = false;                        ///< Chapter 4 is on.
     const RefractionTerm* refraction_ = nullptr;  ///< Chapter 5's term, when on.
     const LobeSampler* lobe_ = nullptr;           ///< Chapter 7's lobes, when on.
-    size_t emitterCount_ = 0;
 };
 
 }  // namespace rb

@@ -86,7 +86,6 @@ Point measure(const std::string& scene, const std::map<std::string, std::string>
 int raysChart(const std::string& scene, const std::string& out) {
     // The converged reference.
     const auto refWorld = buildWorld(scene, {{"aa", "jittered"}, {"spp", "1024"}});
-    double seconds = 0;
     rb::RenderSettings refSettings;
     refSettings.seed = 99;
     rb::RayCounters refCounters;
