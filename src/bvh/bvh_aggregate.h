@@ -16,9 +16,19 @@ Feature bvhFeature();
 /// tests it replaces (chapter 3, "Two levels and instancing", has the measurements).
 inline constexpr size_t kBinaryTopLevel = 8;
 
+/// An instance whose world box has at least this many times the surface area of the box
+/// around all the others is kept out of the tree and tested by every ray (a ground plane made
+/// of a box 10⁵ wide): nearly every ray that reaches the scene enters its box anyway, and in
+/// the tree its box would enclose, and so open, every node above it (chapter 3, "Two levels
+/// and instancing").
+inline constexpr double kLargeInstanceArea = 4.0;
+/// At most this many instances are kept out of the tree.
+inline constexpr size_t kMaxLargeInstances = 2;
+
 /// A BVH over instances' world bounds; each instance then uses its shape's own structure. The
 /// tree has the layout asked for, unless there are at most `binaryUpTo` instances; the meshes'
-/// trees are theirs (built when the scene is read).
+/// trees are theirs (built when the scene is read). Large instances (kLargeInstanceArea) are
+/// tested before the tree, outside it.
 class BVHAggregate final : public Aggregate {
   public:
     explicit BVHAggregate(const std::vector<Instance>& instances,
@@ -28,9 +38,17 @@ class BVHAggregate final : public Aggregate {
     /// Nodes and bytes of both levels, and bytes per triangle of the meshes.
     std::string statistics() const override;
     const BVH& bvh() const { return bvh_; }
+    /// How many large instances are tested outside the tree (kLargeInstanceArea).
+    size_t largeInstanceCount() const { return large_.size(); }
 
   private:
-    std::vector<const Instance*> ordered_;  ///< Instances in BVH leaf order.
+    /// The closest hit among `instances` nearer than tClosest: shrinks tClosest and sets `best`
+    /// and `closest`; of two at the same t, the one first in the scene wins, in any test order.
+    bool closestAmong(const Instance* const* instances, std::uint32_t count, const Ray& ray,
+                      double& tClosest, ObjectHit& best, const Instance*& closest) const;
+
+    std::vector<const Instance*> large_;    ///< Instances outside the tree, tested first.
+    std::vector<const Instance*> ordered_;  ///< The others, in BVH leaf order.
     BVH bvh_;
     BVHLayout asked_;  ///< The layout asked for (--bvh), which --stats names.
 };
