@@ -97,14 +97,14 @@ Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end, con
     // [exercise-sah-split]
     // Exercise 3.2, the binned SAH split: read ch03-equations.
     // Blank: return Split{};
-    // Drop every primitive into a bin per axis by its centroid, in one pass.
-    std::array<std::array<AABB, kMaxBins>, 3> binBounds;
-    std::array<std::array<std::uint32_t, kMaxBins>, 3> binCount;
-    for (int axis = 0; axis < 3; ++axis)
-        for (int b = 0; b < nBins; ++b) {
-            binBounds[axis][b] = AABB();
-            binCount[axis][b] = 0;
-        }
+    // Drop every primitive into a bin per axis by its centroid, in one pass. A bin's box is
+    // set by its first primitive and grown by the others, so only the counts start at zero
+    // (an empty bin's box is never read, and a BinBox, unlike an AABB, starts unset).
+    struct BinBox {
+        Vec3 lo, hi;
+    };
+    std::array<std::array<BinBox, kMaxBins>, 3> binBounds;
+    std::array<std::array<std::uint32_t, kMaxBins>, 3> binCount{};
     Vec3 scale;
     for (int axis = 0; axis < 3; ++axis) {
         const double extent = centroidBounds.hi[axis] - centroidBounds.lo[axis];
@@ -116,33 +116,47 @@ Split findSplit(const BuildState& s, std::uint32_t begin, std::uint32_t end, con
             const int b = std::min(
                 nBins - 1,
                 static_cast<int>((r.centroid[axis] - centroidBounds.lo[axis]) * scale[axis]));
-            binBounds[axis][b].extend(r.box);
-            ++binCount[axis][b];
+            BinBox& bin = binBounds[axis][b];
+            if (binCount[axis][b]++ == 0) {
+                bin = {r.box.lo, r.box.hi};
+            } else {
+                bin.lo = glm::min(bin.lo, r.box.lo);
+                bin.hi = glm::max(bin.hi, r.box.hi);
+            }
         }
     }
     Split best;
     const double invArea = 1.0 / std::max(nodeBounds.halfArea(), 1e-300);
     for (int axis = 0; axis < 3; ++axis) {
         if (scale[axis] == 0.0) continue;  // all centroids on one plane: no split here
-        // Sweep from the right for the area and count of every suffix of bins.
+        const auto& bounds = binBounds[axis];
+        const auto& counts = binCount[axis];
+        // Sweep from the right for the area and count of every suffix of bins (an empty bin
+        // leaves both as they were).
         std::array<double, kMaxBins> rightArea;
         std::array<std::uint32_t, kMaxBins> rightCount;
         AABB acc;
         std::uint32_t count = 0;
+        double area = 0.0;
         for (int b = nBins - 1; b > 0; --b) {
-            acc.extend(binBounds[axis][b]);
-            count += binCount[axis][b];
-            rightArea[b] = acc.halfArea();
+            if (counts[b] > 0) {
+                acc.extend(AABB{bounds[b].lo, bounds[b].hi});
+                count += counts[b];
+                area = acc.halfArea();
+            }
+            rightArea[b] = area;
             rightCount[b] = count;
         }
         // Sweep from the left; splitting before bin b costs
-        // C_trav + (A_L·N_L + A_R·N_R) / A_node.
+        // C_trav + (A_L·N_L + A_R·N_R) / A_node. After an empty bin the split costs what the
+        // one before it did, so only a bin that holds primitives gives a new candidate.
         acc = AABB();
         count = 0;
         for (int b = 1; b < nBins; ++b) {
-            acc.extend(binBounds[axis][b - 1]);
-            count += binCount[axis][b - 1];
-            if (count == 0 || rightCount[b] == 0) continue;
+            if (counts[b - 1] == 0) continue;
+            acc.extend(AABB{bounds[b - 1].lo, bounds[b - 1].hi});
+            count += counts[b - 1];
+            if (rightCount[b] == 0) break;  // every primitive is on the left from here on
             const double cost =
                 s.options.traversalCost + (acc.halfArea() * leafCost(s.options, count) +
                                            rightArea[b] * leafCost(s.options, rightCount[b])) *
