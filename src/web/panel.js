@@ -1,6 +1,9 @@
 // raybook's live panels: the page side. bundle.py wraps this file in raybook-live.js with
-//   RB_WORKER_SOURCE  the worker's whole source (wasmoon, glue.wasm, lua_host.js, rt_web.js,
-//                     worker.js), started from a Blob URL so that file:// pages work too;
+//   RB_WORKER_SOURCE  the worker's whole source (wasmoon, lua_host.js, rt_web.js, worker.js),
+//                     started from a Blob URL so that file:// pages work too;
+//   RB_RT_WASM        rt_web.wasm, gzip'd, in base64: compiled once when the page opens, for
+//                     every worker it starts;
+//   RB_GLUE_WASM      wasmoon's glue.wasm (Lua), gzip'd, in base64;
 //   RB_SCENES         {"chapter05-refraction.lua": "...the scene's text...", ...};
 //   RB_CSS            panel.css.
 // Every <div class="rb-live" data-scene="chapterNN-....lua" data-chapter="N"> on the page
@@ -16,9 +19,14 @@
 // it should finish before the picture; the status line shows the bar's fraction, time left and,
 // under a target error, its error estimate.
 //
+// Each panel starts its rt (a worker, rt instantiated, rt --list-features) when the page opens,
+// and keeps it for every render after, so Render finds it ready.
+//
 // For tests: window.raybookLive.panels[i].render({size, text, features}) returns a promise of
 // {code, err, out, ms, args, pixels (canvas.toDataURL of the drawn image), frames (the
-// previews drawn before it, in order: {label, size, spp, error, ms, at, pixels})}; and a page
+// previews drawn before it, in order: {label, size, spp, error, ms, at, pixels}), t0 and shown
+// (performance.now() when the render was asked for and its picture drawn)}; panels[i].readyInfo
+// says when its rt was ready ({at: performance.now(), worker: the worker's phases}); and a page
 // opened with ?rb-autorender=WxH renders its first panel at that size when it loads and writes
 // that result (the frames without their pixels) as JSON into <pre id="rb-autorender-result">.
 'use strict';
@@ -27,6 +35,36 @@ const RB_SIZES = ['160x120', '320x240', '640x480'];
 // Previews begin only for a render with at least this many seconds left, on a machine with a
 // core to spare for them.
 const RB_PREVIEW_MIN_SECONDS = 1;
+
+// The WebAssembly modules, unpacked from the bundle and compiled once (the first panel asks,
+// when the page opens): {rt: WebAssembly.Module, glue: ArrayBuffer}. The compiling runs off
+// the page's thread, while the first worker reads its script.
+let rbWasmReady = null;
+function rbWasm() {
+  if (!rbWasmReady) {
+    const rt = rbGunzip(RB_RT_WASM);
+    rbWasmReady = Promise.all([
+      typeof WebAssembly.compileStreaming === 'function'
+        ? WebAssembly.compileStreaming(new Response(rt, {headers: {'Content-Type': 'application/wasm'}}))
+        : new Response(rt).arrayBuffer().then((bytes) => WebAssembly.compile(bytes)),
+      new Response(rbGunzip(RB_GLUE_WASM)).arrayBuffer(),
+    ]).then(([rt, glue]) => ({rt, glue}));
+  }
+  return rbWasmReady;
+}
+
+// The stream of bytes that B64 (gzip'd, in base64) packs.
+function rbGunzip(b64) {
+  let bytes;
+  if (typeof Uint8Array.fromBase64 === 'function') {
+    bytes = Uint8Array.fromBase64(b64);
+  } else {
+    const text = atob(b64);
+    bytes = new Uint8Array(text.length);
+    for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
+  }
+  return new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+}
 
 let rbWorkerUrl = null;
 function rbNewWorker() {
@@ -214,8 +252,12 @@ class RbPanel {
       worker.onmessage = (e) => {
         const m = e.data;
         if (m.type === 'ready') {
+          this.readyInfo = {at: performance.now(), worker: {origin: m.origin - performance.timeOrigin,
+                                                            phases: m.phases}};
           this.showSwitches(m.features);
           resolve();
+          // The previews' rt starts now too, so that the first render's previews find it ready.
+          this.startPreviewer();
         } else if (m.type === 'progress') {
           this.onProgress(m);
         } else if (m.type === 'done' || m.type === 'failed') {
@@ -233,7 +275,9 @@ class RbPanel {
       this.switches.textContent = 'chapters: rt did not start';
       this.show('error', String(e.message || e));
     });
-    worker.postMessage({type: 'init'});
+    rbWasm().then((wasm) => worker.postMessage({type: 'init', rt: wasm.rt, glue: wasm.glue}),
+                  (e) => worker.onmessage({data: {type: 'failed', message:
+                    'this browser could not unpack or compile rt\'s WebAssembly: ' + (e.message || e)}}));
     return this.ready;
   }
 
@@ -390,14 +434,17 @@ class RbPanel {
                                 size: pass.size, features: run.features, extra: pass.extra});
   }
 
-  // Starts the previews' worker and its rt, unless it runs, while the render's own rt reads the
-  // scene: a render that needs previews finds it ready. Not on a machine with one core.
+  // Starts the previews' worker and its rt, unless it runs: once the panel's own rt is ready
+  // (and again with a render, after a preview was stopped), so that a render that needs
+  // previews finds it ready. Not on a machine with one core.
   startPreviewer() {
     if (this.previewer || (navigator.hardwareConcurrency || 1) < 2) return;
     this.previewer = rbNewWorker();
     this.previewer.onmessage = (e) => this.onPreview(e.data);
     this.previewer.onerror = () => this.endPreviews(true);
-    this.previewer.postMessage({type: 'init'});
+    const previewer = this.previewer;
+    rbWasm().then((wasm) => previewer.postMessage({type: 'init', rt: wasm.rt, glue: wasm.glue}),
+                  () => { if (this.previewer === previewer) this.endPreviews(true); });
   }
 
   onPreview(m) {
@@ -459,10 +506,11 @@ class RbPanel {
     }
     const secs = (m.ms / 1000).toFixed(2);
     const result = {code: m.code, out: m.out, err: m.err, ms: m.ms, args: m.args, pixels: null,
-                    frames};
+                    frames, t0: this.t0, shown: null};
     if (m.code === 0 && m.png) {
       try {
         await this.queueDraw(m.png, run ? run.size : '', () => true);
+        result.shown = performance.now();
         result.pixels = this.canvas.toDataURL('image/png');
         const previews = frames.length === 1 ? ' (after 1 preview)' :
                          frames.length ? ' (after ' + frames.length + ' previews)' : '';

@@ -8,10 +8,11 @@ target_link_libraries(rt_web PRIVATE rb_main rb_cluster rb_mpi_logic)
 foreach(n IN LISTS RB_CHAPTERS)
   target_link_libraries(rt_web PRIVATE rb_ch${n})
 endforeach()
-# One file (the wasm inside the .js, base64): the docs work from file:// as from a server.
-# The scenes and their assets are its file system, at /scenes.
+# rt_web.js and rt_web.wasm: bundle.py packs the wasm into the docs' one script (so they work
+# from file:// as from a server), and the page compiles it once for all its workers; node
+# loads it from beside rt_web.js. The scenes and their assets are its file system, at /scenes.
 target_link_options(rt_web PRIVATE
-  -sSINGLE_FILE=1 -sMODULARIZE=1 -sEXPORT_NAME=createRaybook -sINVOKE_RUN=0
+  -sMODULARIZE=1 -sEXPORT_NAME=createRaybook -sINVOKE_RUN=0
   -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=0 -sENVIRONMENT=web,worker,node
   -sEXPORTED_FUNCTIONS=_main,_malloc,_free,_rb_shim_op,_rb_shim_globals
   -sEXPORTED_RUNTIME_METHODS=callMain,FS,stringToUTF8,lengthBytesUTF8,UTF8ToString

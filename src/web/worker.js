@@ -1,26 +1,29 @@
 // raybook's live panels: the Web Worker that runs rt (see src/web/panel.js for the page side).
 //
 // bundle.py builds the worker's source from, in this order: wasmoon's dist/index.js (defines
-// self.wasmoon), `var RB_GLUE_B64 = "..."` (wasmoon's glue.wasm in base64), lua_host.js
-// (defines createLuaHost), rt_web.js (defines createRaybook, the whole rt program built with
-// emscripten, single-threaded, the repository's scenes/ folder at /scenes) and this file. The
-// page starts it from a Blob URL, so it works from file:// as well as from a server, and
-// stops an endless render with worker.terminate().
+// self.wasmoon), lua_host.js (defines createLuaHost), rt_web.js (defines createRaybook, the
+// JavaScript half of the whole rt program built with emscripten, single-threaded) and this
+// file. The page starts it from a Blob URL, so it works from file:// as well as from a server,
+// and stops an endless render with worker.terminate(). The WebAssembly comes with 'init':
+// rt's module, compiled once by the page for all its workers (the repository's scenes/ folder
+// inside, at /scenes), and the bytes of wasmoon's glue.wasm.
 //
-// Messages in:  {type: 'init'}
+// Messages in:  {type: 'init', rt: WebAssembly.Module, glue: ArrayBuffer}
 //               {type: 'render', id, scene, text, features, size, extra, progress}
 //                 extra: more options for rt (the page's previews: --preview --spp N ...);
 //                 progress: true to send rt's progress bar while it renders
-// Messages out: {type: 'ready', features: [{chapter, name, on, core, what}], ms}
+// Messages out: {type: 'ready', features: [{chapter, name, on, core, what}], ms, origin, phases}
+//                 ms: from 'init' to ready; phases: when (ms after the worker's start, at
+//                 ORIGIN, its performance.timeOrigin) its script had run, and wasmoon, rt
+//                 and rt --list-features were ready
 //               {type: 'progress', id, line}   (each redraw of the bar, while rt runs)
 //               {type: 'done', id, code, png (ArrayBuffer or null), out, err, ms}
 //               {type: 'failed', id, message}   (rt could not be started or aborted)
 'use strict';
 
-// wasmoon loads glue.wasm through emscripten's locateFile: a data: URI is fetched in place
-// (Chromium fetches data: URIs in a worker, file:// page or not), so nothing else is loaded.
-const RB_GLUE_URI = 'data:application/octet-stream;base64,' + RB_GLUE_B64;
-
+const rbPhases = {script: performance.now()};
+let rbModule = null;  // rt's WebAssembly.Module, from 'init'
+let rbGlueUrl = null; // wasmoon's glue.wasm, from 'init', as a Blob URL of this worker's
 let rbFactory = null; // one wasmoon LuaFactory (the compiled Lua VM) for the worker's life
 let rbRt = null;      // the rt instance; dropped after an abort, made again on the next render
 let rbOut = '';
@@ -47,13 +50,26 @@ function rbWatchProgress(rt) {
 
 async function rbInstance() {
   if (rbRt) return rbRt;
-  if (!rbFactory) rbFactory = new wasmoon.LuaFactory(RB_GLUE_URI);
+  if (!rbModule) throw new Error('rt was asked to run before the worker\'s init');
+  // wasmoon loads glue.wasm through emscripten's locateFile, from this URL.
+  if (!rbFactory) rbFactory = new wasmoon.LuaFactory(rbGlueUrl);
   const host = await createLuaHost(rbFactory);
-  rbRt = await createRaybook({
+  if (!rbPhases.wasmoon) rbPhases.wasmoon = performance.now();
+  // rt's module is the page's, compiled once: here it is only instantiated (and after an abort,
+  // instantiated again, with a fresh memory).
+  let failed;
+  const failure = new Promise((resolve, reject) => { failed = reject; });
+  rbRt = await Promise.race([failure, createRaybook({
     luaHost: host,
     print: (s) => { rbOut += s + '\n'; },
     printErr: (s) => { rbErr += s + '\n'; },
-  });
+    instantiateWasm: (imports, receive) => {
+      WebAssembly.instantiate(rbModule, imports).then((instance) => receive(instance, rbModule),
+                                                     failed);
+      return {};
+    },
+  })]);
+  if (!rbPhases.rt) rbPhases.rt = performance.now();
   rbWatchProgress(rbRt);
   return rbRt;
 }
@@ -85,12 +101,17 @@ function rbParseFeatures(text) {
   return features;
 }
 
-async function rbInit() {
+async function rbInit(m) {
   const t0 = performance.now();
+  rbPhases.init = t0;
+  rbModule = m.rt;
+  rbGlueUrl = URL.createObjectURL(new Blob([m.glue], {type: 'application/wasm'}));
   const rt = await rbInstance();
   const code = rbRun(rt, ['--list-features']);
   if (code !== 0) throw new Error('rt --list-features exited with ' + code + ': ' + rbErr);
-  return {type: 'ready', features: rbParseFeatures(rbOut), ms: performance.now() - t0};
+  rbPhases.features = performance.now();
+  return {type: 'ready', features: rbParseFeatures(rbOut), ms: performance.now() - t0,
+          origin: performance.timeOrigin, phases: rbPhases};
 }
 
 async function rbRender(m) {
@@ -129,7 +150,7 @@ self.onmessage = (e) => {
   rbQueue = rbQueue.then(async () => {
     try {
       if (m.type === 'init') {
-        self.postMessage(await rbInit());
+        self.postMessage(await rbInit(m));
       } else if (m.type === 'render') {
         const r = await rbRender(m);
         self.postMessage(r, r.png ? [r.png] : []);

@@ -12,7 +12,16 @@ same options (wall time of the process), as a Markdown table with the ratio page
 when the page showed its first picture (its first preview, else the picture itself) with the
 number of previews before the picture (src/web/panel.js renders them in a second worker).
 Each time is the least (--stat min, the default: a busy machine only adds time) or the median
-of --runs renders; the page's first render (which starts rt) is not counted. Each chapter gets a page of its own in a temporary folder next to a copy of the bundle.
+of --runs renders; the page's first render is not counted. Each chapter gets a page of its own
+in a temporary folder next to a copy of the bundle, opened in a new tab of one browser.
+
+And from that fresh page load, in the page's own clock (performance.now(), which starts when the
+page starts to load): when the panel's rt was ready to render (its worker started, rt
+instantiated and its --list-features run), and when the first picture (a preview or the picture)
+was drawn by the first render, which the benchmark asks for as soon as the page has loaded and
+which starts once rt is ready, as a reader's click on Render would. --startup-runs N opens
+each chapter's page N more times for these two (the least is shown, and the first page of the
+browser's life, when Chromium itself is cold, apart).
 """
 import argparse
 import gzip
@@ -53,6 +62,8 @@ def main():
     ap.add_argument('--stat', choices=('min', 'median'), default='min',
                     help='of the runs: min (least disturbed by a busy machine) or median')
     ap.add_argument('--timeout', type=float, default=600, help='seconds for one render in the page')
+    ap.add_argument('--startup-runs', type=int, default=0,
+                    help='open each page this many more times, for the ready and first-picture times')
     ap.add_argument('--out', help='also write the Markdown here')
     args = ap.parse_args()
 
@@ -72,8 +83,12 @@ def main():
              'page: headless Chromium %s, the worker\'s callMain time and the page\'s wall '
              'time for one render.' % (args.size, args.stat, args.runs, os.path.basename(args.rt),
                                        chromium_version()), '',
-             '| chapter | scene | native (s) | page callMain (s) | page wall (s) | ratio callMain / native | first picture in the page (s) | previews | rt start in the page (s) |',
-             '|---:|---|---:|---:|---:|---:|---:|---:|---:|']
+             'Ready and first picture after open: in the page\'s clock, from the start of its load '
+             '(%s); the first render asked for at once, at %s.' % (
+                 'the least of %d loads' % (args.startup_runs + 1) if args.startup_runs else 'one load',
+                 args.size), '',
+             '| chapter | scene | native (s) | page callMain (s) | page wall (s) | ratio callMain / native | first picture in the page (s) | previews | ready after open (s) | first picture after open (s) |',
+             '|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|']
     print('\n'.join(lines))
     sys.stdout.flush()
 
@@ -82,6 +97,15 @@ def main():
         os.makedirs(os.path.join(tmp, 'live'))
         shutil.copy(args.bundle, os.path.join(tmp, 'live', 'raybook-live.js'))
         with cdp.Browser() as browser:
+            # The browser's first page (Chromium's own start, nothing compiled yet) apart.
+            page, ready, first, _ = open_page(browser, args, tmp, args.chapters[0],
+                                             scenes[args.chapters[0]])
+            page.send('Page.close')
+            cold = ('The browser\'s first page (chapter %d, Chromium cold): ready %.2f s, first '
+                    'picture %.2f s after open.' % (args.chapters[0], ready, first))
+            lines.insert(len(lines) - 3, cold)
+            lines.insert(len(lines) - 3, '')
+            print(cold + '\n')
             for n in args.chapters:
                 if n not in scenes:
                     continue
@@ -104,29 +128,44 @@ def chromium_version():
         return '(unknown)'
 
 
-def bench_chapter(browser, args, tmp, n, scene):
+# A fresh page with chapter N's panel, its first render asked for as soon as it has loaded.
+# Returns the page, and when (seconds in the page's clock) rt was ready and the first render's
+# first picture was drawn, and rt's arguments; raises CdpError if rt did not start or the render failed.
+def open_page(browser, args, tmp, n, scene):
     page_file = os.path.join(tmp, 'ch%02d.html' % n)
     with open(page_file, 'w') as f:
         f.write('<!DOCTYPE html><html><head><meta charset="utf-8"><title>bench %d</title></head>'
                 '<body><div class="rb-live" data-scene="%s" data-chapter="%d"></div>'
                 '<script src="live/raybook-live.js"></script></body></html>\n' % (n, scene, n))
-    t0 = time.time()
     page = browser.open('file://' + page_file)
+    r = page.evaluate('(async () => { const p = window.raybookLive.panels[0]; await p.start(); '
+                      'const r = await p.render({size: "%s"}); return {code: r.code, err: r.err, '
+                      'args: r.args, '
+                      'ready: p.readyInfo.at, t0: r.t0, shown: r.shown, '
+                      'first: r.frames.length ? r.t0 + r.frames[0].at : r.shown}; })()' % args.size,
+                      args.timeout)
+    if r['code'] != 0:
+        raise cdp.CdpError('failed: ' + r['err'].strip().replace('\n', ' '))
+    return page, r['ready'] / 1000, r['first'] / 1000, r['args']
+
+
+def bench_chapter(browser, args, tmp, n, scene):
     try:
-        page.wait_for('window.raybookLive && window.raybookLive.panels[0].features', 300)
+        # The first render (which also warms up the browser's compiled code): not counted.
+        page, ready, first_open, rt_args = open_page(browser, args, tmp, n, scene)
+        for _ in range(args.startup_runs):
+            page.send('Page.close')
+            page, ready2, first2, _ = open_page(browser, args, tmp, n, scene)
+            ready, first_open = min(ready, ready2), min(first_open, first2)
     except cdp.CdpError as e:
-        return '| %d | %s | | | | | rt did not start: %s |' % (n, scene, e)
-    start = time.time() - t0
+        return '| %d | %s | | | | | %s |' % (n, scene, e)
 
     def render():
         t = time.time()
         r = page.evaluate('window.raybookLive.panels[0].render({size: "%s"})' % args.size, args.timeout)
         return r, time.time() - t
 
-    r, _ = render()  # the first render: not counted
-    if r['code'] != 0:
-        return '| %d | %s | | | | | failed: %s |' % (n, scene, r['err'].strip().replace('\n', ' '))
-    features = r['args'][0]
+    features = rt_args[0]
     calls, walls, firsts, previews = [], [], [], []
     for _ in range(args.runs):
         r, wall = render()
@@ -145,8 +184,8 @@ def bench_chapter(browser, args, tmp, n, scene):
     pick = min if args.stat == 'min' else statistics.median
     nat, call, wall, first = (pick(x) for x in (natives, calls, walls, firsts))
     shown = '%d' % min(previews) if min(previews) == max(previews) else '%d-%d' % (min(previews), max(previews))
-    return '| %d | `%s` | %.3f | %.3f | %.3f | %.2f | %.3f | %s | %.2f |' % (
-        n, scene, nat, call, wall, call / nat, first, shown, start)
+    return '| %d | `%s` | %.3f | %.3f | %.3f | %.2f | %.3f | %s | %.2f | %.2f |' % (
+        n, scene, nat, call, wall, call / nat, first, shown, ready, first_open)
 
 
 if __name__ == '__main__':
