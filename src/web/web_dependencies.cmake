@@ -18,11 +18,17 @@ add_library(rb_web_deps INTERFACE)
 target_include_directories(rb_web_deps SYSTEM INTERFACE ${RB_WEB_INCLUDE}
                            ${CMAKE_SOURCE_DIR}/src/web)
 # C++ exceptions carry raybook's input errors; emscripten leaves their catching off unless asked.
-# SSE2 intrinsics (the wide BVH) compile to WebAssembly SIMD, which every current browser runs;
-# GCC's xmmintrin.h brings SSE2's emmintrin.h along, emscripten's does not.
-target_compile_options(rb_web_deps INTERFACE -fexceptions -Wno-unknown-pragmas -msimd128 -msse2
-                       "SHELL:-include emmintrin.h")
-target_link_options(rb_web_deps INTERFACE -fexceptions -msimd128)
+# -fwasm-exceptions: WebAssembly's own exception handling (try/catch in the wasm), not
+# -fexceptions' JavaScript emulation, which sends every call that may throw out of a function
+# with something to unwind through a JavaScript trampoline (invoke_*, 31% of rt's calls):
+# a node profile of chapter 17 spent 16% of its time in them (src/web/README.md, "Speed").
+# Browsers: Chrome and Edge 95, Firefox 100, Safari 15.2 and later.
+# SSE2 intrinsics (the wide BVH) compile to WebAssembly SIMD (Chrome and Edge 91, Firefox 89,
+# Safari 16.4 and later); GCC's xmmintrin.h brings SSE2's emmintrin.h along, emscripten's
+# does not.
+target_compile_options(rb_web_deps INTERFACE -fwasm-exceptions -Wno-unknown-pragmas -msimd128
+                       -msse2 "SHELL:-include emmintrin.h")
+target_link_options(rb_web_deps INTERFACE -fwasm-exceptions -msimd128)
 add_library(glm::glm ALIAS rb_web_deps)
 add_library(OpenMP::OpenMP_CXX ALIAS rb_web_deps)
 add_library(PkgConfig::LUA ALIAS rb_web_deps)
