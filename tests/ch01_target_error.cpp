@@ -12,6 +12,7 @@
 /// The scenes are chapter 1's: spheres on black, whose edges are the only noise (a pixel's
 /// samples hit or miss). Rendering them needs exercises 1.1 (the sphere) and 1.2 (the camera
 /// ray), so those scenarios carry both tags: in an assignment they sit in row 1.2.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -259,6 +260,51 @@ SCENARIO(
                 double sum = 0.0;
                 for (int i = 0; i < w * h; ++i) sum += pilot[i] / (8 + plan[i]);
                 CHECK(std::sqrt(sum / (w * h)) <= 0.01 * (1 + 1e-9));
+            }
+        }
+    }
+    GIVEN("a pilot of equal spread v whose right half costs 4 times as many rays a sample") {
+        const std::vector<float> pilot(w * h, 0.09f);
+        rb::PilotCost cost{std::vector<float>(w * h), std::vector<float>(w * h)};
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                cost.planning[y * w + x] = cost.kept[y * w + x] = x < w / 2 ? 3.0f : 12.0f;
+        WHEN("the plan knows the costs (E = 0.01)") {
+            const auto plan = rb::planSamples(pilot, pilot, w, h, target(0.01), &cost);
+            THEN(
+                "away from the border, the right takes half the left's samples, kept pilot "
+                "included: q + n ∝ s/√c") {
+                // Source: Neyman with costs: minimising Σ c·n subject to Σ s²/n fixed gives
+                // n ∝ s/√c (Lagrange); √4 = 2.
+                const double left = 8 + plan[3 * w + 1], right = 8 + plan[3 * w + 6];
+                CAPTURE(left, right);
+                CHECK(left / right == Approx(2.0).epsilon(0.02));
+            }
+            THEN("the predicted error is still at most E, and the rays fewer than without costs") {
+                const auto blind = rb::planSamples(pilot, pilot, w, h, target(0.01));
+                double sum = 0.0, rays = 0.0, blindRays = 0.0;
+                for (int i = 0; i < w * h; ++i) {
+                    sum += pilot[i] / (8 + plan[i]);
+                    rays += cost.kept[i] * plan[i];
+                    blindRays += cost.kept[i] * blind[i];
+                }
+                CHECK(std::sqrt(sum / (w * h)) <= 0.01 * (1 + 1e-9));
+                // Source: equal spreads, costs 1 and 4 in two halves: Neyman with costs spends
+                // (√1 + √4)²/2 = 4.5 units a pixel pair where equal counts spend (1 + 4)·2/2 =
+                // 5, 10% fewer (before the floor and the rounding to even counts).
+                CAPTURE(rays, blindRays);
+                CHECK(rays < 0.93 * blindRays);
+            }
+        }
+        WHEN("only a pixel's own kept samples were dear") {
+            rb::PilotCost ownKept = cost;
+            std::fill(ownKept.planning.begin(), ownKept.planning.end(), 3.0f);
+            std::fill(ownKept.kept.begin(), ownKept.kept.end(), 3.0f);
+            ownKept.kept[4 * w + 4] = 300.0f;
+            const auto plan = rb::planSamples(pilot, pilot, w, h, target(0.01), &ownKept);
+            THEN("its plan is its quiet neighbours': its kept samples set no price for it") {
+                CHECK(plan[4 * w + 4] == plan[1 * w + 1]);
+                CHECK(plan[3 * w + 3] < plan[1 * w + 1]);
             }
         }
     }

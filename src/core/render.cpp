@@ -228,6 +228,7 @@ struct PilotImage {
     std::vector<PixelEstimate> estimate;
     std::vector<float> kept;
     std::vector<float> planning;
+    PilotCost cost;  ///< Rays a sample, of the planning group and of the kept pilot.
 };
 
 /// The kept pilot's groups; the fresh samples' are 0 and 1, the planning group's 4.
@@ -246,12 +247,17 @@ void pilotTile(const ImageTile& tile, const Integrator& integrator, const Pinhol
         for (int x = tile.x0; x < tile.x1; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * width + x;
             RunningMoments planning, kept;
+            const std::uint64_t start = rays.total();
             sampleGroup(x, y, kPlanningGroup, 0, a, integrator, camera, lens, width, seed, rays,
                         planning);
+            const std::uint64_t planned = rays.total();
             pilot.planning[i] = static_cast<float>(planning.channelVariance());
             pilot.estimate[i] = sampleTwoGroups(x, y, kPilotGroup, a, m, integrator, camera, lens,
                                                 width, seed, rays, kept);
             pilot.kept[i] = static_cast<float>(kept.channelVariance());
+            // What a sample cost, in rays (counted, so the same on any machine or thread).
+            pilot.cost.planning[i] = static_cast<float>(planned - start) / a;
+            pilot.cost.kept[i] = static_cast<float>(rays.total() - planned) / (2 * m);
             stop.afterPixel(rays.total());
         }
 }
@@ -338,7 +344,7 @@ std::vector<WorkUnit> plannedWork(const std::vector<ImageTile>& tiles,
 /// One pixel's pilot as the processes exchange it.
 struct PackedPilot {
     double r, g, b, varianceOfMean;
-    float kept, planning;
+    float kept, planning, planningCost, keptCost;
 };
 
 /// Stage 1 of a target-error render: every pixel's pilot mean and variances. On one process
@@ -351,8 +357,10 @@ PilotImage pilotPass(const std::vector<ImageTile>& tiles, const Integrator& inte
                      [[maybe_unused]] int threads,  // The WebAssembly build has no OpenMP.
                      std::vector<RayCounters>& perThread) {
     const auto pixels = static_cast<std::size_t>(width) * height;
-    PilotImage pilot{std::vector<PixelEstimate>(pixels), std::vector<float>(pixels, 0.0f),
-                     std::vector<float>(pixels, 0.0f)};
+    PilotImage pilot{std::vector<PixelEstimate>(pixels),
+                     std::vector<float>(pixels, 0.0f),
+                     std::vector<float>(pixels, 0.0f),
+                     {std::vector<float>(pixels, 0.0f), std::vector<float>(pixels, 0.0f)}};
     Cluster* cluster =
         settings.cluster && settings.cluster->distributed() ? settings.cluster : nullptr;
     const int rank = cluster ? cluster->rank() : 0, size = cluster ? cluster->size() : 1;
@@ -390,7 +398,7 @@ PilotImage pilotPass(const std::vector<ImageTile>& tiles, const Integrator& inte
                 const std::size_t i = static_cast<std::size_t>(y) * width + x;
                 const PixelEstimate& e = pilot.estimate[i];
                 mine.push_back({e.mean.r, e.mean.g, e.mean.b, e.varianceOfMean, pilot.kept[i],
-                                pilot.planning[i]});
+                                pilot.planning[i], pilot.cost.planning[i], pilot.cost.kept[i]});
             }
     const std::vector<std::byte> all = cluster->joinInOrder(std::as_bytes(std::span(mine)));
     std::size_t at = 0;
@@ -405,6 +413,8 @@ PilotImage pilotPass(const std::vector<ImageTile>& tiles, const Integrator& inte
                     pilot.estimate[i] = {Colour(one.r, one.g, one.b), one.varianceOfMean};
                     pilot.kept[i] = one.kept;
                     pilot.planning[i] = one.planning;
+                    pilot.cost.planning[i] = one.planningCost;
+                    pilot.cost.kept[i] = one.keptCost;
                 }
     return pilot;
 }
@@ -459,7 +469,7 @@ Image render(const Scene& scene, const Pipeline& pipeline, const PinholeCamera& 
                          settings.target.error, settings.target.pilotSamples());
         pilot = pilotPass(tiles, integrator, camera, pipeline.cameraRays.get(), width, height,
                           settings, threads, perThread);
-        plan = planSamples(pilot.planning, pilot.kept, width, height, settings.target);
+        plan = planSamples(pilot.planning, pilot.kept, width, height, settings.target, &pilot.cost);
     }
     ProgressBar progress(settings.progress, tiles, settings.target,
                          plan.empty() ? workUnits(tiles) : plannedWork(tiles, plan, width));

@@ -73,24 +73,26 @@ double predictedMse(const std::vector<double>& w, const std::vector<float>& s2, 
 // [plan-samples]
 std::vector<std::uint32_t> planSamples(const std::vector<float>& planning,
                                        const std::vector<float>& kept, int width, int height,
-                                       const TargetError& target) {
+                                       const TargetError& target, const PilotCost* cost) {
     const int q = target.keptPilotSamples(), lo = target.freshFloor(), hi = target.maxSamples;
     // Step 1: each pixel's planning weight w, the root of the larger of its planning group's
     // spread and its 3 × 3 block's mean spread, the neighbours' kept pilots' (the block cut at
-    // the image's edges).
+    // the image's edges); with costs, over the root of the block's mean price of a sample.
     std::vector<double> w(planning.size(), 0.0);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * width + x;
-            double sum = 0.0;
+            double sum = 0.0, price = 0.0;
             int count = 0;
             for (int qy = std::max(0, y - 1); qy <= std::min(height - 1, y + 1); ++qy)
                 for (int qx = std::max(0, x - 1); qx <= std::min(width - 1, x + 1); ++qx) {
                     const std::size_t j = static_cast<std::size_t>(qy) * width + qx;
                     sum += j == i ? planning[i] : kept[j];
+                    if (cost) price += j == i ? cost->planning[i] : cost->kept[j];
                     ++count;
                 }
             w[i] = std::sqrt(std::max(static_cast<double>(planning[i]), sum / count));
+            if (cost && price > 0.0) w[i] /= std::sqrt(price / count);
         }
     // Step 2: the smallest k whose predicted error is at most E. The error falls as k grows,
     // until every pixel with any weight sits at the ceiling; find a k that is enough (or

@@ -11,7 +11,8 @@
 /// Source: C. Stein, "A two-sample test for a linear hypothesis whose power is independent of
 /// the variance", Annals of Mathematical Statistics 16(3), 1945 (the two stages); J. Neyman,
 /// "On the two different aspects of the representative method", JRSS 97(4), 1934 (counts in
-/// proportion to the spread minimise the total variance for a given number of samples).
+/// proportion to the spread minimise the total variance for a given number of samples; in
+/// proportion to the spread over the root of a sample's cost, for a given cost).
 #pragma once
 
 #include <algorithm>
@@ -90,9 +91,20 @@ class RunningMoments {
 /// counted as quiet, and the error would come out above E (on chapter 17's fog, by 40%). Every
 /// step is a pure function of the pilot, in a fixed order: the same counts on any thread count
 /// or rank.
+///
+/// With `cost` (rays a sample, per pixel, of the planning group and of the kept pilot), a
+/// sample's price enters too: w is the root of that variance over the pixel's price, the mean
+/// over its 3 × 3 block of its own planning group's rays a sample and its neighbours' kept
+/// ones, so that a pixel twice as dear takes 1/√2 as many samples for its spread (Neyman's
+/// allocation with costs, which minimises the rays for a given error). Its own kept samples
+/// set no price either.
+struct PilotCost {
+    std::vector<float> planning;  ///< Rays a sample of each pixel's planning group.
+    std::vector<float> kept;      ///< Rays a sample of each pixel's kept pilot.
+};
 std::vector<std::uint32_t> planSamples(const std::vector<float>& planning,
                                        const std::vector<float>& kept, int width, int height,
-                                       const TargetError& target);
+                                       const TargetError& target, const PilotCost* cost = nullptr);
 
 /// One pixel's estimate: the mean of its samples and the estimated variance of that mean,
 /// averaged over the channels.
