@@ -1385,7 +1385,7 @@ const rb::Instance* closestInSceneOrder(const std::vector<rb::Instance>& instanc
 }
 
 SCENARIO("a ground plane far wider than the rest is tested outside the tree, with the same hits",
-         "[ch03]") {
+         "[ch03][ex3.2]") {
     // POV-Ray keeps unbounded objects out of its bounding hierarchy; raybook keeps out an
     // instance whose box has kLargeInstanceArea times the area of the box around the others
     // (chapter 3, "Two levels and instancing": spheres.lua's render 490 -> 471 million
