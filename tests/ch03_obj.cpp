@@ -350,6 +350,16 @@ SCENARIO("every malformed line is an InputError naming the file and the line",
                                 Contains("x.obj:4: '1e400' is not a finite number"));
         }
     }
+    GIVEN("a vertex coordinate of 1e39, finite in double, on line 4") {
+        const std::string prefix = threeVertices;
+        THEN("it is named as beyond the range of the float vertices a mesh keeps") {
+            // Source: FLT_MAX is (2 − 2⁻²³)·2¹²⁷ ≈ 3.40e38, so 1e39 rounds to infinity in float.
+            REQUIRE_THROWS_WITH(parseText(prefix + "v 0 1e39 0\n"),
+                                Contains("x.obj:4: '1e39' is beyond a float's range"));
+            // 3e38 fits, and a texture coordinate is not a vertex.
+            REQUIRE_NOTHROW(parseText(prefix + "v 0 3e38 0\nvt 1e39\nf 1 2 3\n"));
+        }
+    }
     GIVEN("a coordinate that is not a number") {
         THEN("the bad token is quoted") {
             REQUIRE_THROWS_WITH(parseText("v 0 0 0\nv 1 O 0\n"),

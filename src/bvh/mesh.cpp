@@ -10,6 +10,10 @@
 namespace rb {
 
 Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
+    // The mesh keeps its vertices in float, as Embree and POV-Ray do: everything below (the
+    // area test, the boxes, the packs) reads them rounded, so the boxes hold what is tested.
+    const std::vector<glm::vec3> rounded(data.positions.begin(), data.positions.end());
+    auto position = [&](int i) { return Vec3(rounded[static_cast<size_t>(i)]); };
     // Keep the triangles with non-zero area; a degenerate one can never be hit and has no
     // normal.
     std::vector<std::uint32_t> keptSource;
@@ -18,8 +22,7 @@ Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
     boxes.reserve(data.triangles.size());
     for (size_t i = 0; i < data.triangles.size(); ++i) {
         const auto& c = data.triangles[i];
-        const std::array<Vec3, 3> v{data.positions[c[0].v], data.positions[c[1].v],
-                                    data.positions[c[2].v]};
+        const std::array<Vec3, 3> v{position(c[0].v), position(c[1].v), position(c[2].v)};
         if (!(glm::length(glm::cross(v[1] - v[0], v[2] - v[0])) > 0.0)) {
             ++dropped_;
             continue;
@@ -41,8 +44,8 @@ Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
             } else {
                 for (int k = 0; k < 3; ++k) t.uv[k] = data.texcoords[c[k].vt];
                 // Solve p1 − p0 = Δu1·dp/du + Δv1·dp/dv and p2 − p0 likewise (Cramer's rule).
-                const Vec3 dp1 = data.positions[c[1].v] - data.positions[c[0].v];
-                const Vec3 dp2 = data.positions[c[2].v] - data.positions[c[0].v];
+                const Vec3 dp1 = position(c[1].v) - position(c[0].v);
+                const Vec3 dp2 = position(c[2].v) - position(c[0].v);
                 const Vec2 duv1 = t.uv[1] - t.uv[0], duv2 = t.uv[2] - t.uv[0];
                 const double det = duv1.x * duv2.y - duv1.y * duv2.x;
                 if (det != 0.0 && std::isfinite(1.0 / det)) {
@@ -63,7 +66,6 @@ Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
     bvh_.build(std::move(boxes), options);
     bounds_ = bvh_.bounds();
     triangleCount_ = keptSource.size();
-    positions_ = data.positions;
     const auto& order = bvh_.primitiveOrder();
     size_t packCount = 0;
     bvh_.forEachLeaf([&](std::uint32_t, std::uint32_t count) { packCount += (count + 3) / 4; });
@@ -78,14 +80,13 @@ Mesh::Mesh(const ObjData& data, const std::string& name, BVHLayout layout) {
                 const auto& corners = data.triangles[keptSource[p]];
                 double extent = 0.0;
                 for (int vertex = 0; vertex < 3; ++vertex) {
-                    const Vec3& v = data.positions[corners[vertex].v];
+                    const Vec3 v = position(corners[vertex].v);
                     for (int axis = 0; axis < 3; ++axis) {
-                        pack.p[vertex][axis][lane] = static_cast<float>(v[axis]);
+                        pack.p[vertex][axis][lane] = static_cast<float>(v[axis]);  // exact
                         extent = std::max(extent, std::abs(v[axis]));
                     }
-                    pack.vertex[vertex][lane] = static_cast<std::uint32_t>(corners[vertex].v);
                 }
-                pack.extent[lane] = roundUpToFloat(extent);
+                pack.extent[lane] = static_cast<float>(extent);  // a float already
                 pack.source[lane] = keptSource[p];
             }
         }
@@ -101,7 +102,7 @@ const TriangleTexcoords* Mesh::texcoords(std::uint32_t triangle) const {
 }
 
 size_t Mesh::triangleBytes() const {
-    return packs_.size() * sizeof(Triangle4) + positions_.size() * sizeof(Vec3);
+    return packs_.size() * sizeof(Triangle4);
 }
 
 std::vector<Mesh::Triangle> Mesh::triangles() const {
@@ -111,7 +112,7 @@ std::vector<Mesh::Triangle> Mesh::triangles() const {
         for (std::uint32_t k = 0; k < count; ++k) {
             const Triangle4& pack = packs_[first + k / 4];
             const int lane = static_cast<int>(k % 4);
-            out.push_back({vertices(pack, lane, positions_), pack.source[lane]});
+            out.push_back({vertices(pack, lane), pack.source[lane]});
         }
     });
     return out;
@@ -136,7 +137,7 @@ bool Mesh::intersectCounting(const Ray& ray, double tMax, ObjectHit& hit, Counts
                 for (std::uint32_t k = 0; k < count; k += 4) {
                     const Triangle4& pack = packs_[first + k / 4];
                     const int lane = intersectTriangle4(wray, fray, pack, std::min(count - k, 4u),
-                                                        positions_, nearest, best, counts);
+                                                        nearest, best, counts);
                     if (lane < 0) continue;
                     tClosest = best.t;
                     bestPack = &pack;
@@ -147,7 +148,7 @@ bool Mesh::intersectCounting(const Ray& ray, double tMax, ObjectHit& hit, Counts
             },
         counts);
     if (!found) return false;
-    const std::array<Vec3, 3> v = vertices(*bestPack, bestLane, positions_);
+    const std::array<Vec3, 3> v = vertices(*bestPack, bestLane);
     hit.t = best.t;
     hit.n = glm::cross(v[1] - v[0], v[2] - v[0]);  // geometric normal, by the winding
     hit.uv = Vec2(best.b1, best.b2);  // barycentrics; chapter 10 turns them into `vt` (u, v)
@@ -166,8 +167,8 @@ bool Mesh::occludedCounting(const Ray& ray, double tMax, Counts& counts) const {
         ray, tMax,
         [&](std::uint32_t first, std::uint32_t count, double t) __attribute__((always_inline)) {
             for (std::uint32_t k = 0; k < count; k += 4)
-                if (occludedTriangle4(wray, fray, packs_[first + k / 4], std::min(count - k, 4u),
-                                      positions_, t, limit, counts))
+                if (occludedTriangle4(wray, fray, packs_[first + k / 4], std::min(count - k, 4u), t,
+                                      limit, counts))
                     return true;
             return false;
         },

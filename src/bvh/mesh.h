@@ -20,9 +20,9 @@ struct TriangleTexcoords {
     Vec3 dpdu{0.0}, dpdv{0.0};
 };
 
-/// A triangle mesh in object space. Each BVH leaf's triangles are copied out into packs of four
-/// (Triangle4), so a leaf test reads one contiguous block and filters four triangles at once;
-/// the exact test reads the double-precision vertices.
+/// A triangle mesh in object space, its vertices in float. Each BVH leaf's triangles are copied
+/// out into packs of four (Triangle4), so a leaf test reads one contiguous block and filters four
+/// triangles at once; the exact test reads the same pack, in double.
 class Mesh final : public Shape {
   public:
     /// Build from OBJ data. Degenerate (zero-area) triangles are dropped; throws InputError
@@ -43,7 +43,7 @@ class Mesh final : public Shape {
     size_t droppedCount() const { return dropped_; }
     /// The mesh's BVH.
     const BVH& bvh() const { return bvh_; }
-    /// Bytes used by triangle data (excluding the BVH).
+    /// Bytes used by triangle data, the packs (excluding the BVH).
     size_t triangleBytes() const;
     /// A kept triangle: its vertices and its OBJ triangle index.
     struct Triangle {
@@ -65,7 +65,6 @@ class Mesh final : public Shape {
 
     /// Triangle packs: a BVH leaf of n triangles points at ⌈n/4⌉ consecutive packs.
     std::vector<Triangle4> packs_;
-    std::vector<Vec3> positions_;  ///< The OBJ vertices, in double.
     size_t triangleCount_ = 0;
     /// `vt` per OBJ triangle (NaN where a corner has none); empty when the file has no `vt`.
     std::vector<TriangleTexcoords> texcoords_;

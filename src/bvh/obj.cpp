@@ -267,6 +267,12 @@ ObjData parseObj(std::istream& in, const std::string& displayName, const MemoryB
                 ctx.fail("expected 3 numbers after 'v', got " + std::to_string(n) +
                          " (x y z, with an optional w or r g b colour)");
             }
+            // A mesh keeps its vertices in float (mesh.h): a coordinate must fit in one.
+            for (int axis = 0; axis < 3; ++axis)
+                if (!std::isfinite(static_cast<float>(values[axis])))
+                    ctx.fail(quoted(tokens[axis + 1]) +
+                             " is beyond a float's range (about ±3.4e38), in which a mesh keeps"
+                             " its vertices");
             checkCapacity(data.positions.size(), "vertices", ctx);
             data.positions.emplace_back(values[0], values[1], values[2]);
         } else if (keyword == "vt") {

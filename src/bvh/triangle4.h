@@ -11,7 +11,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <vector>
 
 #include "bvh/float_rounding.h"
 #include "bvh/traversal_counts.h"
@@ -20,16 +19,16 @@
 namespace rb {
 
 /// Four triangles lane by lane (structure of arrays), so that one SSE load fetches one
-/// coordinate of all four. The float vertices serve the float test only; the exact test reads the
-/// mesh's double vertices through `vertex`. Lanes past a leaf's count repeat its last triangle.
-/// 224 bytes.
+/// coordinate of all four. These float vertices are the mesh's only copy: the float test reads
+/// them, and the exact test reads them too, widened to double (exactly), so the pack it has just
+/// filtered is the only memory it touches. Lanes past a leaf's count repeat its last triangle.
+/// 176 bytes.
 struct alignas(16) Triangle4 {
-    float p[3][3][4];            ///< [vertex][axis][lane], rounded to nearest.
-    float extent[4];             ///< The largest |coordinate| of the lane's vertices, rounded up.
-    std::uint32_t vertex[3][4];  ///< Indices of the vertices in the mesh's double positions.
-    std::uint32_t source[4];     ///< The OBJ triangle index.
+    float p[3][3][4];         ///< [vertex][axis][lane]: the mesh's vertices, in float.
+    float extent[4];          ///< The largest |coordinate| of the lane's vertices.
+    std::uint32_t source[4];  ///< The OBJ triangle index.
 };
-static_assert(sizeof(Triangle4) == 224);
+static_assert(sizeof(Triangle4) == 176);
 
 /// The ray as the float filter sees it: the watertight test's axis permutation and shear,
 /// rounded to float, and the size of the origin's largest coordinate.
@@ -202,11 +201,12 @@ template <bool kDecideDistance = true>
     return testTriangle4<false>(r, tri, count, FloatLimit(0.0)).maybe;
 }
 
-/// The vertices of lane `lane` of `tri`, in double, from the mesh's positions.
-[[gnu::always_inline]] inline std::array<Vec3, 3> vertices(const Triangle4& tri, int lane,
-                                                           const std::vector<Vec3>& positions) {
-    return {positions[tri.vertex[0][lane]], positions[tri.vertex[1][lane]],
-            positions[tri.vertex[2][lane]]};
+/// The vertices of lane `lane` of `tri`, widened to double (every float is a double exactly).
+[[gnu::always_inline]] inline std::array<Vec3, 3> vertices(const Triangle4& tri, int lane) {
+    std::array<Vec3, 3> v;
+    for (int vertex = 0; vertex < 3; ++vertex)
+        v[vertex] = Vec3(tri.p[vertex][0][lane], tri.p[vertex][1][lane], tri.p[vertex][2][lane]);
+    return v;
 }
 
 /// The nearest hit so far on a mesh: its distance and its OBJ triangle index.
@@ -226,7 +226,6 @@ struct NearestTriangle {
 template <class Counts = NoCounts>
 [[gnu::always_inline]] inline int intersectTriangle4(const WatertightRay& ray, const FilterRay& r,
                                                      const Triangle4& tri, int count,
-                                                     const std::vector<Vec3>& positions,
                                                      NearestTriangle& nearest, TriangleHit& hit,
                                                      Counts&& counts = {}) {
     int best = -1;
@@ -234,7 +233,7 @@ template <class Counts = NoCounts>
     for (int mask = filterTriangle4(r, tri, count); mask != 0; mask &= mask - 1) {
         const int lane = __builtin_ctz(mask);
         counts.exact();
-        const std::array<Vec3, 3> v = vertices(tri, lane, positions);
+        const std::array<Vec3, 3> v = vertices(tri, lane);
         // After a hit, a tie at exactly its distance is considered too.
         const double tLimit = nearest.found ? nextUp(nearest.t) : nearest.t;
         TriangleHit h;
@@ -253,9 +252,8 @@ template <class Counts = NoCounts>
 /// lanes the float test could not decide. `counts` as for intersectTriangle4().
 template <class Counts = NoCounts>
 [[gnu::always_inline]] inline bool occludedTriangle4(const WatertightRay& ray, const FilterRay& r,
-                                                     const Triangle4& tri, int count,
-                                                     const std::vector<Vec3>& positions,
-                                                     double tMax, const FloatLimit& limit,
+                                                     const Triangle4& tri, int count, double tMax,
+                                                     const FloatLimit& limit,
                                                      Counts&& counts = {}) {
     counts.pack();
     const Triangle4Verdict verdict = testTriangle4(r, tri, count, limit);
@@ -263,7 +261,7 @@ template <class Counts = NoCounts>
     for (int mask = verdict.maybe; mask != 0; mask &= mask - 1) {
         const int lane = __builtin_ctz(mask);
         counts.exact();
-        const std::array<Vec3, 3> v = vertices(tri, lane, positions);
+        const std::array<Vec3, 3> v = vertices(tri, lane);
         TriangleHit unused;
         if (intersectTriangle(ray, v[0], v[1], v[2], tMax, unused)) return true;
     }
