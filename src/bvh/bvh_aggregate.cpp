@@ -22,13 +22,13 @@ AABB boundsOf(const std::vector<const Instance*>& pool, size_t skip) {
 }  // namespace
 
 BVHAggregate::BVHAggregate(const std::vector<Instance>& instances, BVHLayout layout,
-                           size_t binaryUpTo)
+                           size_t binaryUpTo, size_t flatUpTo)
     : asked_(layout == BVHLayout::Wide8 && !wide8Available() ? BVHLayout::Wide4 : layout) {
     // Step 1: take the large instances out, largest first, while one's box has
     // kLargeInstanceArea times the area of the box around the rest.
     std::vector<const Instance*> rest;
     for (const Instance& i : instances) rest.push_back(&i);
-    while (large_.size() < kMaxLargeInstances && rest.size() > 1) {
+    while (outside_.size() < kMaxLargeInstances && rest.size() > 1) {
         size_t largest = 0;
         for (size_t i = 1; i < rest.size(); ++i)
             if (rest[i]->worldBounds.halfArea() > rest[largest]->worldBounds.halfArea())
@@ -36,10 +36,16 @@ BVHAggregate::BVHAggregate(const std::vector<Instance>& instances, BVHLayout lay
         if (!(rest[largest]->worldBounds.halfArea() >=
               kLargeInstanceArea * boundsOf(rest, largest).halfArea()))
             break;
-        large_.push_back(rest[largest]);
+        outside_.push_back(rest[largest]);
         rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(largest));
     }
-    // Step 2: the tree over the rest.
+    largeCount_ = outside_.size();
+    // Step 2: a few instances left join them (a tree over them would cost more than their
+    // boxes); more get the tree.
+    if (rest.size() <= flatUpTo) {
+        outside_.insert(outside_.end(), rest.begin(), rest.end());
+        return;
+    }
     std::vector<AABB> boxes;
     boxes.reserve(rest.size());
     for (const Instance* i : rest) boxes.push_back(i->worldBounds);
@@ -74,11 +80,11 @@ BVHAggregate::BVHAggregate(const std::vector<Instance>& instances, BVHLayout lay
 bool BVHAggregate::intersect(const Ray& ray, double tMax, Hit& hit) const {
     const Instance* closest = nullptr;
     ObjectHit best;
-    // The large instances first, each behind its own box: their hit, if any, shortens the
-    // ray through the tree.
-    if (!large_.empty()) {
+    // The instances outside the tree first, each behind its own box: their hit, if any,
+    // shortens the ray through the tree.
+    if (!outside_.empty()) {
         const RayInverse ri(ray);
-        for (const Instance* instance : large_) {
+        for (const Instance* instance : outside_) {
             double tEntry;
             if (intersectBox(instance->worldBounds, ri, tMax, tEntry))
                 closestAmong(&instance, 1, ray, tMax, best, closest);
@@ -96,9 +102,9 @@ bool BVHAggregate::intersect(const Ray& ray, double tMax, Hit& hit) const {
 // [toplevel-intersect]
 
 bool BVHAggregate::occluded(const Ray& ray, double tMax) const {
-    if (!large_.empty()) {
+    if (!outside_.empty()) {
         const RayInverse ri(ray);
-        for (const Instance* instance : large_) {
+        for (const Instance* instance : outside_) {
             double tEntry;
             if (intersectBox(instance->worldBounds, ri, tMax, tEntry) &&
                 instance->occluded(ray, tMax))
@@ -120,7 +126,7 @@ std::string BVHAggregate::statistics() const {
     size_t nodes = bvh_.nodeCount(), bytes = bvh_.nodeBytes();
     size_t triangles = 0, triangleBytes = 0, meshBvhBytes = 0;
     std::vector<const Mesh*> seen;
-    std::vector<const Instance*> all = large_;
+    std::vector<const Instance*> all = outside_;
     all.insert(all.end(), ordered_.begin(), ordered_.end());
     for (const Instance* i : all)
         if (const Mesh* mesh = i->shape->triangleMesh())
@@ -136,12 +142,16 @@ std::string BVHAggregate::statistics() const {
     std::snprintf(line, sizeof line, "%s BVH, %zu nodes, %.2f MiB", bvhLayoutDescription(asked_),
                   nodes, bytes / 1048576.0);
     std::string out = line;
-    if (bvh_.layout() != asked_)
+    if (!ordered_.empty() && bvh_.layout() != asked_)
         out += std::string(" (top level ") + bvhLayoutDescription(bvh_.layout()) + ": " +
                std::to_string(ordered_.size()) + " instances)";
-    if (!large_.empty())
-        out += "; " + std::to_string(large_.size()) + " large instance" +
-               (large_.size() > 1 ? "s" : "") + " outside the tree";
+    if (largeCount_ > 0)
+        out += "; " + std::to_string(largeCount_) + " large instance" +
+               (largeCount_ > 1 ? "s" : "") + " outside the tree";
+    if (const size_t few = outside_.size() - largeCount_; few > 0)
+        out += few == 1 ? "; no top-level tree: the other instance is tested behind its box"
+                        : "; no top-level tree: the other " + std::to_string(few) +
+                              " instances are tested behind their boxes";
     if (triangles) {
         std::snprintf(line, sizeof line, "; %zu triangles: %.1f bytes/triangle (mesh) + %.1f (BVH)",
                       triangles, double(triangleBytes) / triangles,

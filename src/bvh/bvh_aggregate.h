@@ -24,22 +24,31 @@ inline constexpr size_t kBinaryTopLevel = 8;
 inline constexpr double kLargeInstanceArea = 4.0;
 /// At most this many instances are kept out of the tree.
 inline constexpr size_t kMaxLargeInstances = 2;
+/// When at most this many instances are left after the large ones, they get no tree: each is
+/// tested behind its own box, as the large ones are (a mesh on a ground plane: chapter 3, "Two
+/// levels and instancing").
+inline constexpr size_t kFlatTopLevel = 2;
 
 /// A BVH over instances' world bounds; each instance then uses its shape's own structure. The
 /// tree has the layout asked for, unless there are at most `binaryUpTo` instances; the meshes'
 /// trees are theirs (built when the scene is read). Large instances (kLargeInstanceArea) are
-/// tested before the tree, outside it.
+/// tested before the tree, outside it, and so are the others when at most `flatUpTo` are left
+/// (then there is no tree).
 class BVHAggregate final : public Aggregate {
   public:
     explicit BVHAggregate(const std::vector<Instance>& instances,
-                          BVHLayout layout = bestWideLayout(), size_t binaryUpTo = kBinaryTopLevel);
+                          BVHLayout layout = bestWideLayout(), size_t binaryUpTo = kBinaryTopLevel,
+                          size_t flatUpTo = kFlatTopLevel);
     bool intersect(const Ray& ray, double tMax, Hit& hit) const override;
     bool occluded(const Ray& ray, double tMax) const override;
     /// Nodes and bytes of both levels, and bytes per triangle of the meshes.
     std::string statistics() const override;
     const BVH& bvh() const { return bvh_; }
     /// How many large instances are tested outside the tree (kLargeInstanceArea).
-    size_t largeInstanceCount() const { return large_.size(); }
+    size_t largeInstanceCount() const { return largeCount_; }
+    /// How many instances are tested outside the tree: the large ones, and the few others
+    /// when there is no tree (kFlatTopLevel).
+    size_t outsideCount() const { return outside_.size(); }
 
   private:
     /// The closest hit among `instances` nearer than tClosest: shrinks tClosest and sets `best`
@@ -47,7 +56,10 @@ class BVHAggregate final : public Aggregate {
     bool closestAmong(const Instance* const* instances, std::uint32_t count, const Ray& ray,
                       double& tClosest, ObjectHit& best, const Instance*& closest) const;
 
-    std::vector<const Instance*> large_;    ///< Instances outside the tree, tested first.
+    /// Instances outside the tree, tested first: the large ones, largest first, then the
+    /// others when there are at most kFlatTopLevel of them.
+    std::vector<const Instance*> outside_;
+    size_t largeCount_ = 0;                 ///< How many of outside_ are large.
     std::vector<const Instance*> ordered_;  ///< The others, in BVH leaf order.
     BVH bvh_;
     BVHLayout asked_;  ///< The layout asked for (--bvh), which --stats names.
